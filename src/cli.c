@@ -1,0 +1,254 @@
+/* cli.c -- the program: subcommand dispatch and shared option handling.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ */
+#include <config.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("radiosity: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+void cli_error_rec(const rad_error *err)
+{
+    cli_error("%s", err->message);
+}
+
+int cli_usage_hint(const char *cmd)
+{
+    fprintf(stderr, "Try 'radiosity %s%s--help' for more information.\n", cmd ? cmd : "",
+            cmd ? " " : "");
+    return EXIT_USAGE;
+}
+
+int cli_parse_int(const char *arg, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(arg, &end, 10);
+    if (end == arg || *end || errno || v < lo || v > hi)
+        return -1;
+    *out = (int)v;
+    return 0;
+}
+
+int cli_parse_double(const char *arg, double *out)
+{
+    char *end;
+    double v = strtod(arg, &end);
+    if (end == arg || *end || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int cli_parse_vec3(const char *arg, rad_vec3 *out)
+{
+    char *end;
+    const char *p = arg;
+    double v[3];
+    for (int k = 0; k < 3; k++) {
+        v[k] = strtod(p, &end);
+        if (end == p || !isfinite(v[k]) || (k < 2 ? *end != ',' : *end != '\0'))
+            return -1;
+        p = end + 1;
+    }
+    *out = (rad_vec3){v[0], v[1], v[2]};
+    return 0;
+}
+
+int cli_parse_mesh(const char *arg, int *n, int *m)
+{
+    char buf[64];
+    char *x;
+    if (strlen(arg) >= sizeof buf)
+        return -1;
+    strcpy(buf, arg);
+    x = strpbrk(buf, "xX");
+    if (!x)
+        return -1;
+    *x = '\0';
+    return cli_parse_int(buf, 1, 100000, n) || cli_parse_int(x + 1, 1, 100000, m) ? -1 : 0;
+}
+
+void cli_common_init(cli_common *c)
+{
+    memset(c, 0, sizeof *c);
+    rad_ff_options_init(&c->ff);
+}
+
+int cli_common_option(cli_common *c, int opt, const char *arg)
+{
+    switch (opt) {
+    case OPT_MESH:
+        if (cli_parse_mesh(arg, &c->mesh_n, &c->mesh_m)) {
+            cli_error("--mesh takes NxM with whole numbers from 1 to 100000, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_QUADRATURE:
+        if (cli_parse_int(arg, 1, RAD_GAUSS_MAX, &c->ff.quadrature)) {
+            cli_error("--quadrature takes a whole number from 1 to %d, not '%s'",
+                      RAD_GAUSS_MAX, arg);
+            return 2;
+        }
+        return 0;
+    case OPT_ACCURACY:
+        if (strcmp(arg, "classic") == 0)
+            c->ff.accuracy = RAD_ACCURACY_CLASSIC;
+        else if (strcmp(arg, "default") == 0)
+            c->ff.accuracy = RAD_ACCURACY_DEFAULT;
+        else if (strcmp(arg, "reference") == 0)
+            c->ff.accuracy = RAD_ACCURACY_REFERENCE;
+        else {
+            cli_error("--accuracy takes classic, default or reference, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_THREADS:
+        if (cli_parse_int(arg, 1, 4096, &c->ff.threads)) {
+            cli_error("--threads takes a positive whole number, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case 'q':
+    case OPT_QUIET:
+        c->quiet = 1;
+        return 0;
+    default:
+        return 1;
+    }
+}
+
+int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
+{
+    rad_error err;
+    if (rad_scene_load(scene, path, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    if (c->mesh_n > 0)
+        rad_scene_set_mesh(scene, c->mesh_n, c->mesh_m);
+    return 0;
+}
+
+/* ---- progress bar ------------------------------------------------------- */
+
+typedef struct progress_state {
+    struct timespec start;
+    char stage[64];
+    double last;
+} progress_state;
+
+static double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+int cli_progress(void *user, const char *stage, double done, double total)
+{
+    progress_state *p = user;
+    double t = now_seconds();
+    if (strncmp(p->stage, stage, sizeof p->stage - 1) != 0) {
+        snprintf(p->stage, sizeof p->stage, "%s", stage);
+        p->start.tv_sec = (time_t)t;
+        p->start.tv_nsec = (long)((t - (double)(time_t)t) * 1e9);
+        p->last = 0;
+    }
+    double t0 = (double)p->start.tv_sec + 1e-9 * (double)p->start.tv_nsec;
+    if (t - p->last < 0.2 && done < total)
+        return 0;
+    p->last = t;
+    double frac = total > 0 ? done / total : 1;
+    int width = 30, fill = (int)(frac * width + 0.5);
+    double left = frac > 0 ? (t - t0) * (1 - frac) / frac : 0;
+    fprintf(stderr, "\r%-14.14s [", stage);
+    for (int k = 0; k < width; k++)
+        fputc(k < fill ? '#' : '.', stderr);
+    fprintf(stderr, "] %3.0f%%  %6.1f s left ", 100 * frac, left);
+    if (done >= total)
+        fputc('\n', stderr);
+    fflush(stderr);
+    return 0;
+}
+
+void cli_progress_attach(cli_common *c)
+{
+    static progress_state state; /* one per process: the CLI is single-run */
+    if (c->quiet || !isatty(STDERR_FILENO))
+        return;
+    memset(&state, 0, sizeof state);
+    c->ff.progress = cli_progress;
+    c->ff.progress_user = &state;
+}
+
+/* ---- dispatch ----------------------------------------------------------- */
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "Usage: radiosity COMMAND [OPTIONS] ...\n"
+            "Diffuse global illumination by full-matrix radiosity (Goral, Torrance,\n"
+            "Greenberg & Battaile 1984): form factors by the contour integral, the\n"
+            "radiosity system solved per colour band.\n"
+            "\n"
+            "Commands:\n"
+            "  formfactor SCENE        form factors of all element pairs (TSV)\n"
+            "  analytic CASE ARGS...   closed-form form factors\n"
+            "\n"
+            "Options:\n"
+            "      --help              show this help and exit\n"
+            "      --version           show the version and exit\n"
+            "\n"
+            "'radiosity COMMAND --help' describes each command.  The scene file\n"
+            "format is described in radiosity-scene(5).\n"
+            "\n"
+            "Report bugs to the project's issue tracker.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
+        printf("radiosity %s\n"
+               "Copyright (C) 2026 The radiosity authors.\n"
+               "License GPLv3+: GNU GPL version 3 or later <https://gnu.org/licenses/gpl.html>.\n"
+               "This is free software: you are free to change and redistribute it.\n"
+               "There is NO WARRANTY, to the extent permitted by law.\n",
+               PACKAGE_VERSION);
+        return 0;
+    }
+    /* each subcommand sees argv[0] = its name */
+    if (strcmp(cmd, "formfactor") == 0)
+        return cmd_formfactor(argc - 1, argv + 1);
+    if (strcmp(cmd, "analytic") == 0)
+        return cmd_analytic(argc - 1, argv + 1);
+    cli_error("unknown command '%s'", cmd);
+    return cli_usage_hint(NULL);
+}

@@ -1,0 +1,193 @@
+/* ffmatrix.c -- the form-factor matrix of a mesh, filled in parallel.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * F is n x n, column-major, F[i + j*n] = F_ij (from i to j).  Each unordered
+ * pair {i, j} is integrated once: the kernel returns the symmetric contour
+ * sum S, and F_ij = S/(2 pi A_i), F_ji = S/(2 pi A_j), which is
+ * reciprocity A_i F_ij = A_j F_ji (Goral et al. 1984, eq. 4) by
+ * construction.  Rows are shared among OpenMP threads dynamically (row i
+ * has n-1-i pairs); each thread owns its clipping scratch.  The work is cut
+ * into blocks of rows so that the progress callback runs between blocks,
+ * on the calling thread.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#else
+#define omp_get_max_threads() 1
+#endif
+
+#include "formfactor.h"
+#include "radiosity.h"
+#include "status.h"
+#include "vec.h"
+
+#define RAD_PI 3.14159265358979323846
+
+void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n)
+{
+    rad_vec3 nw = v3_newell(v, n), lo = v[0], hi = v[0], c = v3(0, 0, 0);
+    double a = 0.5 * v3_norm(nw);
+    rad_vec3 nrm = a > 0 ? v3_scale(nw, 0.5 / a) : v3(0, 0, 1);
+    for (int k = 1; k + 1 < n; k++) {
+        rad_vec3 e1 = v3_sub(v[k], v[0]), e2 = v3_sub(v[k + 1], v[0]);
+        double t = 0.5 * v3_dot(v3_cross(e1, e2), nrm);
+        c = v3_add(c, v3_scale(v3_add(e1, e2), t / 3.0));
+    }
+    for (int k = 1; k < n; k++) {
+        lo = v3(fmin(lo.x, v[k].x), fmin(lo.y, v[k].y), fmin(lo.z, v[k].z));
+        hi = v3(fmax(hi.x, v[k].x), fmax(hi.y, v[k].y), fmax(hi.z, v[k].z));
+    }
+    poly->v = v;
+    poly->n = n;
+    poly->normal = nrm;
+    poly->area = a;
+    poly->centroid = a > 0 ? v3_add(v[0], v3_scale(c, 1.0 / a)) : v[0];
+    poly->size = v3_norm(v3_sub(hi, lo));
+}
+
+double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+                       const rad_ff_options *opt, double *errest)
+{
+    rad_ff_poly pa, pb;
+    rad_ff_scratch w;
+    double s;
+    rad_ff_poly_make(&pa, a, na);
+    rad_ff_poly_make(&pb, b, nb);
+    rad_ff_scratch_init(&w);
+    double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
+    if (errest)
+        *errest /= 2 * RAD_PI * pa.area;
+    rad_ff_scratch_free(&w);
+    return f;
+}
+
+/* Element polygons with contiguous vertices, as the kernel wants them. */
+static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts)
+{
+    size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
+    for (int e = 0; e < m->nelements; e++)
+        total += (size_t)m->elements[e].nverts;
+    *polys = malloc(sizeof **polys * ne);
+    *pts = malloc(sizeof **pts * (total ? total : 1));
+    if (!*polys || !*pts)
+        return RAD_ERR_NOMEM;
+    size_t at = 0;
+    for (int e = 0; e < m->nelements; e++) {
+        const rad_element *el = &m->elements[e];
+        rad_ff_poly *p = &(*polys)[e];
+        for (int k = 0; k < el->nverts; k++)
+            (*pts)[at + (size_t)k] = rad_mesh_vertex(m, e, k);
+        p->v = *pts + at;
+        p->n = el->nverts;
+        p->normal = el->normal;
+        p->centroid = el->centroid;
+        p->area = el->area;
+        rad_ff_poly tmp;
+        rad_ff_poly_make(&tmp, p->v, p->n);
+        p->size = tmp.size;
+        at += (size_t)el->nverts;
+    }
+    return RAD_OK;
+}
+
+/* One row i: pairs (i, j > i). Returns 0, or -1 when scratch ran out. */
+static int fill_row(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
+                    rad_ff_scratch *w, double *F, double *errest)
+{
+    const double ti = 2 * RAD_PI * polys[i].area;
+    for (int j = i + 1; j < n; j++) {
+        double s, e = 0;
+        double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, errest ? &e : NULL);
+        if (isnan(fij))
+            return -1;
+        const double tj = 2 * RAD_PI * polys[j].area;
+        F[(size_t)i + (size_t)j * n] = fij;
+        F[(size_t)j + (size_t)i * n] = s / tj;
+        if (errest) {
+            errest[(size_t)i + (size_t)j * n] = e / ti;
+            errest[(size_t)j + (size_t)i * n] = e / tj;
+        }
+    }
+    F[(size_t)i + (size_t)i * n] = 0;
+    if (errest)
+        errest[(size_t)i + (size_t)i * n] = 0;
+    return 0;
+}
+
+static void fill_stats(const double *F, const double *errest, int n, rad_ff_stats *st)
+{
+    memset(st, 0, sizeof *st);
+    st->pairs = 0.5 * (double)n * (n - 1);
+    st->min_value = HUGE_VAL;
+    st->max_value = -HUGE_VAL;
+    for (size_t k = 0; k < (size_t)n * n; k++) {
+        double f = F[k];
+        if (k % ((size_t)n + 1) == 0)
+            continue; /* diagonal */
+        st->negative += f < 0;
+        st->above_one += f > 1;
+        st->min_value = fmin(st->min_value, f);
+        st->max_value = fmax(st->max_value, f);
+        if (f != 0)
+            st->integrated += 0.5;
+        if (errest) {
+            st->max_errest = fmax(st->max_errest, errest[k]);
+            if (f != 0)
+                st->max_relerr = fmax(st->max_relerr, errest[k] / fabs(f));
+        }
+    }
+    if (n < 2)
+        st->min_value = st->max_value = 0;
+}
+
+rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F,
+                         double *errest, rad_ff_stats *stats, rad_error *err)
+{
+    const int n = m->nelements;
+    rad_ff_poly *polys = NULL;
+    rad_vec3 *pts = NULL;
+    int failed = 0, stop = 0;
+    if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
+        return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
+                        RAD_GAUSS_MAX, opt->quadrature);
+    if (mesh_polys(m, &polys, &pts) != RAD_OK) {
+        free(polys);
+        free(pts);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
+    }
+    const double total = 0.5 * (double)n * (n - 1);
+    const int block = n / 200 > 1 ? n / 200 : 1;
+    for (int i0 = 0; i0 < n && !failed && !stop; i0 += block) {
+        const int i1 = i0 + block < n ? i0 + block : n;
+#pragma omp parallel num_threads(opt->threads > 0 ? opt->threads : omp_get_max_threads()) \
+    reduction(|| : failed)
+        {
+            rad_ff_scratch w;
+            rad_ff_scratch_init(&w);
+#pragma omp for schedule(dynamic, 1)
+            for (int i = i0; i < i1; i++)
+                if (fill_row(polys, n, i, opt, &w, F, errest) != 0)
+                    failed = 1;
+            rad_ff_scratch_free(&w);
+        }
+        if (opt->progress) {
+            double done = total - 0.5 * (double)(n - i1) * (n - i1 - 1);
+            stop = opt->progress(opt->progress_user, "form factors", done, total);
+        }
+    }
+    free(polys);
+    free(pts);
+    if (failed)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
+    if (stop)
+        return rad_fail(err, RAD_ERR_INVALID, "interrupted");
+    if (stats)
+        fill_stats(F, errest, n, stats);
+    return RAD_OK;
+}

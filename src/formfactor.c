@@ -1,0 +1,388 @@
+/* formfactor.c -- element-to-element form factors by the contour integral.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The form factor from polygon A to polygon B (Goral et al. 1984, eq. 13;
+ * Sparrow 1963) is
+ *
+ *     F_AB = 1/(2 pi A_A) * sum_p sum_q (e_p . e_q) * I_pq,
+ *     I_pq = integral over edge p (length s) and edge q (length t) of ln r,
+ *
+ * with e_p, e_q the unit directions of the edges, both polygons run
+ * counter-clockwise about their own front normals (which face each other),
+ * and r the distance between the two points.  The double sum
+ * S = sum (e_p . e_q) I_pq is symmetric in A and B, so one S gives both
+ * F_AB = S/(2 pi A_A) and F_BA = S/(2 pi A_B): reciprocity holds to
+ * round-off.  Perpendicular edges contribute nothing and are skipped.
+ * S does not change when a constant is added to ln r (each closed contour
+ * sums its edge vectors to zero), so the code works in coordinates centred
+ * on A's centroid and keeps the terms small.
+ *
+ * Before integrating, each polygon is clipped to the front half-space of
+ * the other's plane (Sutherland & Hodgman 1974): points behind a plane
+ * neither see nor are seen by its front, and the contour formula assumes
+ * polygons that do not cross each other's planes.  A pair wholly behind,
+ * or on one plane, has F = 0.
+ *
+ * How each I_pq is evaluated depends on the accuracy mode:
+ *   classic    K-point Gauss-Legendre in each variable (K = 3: the paper's
+ *              nine-point rule) and the closed form for colinear edges;
+ *   default    the closed form for every parallel pair (colinear included);
+ *              for skew pairs the inner integral in closed form and the
+ *              outer one by adaptive Gauss-Kronrod;
+ *   reference  as default with a tighter tolerance (see ff_pair_reference
+ *              in formfactor_ref.c once it exists).
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "formfactor.h"
+#include "radiosity.h"
+#include "status.h"
+#include "vec.h"
+
+#define RAD_PI 3.14159265358979323846
+
+void rad_ff_options_init(rad_ff_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->quadrature = 3;
+    opt->accuracy = RAD_ACCURACY_DEFAULT;
+}
+
+/* ---- closed forms of the log integrals ---------------------------------- */
+
+/* H(u) with H''(u) = ln sqrt(u^2 + d^2):
+ *   H(u) = (u^2 - d^2)/4 ln(u^2 + d^2) - 3u^2/4 + d u atan(u/d),
+ * and for d = 0, H(u) = u^2/2 ln|u| - 3u^2/4 (H(0) = 0).  Derived by
+ * integrating ln sqrt(u^2 + d^2) twice (Gradshteyn & Ryzhik 2.733.1 and
+ * 2.822.1); the colinear case is the limit d -> 0. */
+static double h_parallel(double u, double d)
+{
+    if (d == 0)
+        return u == 0 ? 0.0 : u * u * (0.5 * log(fabs(u)) - 0.75);
+    double u2 = u * u, d2 = d * d;
+    return 0.25 * (u2 - d2) * log(u2 + d2) - 0.75 * u2 + d * u * atan2(u, d);
+}
+
+double rad_ln_parallel(double a1, double a2, double b1, double b2, double d)
+{
+    /* integral_a1^a2 integral_b1^b2 f(s - t) dt ds with f = H'' is
+     * H(a2-b1) + H(a1-b2) - H(a1-b1) - H(a2-b2). */
+    d = fabs(d);
+    return h_parallel(a2 - b1, d) + h_parallel(a1 - b2, d) - h_parallel(a1 - b1, d) -
+           h_parallel(a2 - b2, d);
+}
+
+/* G(v) = integral of ln sqrt(v^2 + h^2) dv
+ *      = v ln sqrt(v^2 + h^2) - v + h atan(v/h)   (G&R 2.733.1). */
+static double g_point(double v, double h)
+{
+    if (h == 0)
+        return v == 0 ? 0.0 : v * (log(fabs(v)) - 1.0);
+    return 0.5 * v * log(v * v + h * h) - v + h * atan2(v, h);
+}
+
+/* integral_0^L ln |X - (Q0 + t e)| dt, e a unit vector. */
+static double ln_point_segment(rad_vec3 x, rad_vec3 q0, rad_vec3 e, double len)
+{
+    rad_vec3 w = v3_sub(x, q0);
+    double t0 = v3_dot(w, e);
+    double h = v3_norm(v3_sub(w, v3_scale(e, t0)));
+    return g_point(len - t0, h) - g_point(-t0, h);
+}
+
+/* ---- quadrature of one edge pair ---------------------------------------- */
+
+typedef struct ff_edge {
+    rad_vec3 p0;    /* start, local coordinates */
+    rad_vec3 d;     /* p1 - p0 */
+    rad_vec3 e;     /* unit direction */
+    double len;
+} ff_edge;
+
+/* K x K Gauss-Legendre product rule for I_pq. */
+static double ln_gauss(const ff_edge *p, const ff_edge *q, int k)
+{
+    const double *x = rad_gauss_nodes(k), *w = rad_gauss_weights(k);
+    double sum = 0;
+    for (int a = 0; a < k; a++) {
+        rad_vec3 pa = v3_add(p->p0, v3_scale(p->d, 0.5 * (1 + x[a])));
+        double inner = 0;
+        for (int b = 0; b < k; b++) {
+            rad_vec3 qb = v3_add(q->p0, v3_scale(q->d, 0.5 * (1 + x[b])));
+            rad_vec3 r = v3_sub(pa, qb);
+            inner += w[b] * log(v3_dot(r, r));
+        }
+        sum += w[a] * inner;
+    }
+    /* 0.5 ln r^2 = ln r; (len/2)^2 maps [-1, 1]^2 to the edges. */
+    return 0.125 * p->len * q->len * sum;
+}
+
+/* The nine-point rule with the logs grouped by weight: the 3-point weights
+ * are 5/9, 8/9, 5/9, so the nine products take three values and
+ * sum w_a w_b ln r_ab^2 = (25 ln prod(corner r^2) + 40 ln prod(edge r^2)
+ * + 64 ln r_centre^2) / 81: three logs instead of nine.  Distances are
+ * scaled by s2 (a typical r^2) so the products stay far from overflow. */
+static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
+{
+    static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
+    double r2[3][3];
+    for (int a = 0; a < 3; a++) {
+        double ta = 0.5 * (1 + (a - 1) * x3);
+        rad_vec3 pa = v3_add(p->p0, v3_scale(p->d, ta));
+        for (int b = 0; b < 3; b++) {
+            double tb = 0.5 * (1 + (b - 1) * x3);
+            rad_vec3 r = v3_sub(pa, v3_add(q->p0, v3_scale(q->d, tb)));
+            r2[a][b] = v3_dot(r, r) * inv_s2;
+        }
+    }
+    double corner = r2[0][0] * r2[0][2] * r2[2][0] * r2[2][2];
+    double edge = r2[0][1] * r2[1][0] * r2[1][2] * r2[2][1];
+    double sum = (25.0 * log(corner) + 40.0 * log(edge) + 64.0 * log(r2[1][1])) / 81.0;
+    /* sum approximates sum w_a w_b (ln r^2 - ln s2); add back the constant
+     * (the weights sum to 4). */
+    sum -= 4.0 * log(inv_s2);
+    return 0.125 * p->len * q->len * sum;
+}
+
+/* Parallel edges (e_p = +-e_q): the closed form, in p's coordinate. */
+static double ln_parallel_edges(const ff_edge *p, const ff_edge *q)
+{
+    rad_vec3 w0 = v3_sub(q->p0, p->p0);
+    rad_vec3 w1 = v3_add(w0, q->d);
+    double b1 = v3_dot(w0, p->e), b2 = v3_dot(w1, p->e);
+    /* distance between the lines, from both ends of q (mean of two) */
+    double d0 = v3_norm(v3_sub(w0, v3_scale(p->e, b1)));
+    double d1 = v3_norm(v3_sub(w1, v3_scale(p->e, b2)));
+    double d = 0.5 * (d0 + d1);
+    if (b1 > b2) {
+        double t = b1;
+        b1 = b2;
+        b2 = t;
+    }
+    return rad_ln_parallel(0.0, p->len, b1, b2, d);
+}
+
+/* Colinear: parallel edges on one line (distance between the lines below
+ * 1e-12 of the longer edge).  The classic rule's Gauss points would hit or
+ * nearly hit r = 0 there, so the paper integrates them in closed form. */
+static int ln_colinear(const ff_edge *p, const ff_edge *q)
+{
+    rad_vec3 w = v3_sub(q->p0, p->p0);
+    rad_vec3 perp = v3_sub(w, v3_scale(p->e, v3_dot(w, p->e)));
+    return v3_norm(perp) <= 1e-12 * fmax(p->len, q->len);
+}
+
+/* Adaptive Gauss-Kronrod (7-15) over p of the closed-form inner integral
+ * over q.  Kronrod nodes and weights: Piessens et al., QUADPACK (1983),
+ * routine QK15. */
+static const double gk_x[8] = {
+    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+    0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+static const double gk_wk[8] = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+static const double gk_wg[4] = {
+    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+
+static double gk15(const ff_edge *p, const ff_edge *q, double a, double b, double *err)
+{
+    double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double fc = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c)), q->p0, q->e, q->len);
+    double rk = gk_wk[7] * fc, rg = gk_wg[3] * fc;
+    for (int k = 0; k < 7; k++) {
+        double dx = h * gk_x[k];
+        double f1 = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c - dx)), q->p0, q->e, q->len);
+        double f2 = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c + dx)), q->p0, q->e, q->len);
+        rk += gk_wk[k] * (f1 + f2);
+        if (k % 2 == 1)
+            rg += gk_wg[k / 2] * (f1 + f2);
+    }
+    *err = fabs((rk - rg) * h);
+    return rk * h;
+}
+
+static double ln_adaptive(const ff_edge *p, const ff_edge *q, double a, double b,
+                          double tol, int depth, double *err)
+{
+    double e;
+    double r = gk15(p, q, a, b, &e);
+    if (e <= tol || depth >= 40 || b - a <= 1e-15 * p->len) {
+        *err += e;
+        return r;
+    }
+    double m = 0.5 * (a + b);
+    return ln_adaptive(p, q, a, m, 0.5 * tol, depth + 1, err) +
+           ln_adaptive(p, q, m, b, 0.5 * tol, depth + 1, err);
+}
+
+/* ---- one polygon pair ---------------------------------------------------- */
+
+/* Clip polygon p (n vertices) to dist >= 0, dist[k] its signed distances
+ * (already snapped to 0 within tolerance).  Output into out (room for n+1);
+ * returns the vertex count. */
+static int clip_front(const rad_vec3 *p, const double *dist, int n, rad_vec3 *out)
+{
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        int k1 = (k + 1) % n;
+        if (dist[k] >= 0)
+            out[m++] = p[k];
+        if ((dist[k] > 0 && dist[k1] < 0) || (dist[k] < 0 && dist[k1] > 0)) {
+            double t = dist[k] / (dist[k] - dist[k1]);
+            out[m++] = v3_lerp(p[k], p[k1], t);
+        }
+    }
+    return m;
+}
+
+/* Signed distances of p's vertices from the plane (n, c), snapped to 0
+ * within tol; returns 1 if any is positive, and sets *neg if any negative. */
+static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, double tol,
+                      double *dist, int *neg)
+{
+    int pos = 0;
+    *neg = 0;
+    for (int k = 0; k < np; k++) {
+        double s = v3_dot(v3_sub(p[k], c), nrm);
+        if (fabs(s) <= tol)
+            s = 0;
+        dist[k] = s;
+        pos |= s > 0;
+        *neg |= s < 0;
+    }
+    return pos;
+}
+
+static int make_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
+{
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 a = v3_sub(p[k], origin), b = v3_sub(p[(k + 1) % n], origin);
+        ff_edge *x = &e[m];
+        x->p0 = a;
+        x->d = v3_sub(b, a);
+        x->len = v3_norm(x->d);
+        if (!(x->len > 0))
+            continue;
+        x->e = v3_scale(x->d, 1.0 / x->len);
+        m++;
+    }
+    return m;
+}
+
+void rad_ff_scratch_init(rad_ff_scratch *w)
+{
+    memset(w, 0, sizeof *w);
+}
+
+void rad_ff_scratch_free(rad_ff_scratch *w)
+{
+    free(w->buf);
+    memset(w, 0, sizeof *w);
+}
+
+static int scratch_reserve(rad_ff_scratch *w, int na, int nb)
+{
+    int need = na + nb + 4;
+    if (need <= w->cap)
+        return 0;
+    free(w->buf);
+    /* layout: clipped a, clipped b (vec3), dist (double), edges a, edges b */
+    size_t bytes = (size_t)need * (2 * sizeof(rad_vec3) + sizeof(double) + 2 * sizeof(ff_edge));
+    w->buf = malloc(bytes);
+    if (!w->buf) {
+        w->cap = 0;
+        return -1;
+    }
+    w->cap = need;
+    return 0;
+}
+
+/* The contour double sum S for two polygons known to face each other. */
+static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
+                          const rad_ff_options *opt, double scale2, double *errest)
+{
+    const int k = opt->quadrature;
+    const double inv_s2 = 1.0 / scale2;
+    double s = 0, err = 0;
+    for (int p = 0; p < na; p++)
+        for (int q = 0; q < nb; q++) {
+            double dot = v3_dot(ea[p].e, eb[q].e);
+            if (fabs(dot) < 1e-14)
+                continue; /* perpendicular: no contribution */
+            rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
+            int parallel = v3_dot(cr, cr) < 1e-26;
+            double I;
+            if (parallel && (opt->accuracy != RAD_ACCURACY_CLASSIC ||
+                             ln_colinear(&ea[p], &eb[q])))
+                I = ln_parallel_edges(&ea[p], &eb[q]);
+            else if (opt->accuracy == RAD_ACCURACY_CLASSIC)
+                I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2) : ln_gauss(&ea[p], &eb[q], k);
+            else {
+                double tol = 1e-12 * ea[p].len * eb[q].len;
+                I = ln_adaptive(&ea[p], &eb[q], 0, ea[p].len, tol, 0, &err);
+            }
+            s += dot * I;
+        }
+    if (errest)
+        *errest = err;
+    return s;
+}
+
+double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
+                   rad_ff_scratch *w, double *contour, double *errest)
+{
+    *contour = 0;
+    if (errest)
+        *errest = 0;
+    if (scratch_reserve(w, a->n, b->n) != 0)
+        return NAN;
+    rad_vec3 *ca = (rad_vec3 *)w->buf;
+    rad_vec3 *cb = ca + a->n + 2;
+    double *dist = (double *)(cb + b->n + 2);
+    ff_edge *ea = (ff_edge *)(dist + (a->n > b->n ? a->n : b->n) + 2);
+    ff_edge *eb = ea + a->n + 2;
+    /* Tolerance for "on the plane": round-off of a dot product of
+     * coordinates of this magnitude, scaled by the pair's size. */
+    double mag = fmax(v3_maxabs(a->centroid), v3_maxabs(b->centroid)) + a->size + b->size;
+    double tol = 1e-12 * mag;
+    int nega, negb;
+    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, dist, &negb))
+        return 0.0; /* B wholly behind A's plane, or on it */
+    const rad_vec3 *pb = b->v;
+    int nb = b->n;
+    if (negb) {
+        nb = clip_front(b->v, dist, b->n, cb);
+        pb = cb;
+    }
+    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, dist, &nega))
+        return 0.0;
+    const rad_vec3 *pa = a->v;
+    int na = a->n;
+    if (nega) {
+        na = clip_front(a->v, dist, a->n, ca);
+        pa = ca;
+    }
+    if (na < 3 || nb < 3)
+        return 0.0;
+    int mea = make_edges(pa, na, a->centroid, ea);
+    int meb = make_edges(pb, nb, a->centroid, eb);
+    rad_vec3 sep = v3_sub(b->centroid, a->centroid);
+    double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
+    double s = contour_sum(ea, mea, eb, meb, opt, scale2, errest);
+    *contour = s;
+    /* With both contours counter-clockwise about their own fronts, facing
+     * polygons give S > 0 (checked on two facing unit squares). */
+    return s / (2 * RAD_PI * a->area);
+}

@@ -1,0 +1,227 @@
+/* radiosity.h -- the public C API of the radiosity library.
+ *
+ * Copyright (C) 2026 The radiosity authors.
+ * This program is free software: you can redistribute it and/or modify it
+ * under the terms of the GNU General Public License as published by the Free
+ * Software Foundation, either version 3 of the License, or (at your option)
+ * any later version.  See COPYING.
+ *
+ * This is the one header a library user includes.  Everything public starts
+ * with `rad_`.  The library keeps no global mutable state: every function
+ * works on the objects it is given, so separate objects may be used from
+ * separate threads.
+ *
+ * Conventions, stated once:
+ *   - lengths are in the user's unit; radiosity B and emission E share one
+ *     radiometric unit (power per area); form factors are dimensionless;
+ *   - polygons run counter-clockwise seen from their front side, the side
+ *     that reflects and emits; the front normal follows the right-hand rule;
+ *   - colour bands are RAD_BANDS = 3 (red, green, blue), index 0, 1, 2;
+ *   - matrices are double, column-major (LAPACK): entry (i, j) of an n x n
+ *     matrix M is M[i + j*n]; F[i + j*n] is the form factor FROM element i
+ *     TO element j (row i = from element i);
+ *   - a function that can fail returns a rad_status and, when given a
+ *     rad_error, fills it with a message of the form "FILE:LINE: reason"
+ *     for input errors, or a plain reason otherwise.  Library code never
+ *     prints.
+ */
+#ifndef RADIOSITY_H
+#define RADIOSITY_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RAD_BANDS 3
+
+/* ---- status and errors ------------------------------------------------ */
+
+typedef enum rad_status {
+    RAD_OK = 0,
+    RAD_ERR_NOMEM,      /* allocation failed */
+    RAD_ERR_IO,         /* a file could not be read or written */
+    RAD_ERR_PARSE,      /* malformed input (message names file and line) */
+    RAD_ERR_INVALID,    /* an argument out of its domain */
+    RAD_ERR_TOOBIG,     /* the problem does not fit in memory */
+    RAD_ERR_SINGULAR,   /* the radiosity system is (numerically) singular */
+    RAD_ERR_NOCONV      /* an iteration stopped without converging */
+} rad_status;
+
+#define RAD_ERRMSG_MAX 512
+
+typedef struct rad_error {
+    rad_status status;
+    char message[RAD_ERRMSG_MAX];
+} rad_error;
+
+/* A short English name of a status ("singular system", ...). */
+const char *rad_strstatus(rad_status status);
+
+/* ---- geometry ----------------------------------------------------------- */
+
+typedef struct rad_vec3 {
+    double x, y, z;
+} rad_vec3;
+
+/* ---- scene (scene.c) ---------------------------------------------------- */
+
+#define RAD_NAME_MAX 64
+
+typedef struct rad_material {
+    char name[RAD_NAME_MAX];
+    double reflect[RAD_BANDS];  /* rho in [0, 1] */
+    double emit[RAD_BANDS];     /* E >= 0 */
+    int line;                   /* where it was defined */
+} rad_material;
+
+typedef enum rad_surface_kind {
+    RAD_SURFACE_QUAD = 0,       /* meshed into mesh_n x mesh_m elements */
+    RAD_SURFACE_POLYGON         /* convex planar polygon, one element */
+} rad_surface_kind;
+
+typedef struct rad_surface {
+    rad_surface_kind kind;
+    int material;               /* index into rad_scene.materials */
+    int nverts;                 /* 4 for a quad, K >= 3 for a polygon */
+    rad_vec3 *verts;            /* counter-clockwise about the front */
+    int mesh_n, mesh_m;         /* v1->v2 in N parts, v2->v3 in M parts */
+    int line;                   /* input line, for messages */
+} rad_surface;
+
+typedef struct rad_camera {
+    int defined;                /* 0: the scene has no camera line */
+    rad_vec3 eye, at, up;
+    double fov;                 /* vertical, degrees */
+} rad_camera;
+
+typedef struct rad_scene {
+    char *filename;
+    rad_material *materials;
+    int nmaterials;
+    rad_surface *surfaces;
+    int nsurfaces;
+    rad_camera camera;
+} rad_scene;
+
+/* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
+ * input.  On failure *scene is left empty and err says FILE:LINE: why. */
+rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
+/* Parse scene text held in memory; `name` is used in messages. */
+rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
+                           const char *name, rad_error *err);
+void rad_scene_free(rad_scene *scene);
+/* Override the mesh of every quad (the --mesh option). */
+void rad_scene_set_mesh(rad_scene *scene, int n, int m);
+
+/* ---- mesh (mesh.c) ------------------------------------------------------ */
+
+typedef struct rad_element {
+    int surface;                /* index of the scene surface it came from */
+    int gi, gj;                 /* position in the surface's grid (0,0 for polygons) */
+    int nverts;                 /* 4 for quad elements, K for polygons */
+    int first;                  /* its vertex indices: mesh.vindex[first..first+nverts) */
+    rad_vec3 centroid;
+    rad_vec3 normal;            /* unit front normal */
+    double area;
+    double reflect[RAD_BANDS];
+    double emit[RAD_BANDS];
+} rad_element;
+
+typedef struct rad_mesh {
+    int nelements;
+    rad_element *elements;
+    int nvertices;
+    rad_vec3 *vertices;         /* shared inside a surface, never across */
+    int *vindex;                /* element vertex lists, counter-clockwise */
+    int nsurfaces;
+    int *surface_first;         /* elements of surface s: [first[s], first[s+1]) */
+    int *surface_vfirst;        /* vertices of surface s: [vfirst[s], vfirst[s+1]);
+                                   a quad's are row-major: (gj) * (n+1) + gi */
+    int *surface_n, *surface_m; /* grid size per surface (1 x 1 for polygons) */
+} rad_mesh;
+
+rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
+void rad_mesh_free(rad_mesh *mesh);
+/* The vertex v (0..nverts-1) of element e. */
+rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
+
+/* ---- form factors (formfactor.c) ---------------------------------------- */
+
+typedef enum rad_accuracy {
+    RAD_ACCURACY_CLASSIC = 0,   /* Goral et al. 1984: K Gauss points per edge,
+                                   closed form for colinear edges, nothing else */
+    RAD_ACCURACY_DEFAULT,       /* the classic rule, made safe where it fails */
+    RAD_ACCURACY_REFERENCE      /* error-controlled, relative error <= 1e-9 */
+} rad_accuracy;
+
+/* Called now and then during long computations; `done` of `total` units.
+ * Return non-zero to ask the computation to stop (it then returns
+ * RAD_ERR_INVALID with the message "interrupted"). */
+typedef int (*rad_progress_fn)(void *user, const char *stage, double done, double total);
+
+typedef struct rad_ff_options {
+    int quadrature;             /* Gauss points per edge, 1..RAD_GAUSS_MAX (3) */
+    rad_accuracy accuracy;
+    int threads;                /* 0: OpenMP default */
+    rad_progress_fn progress;   /* may be NULL */
+    void *progress_user;
+} rad_ff_options;
+
+#define RAD_GAUSS_MAX 20
+
+void rad_ff_options_init(rad_ff_options *opt);
+
+/* Form factor from polygon a (na vertices, area computed) to polygon b, both
+ * planar and convex, counter-clockwise about their fronts.  If errest is not
+ * NULL it receives an estimate of the absolute error of the result. */
+double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+                       const rad_ff_options *opt, double *errest);
+
+/* What a fill of the form-factor matrix found. */
+typedef struct rad_ff_stats {
+    double pairs;               /* unordered pairs of distinct elements */
+    double integrated;          /* pairs that needed a contour integral */
+    long negative;              /* entries below 0 (only possible in classic) */
+    long above_one;             /* entries above 1 (only possible in classic) */
+    double min_value, max_value;
+    double max_errest;          /* largest estimated absolute error */
+    double max_relerr;          /* largest estimated relative error */
+} rad_ff_stats;
+
+/* All form factors of a mesh: F is n x n column-major, F[i + j*n] = F_ij,
+ * F_ii = 0.  Each unordered pair is computed once; the other entry follows
+ * by reciprocity A_i F_ij = A_j F_ji.  errest (n x n, may be NULL) receives
+ * the estimated absolute error of each entry; stats (may be NULL) what the
+ * fill found. */
+rad_status rad_ff_matrix(const rad_mesh *mesh, const rad_ff_options *opt, double *F,
+                         double *errest, rad_ff_stats *stats, rad_error *err);
+
+/* Gauss-Legendre nodes on [-1, 1] and weights for k = 1..RAD_GAUSS_MAX
+ * points (Abramowitz & Stegun 1964, 25.4.29 and table 25.4). */
+const double *rad_gauss_nodes(int k);
+const double *rad_gauss_weights(int k);
+
+/* I = integral over s in [a1, a2], t in [b1, b2] of ln sqrt((s-t)^2 + d^2):
+ * two parallel segments on lines a distance d >= 0 apart, parameterised by
+ * the same unit direction (d = 0: colinear). */
+double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
+
+/* ---- closed forms (analytic.c) ------------------------------------------ */
+
+/* Differential area to a coaxial parallel disk of radius r at distance h. */
+double rad_analytic_point_disk(double r, double h);
+/* Disk of radius r1 to a coaxial parallel disk of radius r2, h apart. */
+double rad_analytic_disk_disk(double r1, double r2, double h);
+/* Directly opposed parallel a x b rectangles, c apart. */
+double rad_analytic_parallel_rectangles(double a, double b, double c);
+/* From the l x w rectangle to the l x h rectangle sharing its edge of
+ * length l at a right angle. */
+double rad_analytic_perpendicular_rectangles(double l, double w, double h);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RADIOSITY_H */

@@ -1,0 +1,661 @@
+/* scene.c -- the scene model and its parser; all input validation.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The format is radiosity-scene(5): one statement per line, `#` starts a
+ * comment, tokens are separated by white space, numbers use C strtod
+ * syntax.  Every error is reported as "FILE:LINE: what is wrong" and leaves
+ * the scene empty; nothing is half-built.
+ *
+ * Geometric tolerances, stated once (D is the polygon's bounding-box
+ * diagonal, so they scale with the polygon and not with where it sits):
+ *   - planar:   every vertex within RAD_PLANAR_TOL * D of the mean plane;
+ *   - convex:   no turn backwards by more than RAD_TURN_TOL radians;
+ *   - area:     area above RAD_AREA_TOL * D^2;
+ *   - distinct: consecutive vertices more than RAD_AREA_TOL * D apart.
+ */
+#include <config.h>
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiosity.h"
+#include "scene.h"
+#include "status.h"
+#include "vec.h"
+
+#define RAD_PLANAR_TOL 1e-6
+#define RAD_TURN_TOL 1e-9
+#define RAD_AREA_TOL 1e-12
+#define RAD_PI 3.14159265358979323846
+
+/* One line being parsed: its tokens and where it came from. */
+typedef struct line_ctx {
+    const char *file;
+    int line;
+    char **tok;
+    int ntok;
+    rad_error *err;
+} line_ctx;
+
+static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
+{
+    char what[RAD_ERRMSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return rad_fail(c->err, RAD_ERR_PARSE, "%s:%d: %s", c->file, c->line, what);
+}
+
+/* ---- numbers ------------------------------------------------------------ */
+
+static rad_status get_number(const line_ctx *c, int k, const char *what, double *out)
+{
+    char *end;
+    if (k >= c->ntok)
+        return fail_at(c, "missing number: %s", what);
+    errno = 0;
+    double v = strtod(c->tok[k], &end);
+    if (end == c->tok[k] || *end != '\0')
+        return fail_at(c, "'%s' is not a number (%s)", c->tok[k], what);
+    if (!isfinite(v))
+        return fail_at(c, "%s must be finite, not '%s'", what, c->tok[k]);
+    *out = v;
+    return RAD_OK;
+}
+
+static rad_status get_int(const line_ctx *c, int k, const char *what, long lo,
+                          long hi, int *out)
+{
+    char *end;
+    if (k >= c->ntok)
+        return fail_at(c, "missing integer: %s", what);
+    errno = 0;
+    long v = strtol(c->tok[k], &end, 10);
+    if (end == c->tok[k] || *end != '\0')
+        return fail_at(c, "'%s' is not an integer (%s)", c->tok[k], what);
+    if (errno == ERANGE || v < lo || v > hi)
+        return fail_at(c, "%s must be from %ld to %ld, not '%s'", what, lo, hi, c->tok[k]);
+    *out = (int)v;
+    return RAD_OK;
+}
+
+static rad_status get_vec(const line_ctx *c, int k, const char *what, rad_vec3 *out)
+{
+    rad_status s;
+    if ((s = get_number(c, k, what, &out->x)) || (s = get_number(c, k + 1, what, &out->y)) ||
+        (s = get_number(c, k + 2, what, &out->z)))
+        return s;
+    return RAD_OK;
+}
+
+static int is_number(const char *t)
+{
+    char *end;
+    (void)strtod(t, &end);
+    return end != t && *end == '\0';
+}
+
+/* ---- polygon validation ------------------------------------------------- */
+
+/* Do segments p0p1 and q0q1 of the plane (2-D) properly cross or touch? */
+static int segments_meet_2d(const double *p0, const double *p1, const double *q0,
+                            const double *q1)
+{
+    double d1 = (p1[0] - p0[0]) * (q0[1] - p0[1]) - (p1[1] - p0[1]) * (q0[0] - p0[0]);
+    double d2 = (p1[0] - p0[0]) * (q1[1] - p0[1]) - (p1[1] - p0[1]) * (q1[0] - p0[0]);
+    double d3 = (q1[0] - q0[0]) * (p0[1] - q0[1]) - (q1[1] - q0[1]) * (p0[0] - q0[0]);
+    double d4 = (q1[0] - q0[0]) * (p1[1] - q0[1]) - (q1[1] - q0[1]) * (p1[0] - q0[0]);
+    return ((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+           ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0));
+}
+
+/* Do two non-adjacent edges of the polygon meet?  O(n^2): only called on
+ * polygons that already failed the cheap convexity test. */
+static int polygon_self_intersects(const rad_vec3 *p, int n, rad_vec3 nrm)
+{
+    rad_vec3 u = fabs(nrm.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0);
+    u = v3_cross(nrm, u);
+    rad_vec3 w = v3_cross(nrm, u);
+    double *q = malloc(2 * sizeof *q * (size_t)n);
+    int hit = 0;
+    if (!q)
+        return 0;
+    for (int k = 0; k < n; k++) {
+        q[2 * k] = v3_dot(v3_sub(p[k], p[0]), u);
+        q[2 * k + 1] = v3_dot(v3_sub(p[k], p[0]), w);
+    }
+    for (int a = 0; a < n && !hit; a++)
+        for (int b = a + 2; b < n && !hit; b++) {
+            if (a == 0 && b == n - 1)
+                continue; /* adjacent through the closing edge */
+            hit = segments_meet_2d(q + 2 * a, q + 2 * ((a + 1) % n), q + 2 * b,
+                                   q + 2 * ((b + 1) % n));
+        }
+    free(q);
+    return hit;
+}
+
+/* The largest cross product of consecutive edges: a normal for polygons
+ * whose Newell vector vanishes (a symmetric bow-tie). */
+static rad_vec3 largest_turn_normal(const rad_vec3 *p, int n)
+{
+    rad_vec3 best = v3(0, 0, 0);
+    for (int k = 0; k < n; k++) {
+        rad_vec3 e0 = v3_sub(p[k], p[(k + n - 1) % n]);
+        rad_vec3 e1 = v3_sub(p[(k + 1) % n], p[k]);
+        rad_vec3 c = v3_cross(e0, e1);
+        if (v3_dot(c, c) > v3_dot(best, best))
+            best = c;
+    }
+    return best;
+}
+
+rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
+                             const char *file, int line, rad_error *err)
+{
+    line_ctx c = {file, line, NULL, 0, err};
+    rad_vec3 lo = p[0], hi = p[0];
+    for (int k = 1; k < n; k++) {
+        lo = v3(fmin(lo.x, p[k].x), fmin(lo.y, p[k].y), fmin(lo.z, p[k].z));
+        hi = v3(fmax(hi.x, p[k].x), fmax(hi.y, p[k].y), fmax(hi.z, p[k].z));
+    }
+    double diam = v3_norm(v3_sub(hi, lo));
+    if (!(diam > 0) || !isfinite(diam))
+        return fail_at(&c, "%s has zero area (all vertices coincide)", what);
+    for (int k = 0; k < n; k++)
+        if (v3_norm(v3_sub(p[(k + 1) % n], p[k])) <= RAD_AREA_TOL * diam)
+            return fail_at(&c, "%s has a repeated vertex (vertices %d and %d)", what,
+                           k + 1, (k + 1) % n + 1);
+    rad_vec3 nw = v3_newell(p, n);
+    double twice_area = v3_norm(nw);
+    rad_vec3 nrm = twice_area > 0 ? nw : largest_turn_normal(p, n);
+    if (!(v3_norm(nrm) > RAD_AREA_TOL * diam * diam))
+        return fail_at(&c, "%s has zero area (its vertices are colinear)", what);
+    nrm = v3_scale(nrm, 1.0 / v3_norm(nrm));
+
+    /* Planarity: distance of each vertex from the plane through the mean. */
+    rad_vec3 mean = v3(0, 0, 0);
+    for (int k = 0; k < n; k++)
+        mean = v3_add(mean, v3_scale(v3_sub(p[k], p[0]), 1.0 / n));
+    mean = v3_add(mean, p[0]);
+    for (int k = 0; k < n; k++) {
+        double off = fabs(v3_dot(v3_sub(p[k], mean), nrm));
+        if (off > RAD_PLANAR_TOL * diam)
+            return fail_at(&c,
+                           "%s is not planar (vertex %d is %.3g off its plane; "
+                           "tolerance %g of its size)",
+                           what, k + 1, off, RAD_PLANAR_TOL);
+    }
+
+    /* Convexity and simplicity: every turn is to the left (about the
+     * normal) and the turns add up to one full revolution. */
+    double total = 0;
+    int reflex = -1;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 e0 = v3_sub(p[k], p[(k + n - 1) % n]);
+        rad_vec3 e1 = v3_sub(p[(k + 1) % n], p[k]);
+        double turn = atan2(v3_dot(v3_cross(e0, e1), nrm), v3_dot(e0, e1));
+        if (turn < -RAD_TURN_TOL && reflex < 0)
+            reflex = k;
+        total += turn;
+    }
+    if (reflex >= 0 || total > 2 * RAD_PI + 1e-6) {
+        if (polygon_self_intersects(p, n, nrm))
+            return fail_at(&c, "%s is self-intersecting", what);
+        if (reflex >= 0)
+            return fail_at(&c, "%s is not convex (at vertex %d)", what, reflex + 1);
+        return fail_at(&c, "%s is self-intersecting (it winds more than once)", what);
+    }
+    if (!(0.5 * twice_area > RAD_AREA_TOL * diam * diam))
+        return fail_at(&c, "%s has zero area", what);
+    return RAD_OK;
+}
+
+/* ---- statements --------------------------------------------------------- */
+
+static int find_material(const rad_scene *s, const char *name)
+{
+    for (int k = 0; k < s->nmaterials; k++)
+        if (strcmp(s->materials[k].name, name) == 0)
+            return k;
+    return -1;
+}
+
+/* One or three band values starting at token *k; advances *k. */
+static rad_status get_bands(const line_ctx *c, int *k, const char *what, double lo,
+                            double hi, double out[RAD_BANDS])
+{
+    int count = 0;
+    while (*k + count < c->ntok && count < 4 && is_number(c->tok[*k + count]))
+        count++;
+    if (count != 1 && count != RAD_BANDS)
+        return fail_at(c, "%s takes 1 value (grey) or 3 (R G B), not %d", what, count);
+    for (int b = 0; b < count; b++) {
+        rad_status s = get_number(c, *k + b, what, &out[b]);
+        if (s)
+            return s;
+        if (out[b] < lo || out[b] > hi) {
+            if (hi < HUGE_VAL)
+                return fail_at(c, "%s must be from %g to %g, not %s", what, lo, hi,
+                               c->tok[*k + b]);
+            return fail_at(c, "%s must not be negative, not %s", what, c->tok[*k + b]);
+        }
+    }
+    if (count == 1)
+        out[1] = out[2] = out[0];
+    *k += count;
+    return RAD_OK;
+}
+
+static rad_status parse_material(rad_scene *s, const line_ctx *c)
+{
+    rad_material m;
+    int k = 2, have_reflect = 0, have_emit = 0;
+    rad_status st;
+    memset(&m, 0, sizeof m);
+    if (c->ntok < 2)
+        return fail_at(c, "material needs a name");
+    if (strlen(c->tok[1]) >= RAD_NAME_MAX)
+        return fail_at(c, "material name is longer than %d characters", RAD_NAME_MAX - 1);
+    if (is_number(c->tok[1]))
+        return fail_at(c, "material name '%s' looks like a number", c->tok[1]);
+    int prev = find_material(s, c->tok[1]);
+    if (prev >= 0)
+        return fail_at(c, "material '%s' is already defined (line %d)", c->tok[1],
+                       s->materials[prev].line);
+    strcpy(m.name, c->tok[1]);
+    while (k < c->ntok) {
+        const char *kw = c->tok[k++];
+        if (strcmp(kw, "reflect") == 0 && !have_reflect) {
+            if ((st = get_bands(c, &k, "reflectance", 0.0, 1.0, m.reflect)))
+                return st;
+            have_reflect = 1;
+        } else if (strcmp(kw, "emit") == 0 && !have_emit) {
+            if ((st = get_bands(c, &k, "emission", 0.0, HUGE_VAL, m.emit)))
+                return st;
+            have_emit = 1;
+        } else if (strcmp(kw, "reflect") == 0 || strcmp(kw, "emit") == 0) {
+            return fail_at(c, "'%s' is given twice", kw);
+        } else {
+            return fail_at(c, "unexpected '%s' in material (expected reflect or emit)", kw);
+        }
+    }
+    if (!have_reflect)
+        return fail_at(c, "material '%s' has no reflect values", m.name);
+    m.line = c->line;
+    rad_material *grown = realloc(s->materials, sizeof *grown * (size_t)(s->nmaterials + 1));
+    if (!grown)
+        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+    s->materials = grown;
+    s->materials[s->nmaterials++] = m;
+    return RAD_OK;
+}
+
+/* Append a surface that owns `verts` (freed here on failure). */
+static rad_status add_surface(rad_scene *s, const line_ctx *c, rad_surface_kind kind,
+                              int material, rad_vec3 *verts, int n, int mn, int mm)
+{
+    rad_surface *grown = realloc(s->surfaces, sizeof *grown * (size_t)(s->nsurfaces + 1));
+    if (!grown) {
+        free(verts);
+        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+    }
+    s->surfaces = grown;
+    rad_surface *f = &s->surfaces[s->nsurfaces++];
+    f->kind = kind;
+    f->material = material;
+    f->nverts = n;
+    f->verts = verts;
+    f->mesh_n = mn;
+    f->mesh_m = mm;
+    f->line = c->line;
+    return RAD_OK;
+}
+
+static rad_status get_material_ref(const rad_scene *s, const line_ctx *c, int *out)
+{
+    if (c->ntok < 2)
+        return fail_at(c, "%s needs a material", c->tok[0]);
+    *out = find_material(s, c->tok[1]);
+    if (*out < 0)
+        return fail_at(c, "undefined material '%s'", c->tok[1]);
+    return RAD_OK;
+}
+
+/* "NxM" with positive integers. */
+static rad_status parse_mesh_spec(const line_ctx *c, const char *t, int *n, int *m)
+{
+    char *end;
+    errno = 0;
+    long a = strtol(t, &end, 10);
+    if (end == t || (*end != 'x' && *end != 'X') || a < 1 || a > RAD_MESH_MAX || errno)
+        goto bad;
+    const char *t2 = end + 1;
+    long b = strtol(t2, &end, 10);
+    if (end == t2 || *end != '\0' || b < 1 || b > RAD_MESH_MAX || errno)
+        goto bad;
+    if (*t == '+' || *t2 == '+' || *t2 == ' ')
+        goto bad;
+    *n = (int)a;
+    *m = (int)b;
+    return RAD_OK;
+bad:
+    return fail_at(c, "mesh must be NxM with whole numbers from 1 to %d, not '%s'",
+                   RAD_MESH_MAX, t);
+}
+
+static rad_status parse_quad(rad_scene *s, const line_ctx *c)
+{
+    int mat, mn = 1, mm = 1;
+    rad_status st;
+    rad_vec3 v[4];
+    if ((st = get_material_ref(s, c, &mat)))
+        return st;
+    for (int k = 0; k < 4; k++) {
+        char what[32];
+        snprintf(what, sizeof what, "vertex %d", k + 1);
+        if ((st = get_vec(c, 2 + 3 * k, what, &v[k])))
+            return st;
+    }
+    if (c->ntok > 14) {
+        if (strcmp(c->tok[14], "mesh") != 0)
+            return fail_at(c, "unexpected '%s' after the quad's 4 vertices", c->tok[14]);
+        if (c->ntok < 16)
+            return fail_at(c, "mesh needs NxM");
+        if ((st = parse_mesh_spec(c, c->tok[15], &mn, &mm)))
+            return st;
+        if (c->ntok > 16)
+            return fail_at(c, "unexpected '%s' after mesh", c->tok[16]);
+    }
+    if ((st = rad_polygon_check(v, 4, "quad", c->file, c->line, c->err)))
+        return st;
+    rad_vec3 *verts = malloc(sizeof v);
+    if (!verts)
+        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+    memcpy(verts, v, sizeof v);
+    return add_surface(s, c, RAD_SURFACE_QUAD, mat, verts, 4, mn, mm);
+}
+
+static rad_status parse_polygon(rad_scene *s, const line_ctx *c)
+{
+    int mat, n;
+    rad_status st;
+    if ((st = get_material_ref(s, c, &mat)) ||
+        (st = get_int(c, 2, "polygon vertex count", 3, RAD_POLYGON_MAX, &n)))
+        return st;
+    if (c->ntok != 3 + 3 * n) {
+        if (c->ntok < 3 + 3 * n)
+            return fail_at(c, "polygon of %d vertices needs %d numbers, found %d", n,
+                           3 * n, c->ntok - 3);
+        return fail_at(c, "unexpected '%s' after the polygon's %d vertices",
+                       c->tok[3 + 3 * n], n);
+    }
+    rad_vec3 *v = malloc(sizeof *v * (size_t)n);
+    if (!v)
+        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+    for (int k = 0; k < n; k++) {
+        char what[32];
+        snprintf(what, sizeof what, "vertex %d", k + 1);
+        if ((st = get_vec(c, 3 + 3 * k, what, &v[k]))) {
+            free(v);
+            return st;
+        }
+    }
+    if ((st = rad_polygon_check(v, n, "polygon", c->file, c->line, c->err))) {
+        free(v);
+        return st;
+    }
+    return add_surface(s, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
+}
+
+/* disk MATERIAL CX CY CZ NX NY NZ R K: the regular K-gon inscribed in the
+ * disk, counter-clockwise about the normal N. */
+static rad_status parse_disk(rad_scene *s, const line_ctx *c)
+{
+    int mat, n;
+    double r;
+    rad_vec3 ctr, nrm;
+    rad_status st;
+    if ((st = get_material_ref(s, c, &mat)) || (st = get_vec(c, 2, "centre", &ctr)) ||
+        (st = get_vec(c, 5, "normal", &nrm)) || (st = get_number(c, 8, "radius", &r)) ||
+        (st = get_int(c, 9, "disk vertex count", 3, RAD_POLYGON_MAX, &n)))
+        return st;
+    if (c->ntok > 10)
+        return fail_at(c, "unexpected '%s' after the disk's vertex count", c->tok[10]);
+    if (!(r > 0))
+        return fail_at(c, "disk radius must be positive, not %s", c->tok[8]);
+    double len = v3_norm(nrm);
+    if (!(len > 0) || !isfinite(len))
+        return fail_at(c, "disk normal must not be zero");
+    nrm = v3_scale(nrm, 1.0 / len);
+    /* (u, w, n) right-handed, so increasing angle runs counter-clockwise. */
+    rad_vec3 axis = fabs(nrm.x) <= fabs(nrm.y) && fabs(nrm.x) <= fabs(nrm.z) ? v3(1, 0, 0)
+                    : fabs(nrm.y) <= fabs(nrm.z)                          ? v3(0, 1, 0)
+                                                                           : v3(0, 0, 1);
+    rad_vec3 u = v3_cross(axis, nrm);
+    u = v3_scale(u, 1.0 / v3_norm(u));
+    rad_vec3 w = v3_cross(nrm, u);
+    rad_vec3 *v = malloc(sizeof *v * (size_t)n);
+    if (!v)
+        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+    for (int k = 0; k < n; k++) {
+        double t = 2 * RAD_PI * k / n;
+        v[k] = v3_add(ctr, v3_add(v3_scale(u, r * cos(t)), v3_scale(w, r * sin(t))));
+    }
+    if ((st = rad_polygon_check(v, n, "disk", c->file, c->line, c->err))) {
+        free(v);
+        return st;
+    }
+    return add_surface(s, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
+}
+
+static rad_status parse_camera(rad_scene *s, const line_ctx *c)
+{
+    static const char *const kw[4] = {"eye", "at", "up", "fov"};
+    rad_camera cam;
+    rad_status st;
+    memset(&cam, 0, sizeof cam);
+    if (c->ntok != 15) {
+        if (c->ntok > 15)
+            return fail_at(c, "unexpected '%s' at the end of camera", c->tok[15]);
+        return fail_at(c, "camera needs: eye X Y Z at X Y Z up X Y Z fov DEGREES");
+    }
+    for (int k = 0; k < 4; k++)
+        if (strcmp(c->tok[1 + 4 * k], kw[k]) != 0)
+            return fail_at(c, "camera expects '%s' where it found '%s'", kw[k],
+                           c->tok[1 + 4 * k]);
+    if ((st = get_vec(c, 2, "eye", &cam.eye)) || (st = get_vec(c, 6, "at", &cam.at)) ||
+        (st = get_vec(c, 10, "up", &cam.up)) || (st = get_number(c, 14, "fov", &cam.fov)))
+        return st;
+    if (!(cam.fov > 0 && cam.fov < 180))
+        return fail_at(c, "fov must be between 0 and 180 degrees, not %s", c->tok[14]);
+    rad_vec3 view = v3_sub(cam.at, cam.eye);
+    if (!(v3_norm(view) > 0))
+        return fail_at(c, "camera eye and at must differ");
+    rad_vec3 side = v3_cross(view, cam.up);
+    if (!(v3_norm(side) > 1e-12 * v3_norm(view) * v3_norm(cam.up)))
+        return fail_at(c, "camera up must not be zero or parallel to the view direction");
+    if (s->camera.defined)
+        return fail_at(c, "camera is given twice");
+    cam.defined = 1;
+    s->camera = cam;
+    return RAD_OK;
+}
+
+/* ---- lines and files ---------------------------------------------------- */
+
+/* Split `buf` in place into white-space separated tokens, up to `#`. */
+static int tokenize(char *buf, char ***tok, int *cap)
+{
+    int n = 0;
+    char *p = buf;
+    char *hash = strchr(buf, '#');
+    if (hash)
+        *hash = '\0';
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\f' || *p == '\v')
+            p++;
+        if (!*p)
+            break;
+        if (n == *cap) {
+            int ncap = *cap ? 2 * *cap : 32;
+            char **g = realloc(*tok, sizeof *g * (size_t)ncap);
+            if (!g)
+                return -1;
+            *tok = g;
+            *cap = ncap;
+        }
+        (*tok)[n++] = p;
+        while (*p && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\f' && *p != '\v')
+            p++;
+        if (*p)
+            *p++ = '\0';
+    }
+    return n;
+}
+
+static rad_status parse_statement(rad_scene *s, const line_ctx *c)
+{
+    const char *k = c->tok[0];
+    if (strcmp(k, "material") == 0)
+        return parse_material(s, c);
+    if (strcmp(k, "quad") == 0)
+        return parse_quad(s, c);
+    if (strcmp(k, "polygon") == 0)
+        return parse_polygon(s, c);
+    if (strcmp(k, "disk") == 0)
+        return parse_disk(s, c);
+    if (strcmp(k, "camera") == 0)
+        return parse_camera(s, c);
+    return fail_at(c, "unknown keyword '%s' (expected material, quad, polygon, disk or camera)",
+                   k);
+}
+
+rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
+                           const char *name, rad_error *err)
+{
+    rad_scene s;
+    char *buf = NULL, **tok = NULL;
+    int cap = 0, line = 0;
+    size_t bufcap = 0, pos = 0;
+    rad_status st = RAD_OK;
+
+    memset(&s, 0, sizeof s);
+    memset(scene, 0, sizeof *scene);
+    s.filename = strdup(name ? name : "-");
+    if (!s.filename)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    while (pos < len && st == RAD_OK) {
+        size_t end = pos;
+        while (end < len && text[end] != '\n')
+            end++;
+        line++;
+        if (end - pos + 1 > bufcap) {
+            bufcap = end - pos + 1;
+            char *g = realloc(buf, bufcap);
+            if (!g) {
+                st = rad_fail(err, RAD_ERR_NOMEM, "%s:%d: out of memory", s.filename, line);
+                break;
+            }
+            buf = g;
+        }
+        memcpy(buf, text + pos, end - pos);
+        buf[end - pos] = '\0';
+        line_ctx c = {s.filename, line, NULL, 0, err};
+        if (memchr(text + pos, '\0', end - pos)) {
+            st = fail_at(&c, "line contains a NUL character");
+            break;
+        }
+        pos = end + 1;
+        int n = tokenize(buf, &tok, &cap);
+        if (n < 0) {
+            st = rad_fail(err, RAD_ERR_NOMEM, "%s:%d: out of memory", s.filename, line);
+            break;
+        }
+        if (n == 0)
+            continue;
+        c.tok = tok;
+        c.ntok = n;
+        st = parse_statement(&s, &c);
+    }
+    if (st == RAD_OK && s.nsurfaces == 0) {
+        line_ctx c = {s.filename, line > 0 ? line : 1, NULL, 0, err};
+        st = fail_at(&c, "the scene has no surfaces (quad, polygon or disk)");
+    }
+    free(buf);
+    free(tok);
+    if (st != RAD_OK) {
+        rad_scene_free(&s);
+        return st;
+    }
+    *scene = s;
+    return RAD_OK;
+}
+
+rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
+{
+    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    char *text = NULL;
+    size_t len = 0, cap = 0;
+    memset(scene, 0, sizeof *scene);
+    if (!f)
+        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(errno));
+    for (;;) {
+        if (len == cap) {
+            cap = cap ? 2 * cap : 65536;
+            char *g = realloc(text, cap);
+            if (!g) {
+                free(text);
+                if (f != stdin)
+                    fclose(f);
+                return rad_fail(err, RAD_ERR_NOMEM, "%s: out of memory", path);
+            }
+            text = g;
+        }
+        size_t got = fread(text + len, 1, cap - len, f);
+        len += got;
+        if (got == 0)
+            break;
+    }
+    int bad = ferror(f);
+    int saved = errno;
+    if (f != stdin)
+        fclose(f);
+    if (bad) {
+        free(text);
+        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(saved));
+    }
+    rad_status st = rad_scene_parse(scene, text, len, path, err);
+    free(text);
+    return st;
+}
+
+void rad_scene_free(rad_scene *scene)
+{
+    if (!scene)
+        return;
+    for (int k = 0; k < scene->nsurfaces; k++)
+        free(scene->surfaces[k].verts);
+    free(scene->surfaces);
+    free(scene->materials);
+    free(scene->filename);
+    memset(scene, 0, sizeof *scene);
+}
+
+void rad_scene_set_mesh(rad_scene *scene, int n, int m)
+{
+    for (int k = 0; k < scene->nsurfaces; k++)
+        if (scene->surfaces[k].kind == RAD_SURFACE_QUAD) {
+            scene->surfaces[k].mesh_n = n;
+            scene->surfaces[k].mesh_m = m;
+        }
+}

@@ -1,0 +1,38 @@
+/* status.c -- names of status codes and the error record.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ */
+#include <config.h>
+
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "radiosity.h"
+#include "status.h"
+
+const char *rad_strstatus(rad_status status)
+{
+    switch (status) {
+    case RAD_OK: return "success";
+    case RAD_ERR_NOMEM: return "out of memory";
+    case RAD_ERR_IO: return "input/output error";
+    case RAD_ERR_PARSE: return "malformed input";
+    case RAD_ERR_INVALID: return "invalid argument";
+    case RAD_ERR_TOOBIG: return "problem too large for memory";
+    case RAD_ERR_SINGULAR: return "singular system";
+    case RAD_ERR_NOCONV: return "no convergence";
+    }
+    return "unknown status";
+}
+
+rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
+{
+    if (err) {
+        va_list ap;
+        err->status = status;
+        va_start(ap, fmt);
+        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}

@@ -1,0 +1,15 @@
+/* status.h -- filling the error record (internal).
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ */
+#ifndef RAD_STATUS_H
+#define RAD_STATUS_H
+
+#include "radiosity.h"
+
+/* Fill err (if not NULL) with status and a printf-style message; return
+ * status, so callers can write `return rad_fail(err, RAD_ERR_IO, ...)`. */
+rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#endif /* RAD_STATUS_H */

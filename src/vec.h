@@ -1,0 +1,48 @@
+/* vec.h -- small inline 3-vector arithmetic shared by the numerical modules.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ */
+#ifndef RAD_VEC_H
+#define RAD_VEC_H
+
+#include <math.h>
+
+#include "radiosity.h"
+
+static inline rad_vec3 v3(double x, double y, double z)
+{
+    rad_vec3 r = {x, y, z};
+    return r;
+}
+static inline rad_vec3 v3_add(rad_vec3 a, rad_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline rad_vec3 v3_sub(rad_vec3 a, rad_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline rad_vec3 v3_scale(rad_vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline double v3_dot(rad_vec3 a, rad_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline rad_vec3 v3_cross(rad_vec3 a, rad_vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double v3_norm(rad_vec3 a) { return sqrt(v3_dot(a, a)); }
+static inline double v3_maxabs(rad_vec3 a)
+{
+    return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+}
+/* a + t (b - a) */
+static inline rad_vec3 v3_lerp(rad_vec3 a, rad_vec3 b, double t)
+{
+    return v3(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z));
+}
+
+/* Newell's vector of a polygon: twice its area times its unit normal
+ * (Newell's method, e.g. Sutherland, Sproull & Schumacher 1974).  Computed
+ * relative to the first vertex to keep round-off independent of where the
+ * polygon sits. */
+static inline rad_vec3 v3_newell(const rad_vec3 *p, int n)
+{
+    rad_vec3 s = v3(0, 0, 0);
+    for (int k = 1; k + 1 < n; k++)
+        s = v3_add(s, v3_cross(v3_sub(p[k], p[0]), v3_sub(p[k + 1], p[0])));
+    return s;
+}
+
+#endif /* RAD_VEC_H */

@@ -1,0 +1,158 @@
+/* test_scene.c -- the scene parser: valid input, and every error message.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Each bad input must fail with RAD_ERR_PARSE and a message that starts
+ * with "t.scene:LINE: " (the contract of DESIGN.md section 4) and names the
+ * reason.
+ */
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiosity.h"
+#include "tap.h"
+
+static const char *M = "material w reflect 0.5\n";
+
+static void bad(const char *text, int line, const char *reason)
+{
+    rad_scene s;
+    rad_error err;
+    char want[64];
+    memset(&err, 0, sizeof err);
+    rad_status st = rad_scene_parse(&s, text, strlen(text), "t.scene", &err);
+    snprintf(want, sizeof want, "t.scene:%d: ", line);
+    int ok = st == RAD_ERR_PARSE && strncmp(err.message, want, strlen(want)) == 0 &&
+             strstr(err.message, reason) != NULL && s.nsurfaces == 0;
+    tap_ok(ok, "rejects (%s): \"%s\"", reason, ok ? err.message : err.message);
+    rad_scene_free(&s);
+}
+
+static void bad_m(const char *stmt, const char *reason)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s%s\n", M, stmt);
+    bad(buf, 2, reason);
+}
+
+static void valid(void)
+{
+    const char *text =
+        "# comment line\n"
+        "material light reflect 0 emit 1 2 3   # trailing comment\n"
+        "material red reflect 0.8 0.1 0.1\n"
+        "\n"
+        "quad red 0 0 0  1 0 0  1 1 0  0 1 0 mesh 3x2\n"
+        "polygon light 3  0 0 1  1 0 1  0 1 1\n"
+        "disk red 0 0 5  0 0 -1  2 64\n"
+        "camera eye 0 0 -3 at 0 0 0 up 0 1 0 fov 45\n";
+    rad_scene s;
+    rad_error err;
+    rad_status st = rad_scene_parse(&s, text, strlen(text), "t.scene", &err);
+    tap_ok(st == RAD_OK, "valid scene parses (%s)", st ? err.message : "ok");
+    if (st)
+        return;
+    tap_ok(s.nmaterials == 2 && s.nsurfaces == 3, "2 materials, 3 surfaces");
+    tap_ok(s.materials[0].emit[2] == 3 && s.materials[0].reflect[1] == 0 &&
+               s.materials[1].reflect[0] == 0.8 && s.materials[1].emit[0] == 0,
+           "material values (grey and RGB, emit defaults to 0)");
+    tap_ok(s.surfaces[0].mesh_n == 3 && s.surfaces[0].mesh_m == 2 && s.surfaces[0].line == 5,
+           "quad mesh 3x2 on line 5");
+    tap_ok(s.surfaces[2].nverts == 64 && s.surfaces[2].kind == RAD_SURFACE_POLYGON,
+           "disk becomes a 64-gon");
+    /* the disk's vertices lie on the circle of radius 2 about (0,0,5) */
+    double worst = 0;
+    for (int k = 0; k < 64; k++) {
+        rad_vec3 v = s.surfaces[2].verts[k];
+        worst = fmax(worst, fabs(hypot(v.x, v.y) - 2) + fabs(v.z - 5));
+    }
+    tap_ok(worst < 1e-14, "disk vertices on the circle (worst %.3g)", worst);
+    /* counter-clockwise about the given normal (0,0,-1): Newell z < 0 */
+    double nz = 0;
+    for (int k = 0; k < 64; k++) {
+        rad_vec3 a = s.surfaces[2].verts[k], b = s.surfaces[2].verts[(k + 1) % 64];
+        nz += a.x * b.y - a.y * b.x;
+    }
+    tap_ok(nz < 0, "disk runs counter-clockwise about its normal");
+    tap_ok(s.camera.defined && s.camera.fov == 45 && s.camera.eye.z == -3, "camera");
+    rad_scene_set_mesh(&s, 4, 5);
+    tap_ok(s.surfaces[0].mesh_n == 4 && s.surfaces[0].mesh_m == 5 && s.surfaces[1].mesh_n == 1,
+           "--mesh overrides quads only");
+    rad_scene_free(&s);
+}
+
+int main(void)
+{
+    valid();
+    bad("frobnicate 1 2 3\n", 1, "unknown keyword 'frobnicate'");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1\n", "missing number");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 7\n", "unexpected '7'");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 zero\n", "'zero' is not a number");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 nan\n", "must be finite");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 inf\n", "must be finite");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 1e999\n", "must be finite");
+    bad("material w reflect 1.5\nquad w 0 0 0 1 0 0 1 1 0 0 1 0\n", 1, "reflectance must be from 0 to 1");
+    bad("material w reflect -0.1 0 0\n", 1, "reflectance must be from 0 to 1");
+    bad("material w reflect 0.5 emit 1 -1 1\n", 1, "emission must not be negative");
+    bad("material w reflect 0.5 0.5\n", 1, "takes 1 value (grey) or 3");
+    bad("material w emit 1\n", 1, "has no reflect");
+    bad("material w reflect 0.5 shiny\n", 1, "unexpected 'shiny'");
+    bad("material w reflect 0.5\nmaterial w reflect 0.2\n", 2, "already defined (line 1)");
+    bad("quad x 0 0 0  1 0 0  1 1 0  0 1 0\n", 1, "undefined material 'x'");
+    bad("quad w 0 0 0  1 0 0  1 1 0  0 1 0\nmaterial w reflect 0.5\n", 1, "undefined material 'w'");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 0x3\n", "mesh must be NxM");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 3\n", "mesh must be NxM");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh -2x3\n", "mesh must be NxM");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 2x3.5\n", "mesh must be NxM");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh\n", "mesh needs NxM");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0.1  0 1 0\n", "not planar");
+    bad_m("quad w 0 0 0  1 0 0  0.2 0.2 0  0 1 0\n", "not convex");
+    bad_m("quad w 0 0 0  1 1 0  1 0 0  0 1 0\n", "self-intersecting");
+    bad_m("quad w 0 0 0  1 0 0  2 0 0  3 0 0\n", "zero area");
+    bad_m("quad w 0 0 0  0 0 0  0 0 0  0 0 0\n", "zero area");
+    bad_m("quad w 0 0 0  1 0 0  1 0 0  0 1 0\n", "repeated vertex");
+    bad_m("polygon w 2  0 0 0  1 0 0\n", "polygon vertex count must be from 3");
+    bad_m("polygon w 3  0 0 0  1 0 0\n", "needs 9 numbers");
+    bad_m("polygon w 3  0 0 0  1 0 0  0 1 0  5\n", "unexpected '5'");
+    bad_m("polygon w 5  0 0 0  2 1 0  0 1 0  2 0 0  1 2 0\n", "self-intersecting");
+    bad_m("polygon w 4  0 0 0  1 0 0  1 1 0  0 1 1\n", "not planar");
+    bad_m("disk w 0 0 0  0 0 1  -1 32\n", "radius must be positive");
+    bad_m("disk w 0 0 0  0 0 0  1 32\n", "normal must not be zero");
+    bad_m("disk w 0 0 0  0 0 1  1 2\n", "vertex count must be from 3");
+    bad_m("camera eye 0 0 0 at 0 0 0 up 0 1 0 fov 45\n", "eye and at must differ");
+    bad_m("camera eye 0 0 0 at 0 0 1 up 0 0 1 fov 45\n", "parallel to the view");
+    bad_m("camera eye 0 0 0 at 0 0 1 up 0 1 0 fov 180\n", "fov must be between");
+    bad_m("camera eye 0 0 0 at 0 0 1 up 0 1 0\n", "camera needs");
+    bad_m("camera eye 0 0 0 look 0 0 1 up 0 1 0 fov 4\n", "expects 'at'");
+    bad("", 1, "no surfaces");
+    bad("# only a comment\nmaterial w reflect 0.5\n", 2, "no surfaces");
+    {
+        static const char nul[] = "material w reflect 0.5\nquad w 0 0 0\0 1 0 0 1 1 0 0 1 0\n";
+        rad_scene s;
+        rad_error err;
+        rad_status st = rad_scene_parse(&s, nul, sizeof nul - 1, "t.scene", &err);
+        tap_ok(st == RAD_ERR_PARSE && strstr(err.message, "t.scene:2: ") == err.message,
+               "NUL byte rejected with its line (%s)", err.message);
+    }
+    {
+        /* a disk of 4096 vertices is accepted and stays convex */
+        const char *t = "material w reflect 0.5\ndisk w 1e6 1e6 1e6  1 2 3  1e-3 4096\n";
+        rad_scene s;
+        rad_error err;
+        rad_status st = rad_scene_parse(&s, t, strlen(t), "t.scene", &err);
+        tap_ok(st == RAD_OK && s.surfaces[0].nverts == 4096,
+               "4096-gon disk far from the origin is accepted (%s)", st ? err.message : "ok");
+        rad_scene_free(&s);
+    }
+    {
+        rad_scene s;
+        rad_error err;
+        rad_status st = rad_scene_load(&s, "/nonexistent/x.scene", &err);
+        tap_ok(st == RAD_ERR_IO && strstr(err.message, "/nonexistent/x.scene") != NULL,
+               "missing file: %s", err.message);
+    }
+    return tap_done();
+}
