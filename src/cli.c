@@ -211,6 +211,9 @@ static void usage(FILE *out)
             "radiosity system solved per colour band.\n"
             "\n"
             "Commands:\n"
+            "  solve SCENE             mesh, form factors, solve; write results\n"
+            "  render SCENE|SOLUTION -o IMAGE.png\n"
+            "                          solve (or read a solution) and draw it\n"
             "  formfactor SCENE        form factors of all element pairs (TSV)\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
             "\n"
@@ -249,6 +252,10 @@ int main(int argc, char **argv)
         return cmd_formfactor(argc - 1, argv + 1);
     if (strcmp(cmd, "analytic") == 0)
         return cmd_analytic(argc - 1, argv + 1);
+    if (strcmp(cmd, "solve") == 0)
+        return cmd_solve(argc - 1, argv + 1);
+    if (strcmp(cmd, "render") == 0)
+        return cmd_render(argc - 1, argv + 1);
     cli_error("unknown command '%s'", cmd);
     return cli_usage_hint(NULL);
 }

@@ -76,7 +76,73 @@ int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene);
 int cli_progress(void *user, const char *stage, double done, double total);
 void cli_progress_attach(cli_common *c);
 
+/* ---- the solve pipeline, shared by solve, render and sweep ------------- */
+
+enum {
+    OPT_SOLVER = 1100,
+    OPT_TOLERANCE,
+    OPT_MAX_ITERATIONS,
+    OPT_BOUNCES,
+    OPT_ERROR_BOUNDS,
+    OPT_REPORT,
+    OPT_ELEMENTS,
+    OPT_FORM_FACTORS,
+    OPT_SOLVE_END
+};
+
+typedef struct cli_solve {
+    cli_common common;
+    rad_solve_options solve;
+    const char *report;         /* --report FILE (JSON), or NULL */
+    const char *elements;       /* --elements FILE, or NULL */
+    const char *form_factors;   /* --form-factors FILE, or NULL */
+} cli_solve;
+
+#define CLI_SOLVE_LONGOPTS                                                \
+    {"solver", required_argument, NULL, OPT_SOLVER},                      \
+    {"tolerance", required_argument, NULL, OPT_TOLERANCE},                \
+    {"max-iterations", required_argument, NULL, OPT_MAX_ITERATIONS},      \
+    {"bounces", required_argument, NULL, OPT_BOUNCES},                    \
+    {"error-bounds", no_argument, NULL, OPT_ERROR_BOUNDS},                \
+    {"report", required_argument, NULL, OPT_REPORT},                      \
+    {"elements", required_argument, NULL, OPT_ELEMENTS},                  \
+    {"form-factors", required_argument, NULL, OPT_FORM_FACTORS},          \
+    CLI_COMMON_LONGOPTS
+
+#define CLI_SOLVE_HELP                                                             \
+    "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
+    "                          jacobi or gauss-seidel\n"                          \
+    "      --tolerance T       iterative solvers: stop when the relative change\n"\
+    "                          of B between sweeps is below T (default 1e-12)\n"  \
+    "      --max-iterations N  iterative solvers: give up after N sweeps\n"        \
+    "                          (default 100000)\n"                                \
+    "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\
+    "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\
+    "      --report FILE       full diagnostics as JSON\n"                         \
+    "      --elements FILE     per-element table (TSV)\n"                          \
+    "      --form-factors FILE the form-factor matrix (Matrix Market)\n"          \
+    CLI_COMMON_HELP
+
+/* The solution of a scene, as the pipeline leaves it. */
+typedef struct cli_result {
+    rad_scene scene;
+    rad_mesh mesh;
+    double *B;                  /* nelements x RAD_BANDS, column-major */
+    double *Bv;                 /* nvertices x RAD_BANDS, column-major */
+} cli_result;
+
+void cli_solve_init(cli_solve *s);
+/* 0 handled, 1 not a solve/common option, 2 usage error (printed). */
+int cli_solve_option(cli_solve *s, int opt, const char *arg);
+/* Load, mesh, form factors, solve, smooth, and write --report, --elements
+ * and --form-factors; prints the summary unless quiet.  0 on success, 1 on
+ * an error (printed).  On success the caller owns r (cli_result_free). */
+int cli_solve_run(cli_solve *s, const char *scene_path, cli_result *r);
+void cli_result_free(cli_result *r);
+
 int cmd_formfactor(int argc, char **argv);
+int cmd_solve(int argc, char **argv);
+int cmd_render(int argc, char **argv);
 int cmd_analytic(int argc, char **argv);
 
 #endif /* RAD_CLI_H */

@@ -96,22 +96,30 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     return RAD_OK;
 }
 
-/* One row i: pairs (i, j > i). Returns 0, or -1 when scratch ran out. */
+/* One row i: pairs (i, j > i).  Tracks the largest estimated absolute and
+ * relative errors.  Returns 0, or -1 when scratch ran out. */
 static int fill_row(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
-                    rad_ff_scratch *w, double *F, double *errest)
+                    rad_ff_scratch *w, double *F, double *errest, double *maxerr,
+                    double *maxrel)
 {
     const double ti = 2 * RAD_PI * polys[i].area;
+    const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
     for (int j = i + 1; j < n; j++) {
         double s, e = 0;
-        double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, errest ? &e : NULL);
+        double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
         if (isnan(fij))
             return -1;
         const double tj = 2 * RAD_PI * polys[j].area;
         F[(size_t)i + (size_t)j * n] = fij;
         F[(size_t)j + (size_t)i * n] = s / tj;
+        if (want && s != 0) {
+            double ei = e / ti, ej = e / tj;
+            *maxerr = fmax(*maxerr, fmax(ei, ej));
+            *maxrel = fmax(*maxrel, e / fabs(s));
+        }
         if (errest) {
-            errest[(size_t)i + (size_t)j * n] = e / ti;
-            errest[(size_t)j + (size_t)i * n] = e / tj;
+            errest[(size_t)i + (size_t)j * n] = want ? e / ti : NAN;
+            errest[(size_t)j + (size_t)i * n] = want ? e / tj : NAN;
         }
     }
     F[(size_t)i + (size_t)i * n] = 0;
@@ -120,9 +128,8 @@ static int fill_row(const rad_ff_poly *polys, int n, int i, const rad_ff_options
     return 0;
 }
 
-static void fill_stats(const double *F, const double *errest, int n, rad_ff_stats *st)
+static void fill_stats(const double *F, int n, rad_ff_stats *st)
 {
-    memset(st, 0, sizeof *st);
     st->pairs = 0.5 * (double)n * (n - 1);
     st->min_value = HUGE_VAL;
     st->max_value = -HUGE_VAL;
@@ -136,11 +143,6 @@ static void fill_stats(const double *F, const double *errest, int n, rad_ff_stat
         st->max_value = fmax(st->max_value, f);
         if (f != 0)
             st->integrated += 0.5;
-        if (errest) {
-            st->max_errest = fmax(st->max_errest, errest[k]);
-            if (f != 0)
-                st->max_relerr = fmax(st->max_relerr, errest[k] / fabs(f));
-        }
     }
     if (n < 2)
         st->min_value = st->max_value = 0;
@@ -153,6 +155,7 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     rad_ff_poly *polys = NULL;
     rad_vec3 *pts = NULL;
     int failed = 0, stop = 0;
+    double maxerr = 0, maxrel = 0;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
@@ -166,13 +169,13 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     for (int i0 = 0; i0 < n && !failed && !stop; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
 #pragma omp parallel num_threads(opt->threads > 0 ? opt->threads : omp_get_max_threads()) \
-    reduction(|| : failed)
+    reduction(|| : failed) reduction(max : maxerr, maxrel)
         {
             rad_ff_scratch w;
             rad_ff_scratch_init(&w);
 #pragma omp for schedule(dynamic, 1)
             for (int i = i0; i < i1; i++)
-                if (fill_row(polys, n, i, opt, &w, F, errest) != 0)
+                if (fill_row(polys, n, i, opt, &w, F, errest, &maxerr, &maxrel) != 0)
                     failed = 1;
             rad_ff_scratch_free(&w);
         }
@@ -187,7 +190,11 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
     if (stop)
         return rad_fail(err, RAD_ERR_INVALID, "interrupted");
-    if (stats)
-        fill_stats(F, errest, n, stats);
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        fill_stats(F, n, stats);
+        stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
+        stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
+    }
     return RAD_OK;
 }

@@ -208,6 +208,68 @@ const double *rad_gauss_weights(int k);
  * the same unit direction (d = 0: colinear). */
 double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
 
+/* ---- the radiosity system (solve.c) ------------------------------------- */
+
+/* For each band b: (I - diag(rho_b) F) B_b = E_b (Goral et al. 1984,
+ * eq. 6-7).  B and E are n x RAD_BANDS column-major: B[e + b*n]. */
+
+typedef enum rad_solver {
+    RAD_SOLVER_GAUSS = 0,       /* LU with partial pivoting (LAPACK dgesv) */
+    RAD_SOLVER_JACOBI,
+    RAD_SOLVER_GAUSS_SEIDEL
+} rad_solver;
+
+typedef struct rad_solve_options {
+    rad_solver solver;
+    double tolerance;           /* iterative: relative change of B between sweeps */
+    int max_iterations;         /* iterative: sweeps before giving up */
+    int bounces;                /* >= 0: exactly that many reflections,
+                                   B_K = sum_{m=0..K} (rho F)^m E; -1: solve */
+    int error_bounds;           /* gauss: dgesvx forward/backward error bounds */
+    int threads;                /* 0: default */
+    rad_progress_fn progress;   /* may be NULL */
+    void *progress_user;
+} rad_solve_options;
+
+void rad_solve_options_init(rad_solve_options *opt);
+
+typedef struct rad_solve_report {
+    rad_solver solver;
+    int bounces;
+    int systems;                /* distinct reflectance sets factorised */
+    int sweeps;                 /* iterative solvers, per the slowest band */
+    double residual;            /* max over bands of ||(I - rho F)B - E||inf / ||E||inf */
+    double rcond;               /* reciprocal condition estimate (gauss), min over systems */
+    double ferr, berr;          /* forward, backward error bounds (error_bounds) */
+    double spectral_radius;     /* estimate of rho(diag(rho) F), max over bands */
+    double row_sum_min, row_sum_max;  /* of F */
+    double emitted[RAD_BANDS];  /* sum A_i E_i */
+    double absorbed[RAD_BANDS]; /* sum A_i (1 - rho_i) H_i, H = F B */
+    double escaped[RAD_BANDS];  /* sum A_i B_i (1 - sum_j F_ij) */
+    double balance[RAD_BANDS];  /* (emitted - absorbed - escaped) / emitted */
+} rad_solve_report;
+
+/* Solve for B given the mesh (reflectance, emission, area) and F.  F is
+ * not modified.  RAD_ERR_SINGULAR for a (numerically) singular system,
+ * RAD_ERR_NOCONV for an iteration that did not converge (B then holds the
+ * last iterate, which the caller must not present as the answer). */
+rad_status rad_solve(const rad_mesh *mesh, const double *F, const rad_solve_options *opt,
+                     double *B, rad_solve_report *report, rad_error *err);
+
+/* Bytes the solve of n elements needs at its peak (F plus one working
+ * matrix, plus O(n)), for the memory check before allocating. */
+double rad_solve_bytes(int n, int with_errest);
+
+/* Bytes of memory available now (Linux MemAvailable), 0 if unknown. */
+double rad_memory_available(void);
+
+/* ---- vertex radiosity (smooth.c) ---------------------------------------- */
+
+/* Vertex radiosity from element radiosity (Goral et al. 1984, section 3;
+ * Gouraud 1971), never across surfaces.  B is nelements x RAD_BANDS and Bv
+ * nvertices x RAD_BANDS, both column-major. */
+void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
+
 /* ---- closed forms (analytic.c) ------------------------------------------ */
 
 /* Differential area to a coaxial parallel disk of radius r at distance h. */

@@ -32,6 +32,7 @@
 #define RAD_PLANAR_TOL 1e-6
 #define RAD_TURN_TOL 1e-9
 #define RAD_AREA_TOL 1e-12
+#define RAD_SELFX_MAX 4096  /* O(n^2) self-intersection diagnosis up to this n */
 #define RAD_PI 3.14159265358979323846
 
 /* One line being parsed: its tokens and where it came from. */
@@ -209,7 +210,7 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
         total += turn;
     }
     if (reflex >= 0 || total > 2 * RAD_PI + 1e-6) {
-        if (polygon_self_intersects(p, n, nrm))
+        if (n <= RAD_SELFX_MAX && polygon_self_intersects(p, n, nrm))
             return fail_at(&c, "%s is self-intersecting", what);
         if (reflex >= 0)
             return fail_at(&c, "%s is not convex (at vertex %d)", what, reflex + 1);

@@ -1,0 +1,398 @@
+/* cmd_render.c -- `radiosity render`: a picture of a solution.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The input is either a scene (solved here through cli_solve_run, so every
+ * solve option applies) or a solution PLY written by `radiosity solve
+ * --output` (read by plyread.c).  The camera comes from the scene's camera
+ * line or the PLY's camera comment; --eye, --at, --up and --fov override
+ * it piece by piece.  Every output goes through a temporary file, so it
+ * appears whole or not at all.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "atomicfile.h"
+#include "cli.h"
+#include "plot.h"
+#include "plyread.h"
+#include "render.h"
+
+enum {
+    OPT_WIDTH = 1200,
+    OPT_HEIGHT,
+    OPT_EYE,
+    OPT_AT,
+    OPT_UP,
+    OPT_FOV,
+    OPT_SHADING,
+    OPT_EDGES,
+    OPT_EXPOSURE,
+    OPT_SCANLINE,
+    OPT_PROFILE,
+    OPT_PLOT
+};
+
+static void help(void)
+{
+    printf("Usage: radiosity render [OPTIONS] SCENE|SOLUTION.ply -o IMAGE.png\n"
+           "Draw a radiosity solution as a PNG picture: a software z-buffer with\n"
+           "flat or smooth (Gouraud) shading, one-sided surfaces (back faces are\n"
+           "not drawn), the sRGB curve on linear radiosity.  The input is a scene\n"
+           "file, which is solved first (the solve options below apply), or a\n"
+           "solution written by 'radiosity solve --output FILE.ply'.\n"
+           "\n"
+           "Options:\n"
+           "  -o, --output FILE       the picture (PNG; required)\n"
+           "      --width W           picture width in pixels (default 512)\n"
+           "      --height H          picture height in pixels (default 512)\n"
+           "      --eye X,Y,Z         camera position\n"
+           "      --at X,Y,Z          point the camera looks at\n"
+           "      --up X,Y,Z          camera up direction (default 0,1,0 when the\n"
+           "                          input has no camera)\n"
+           "      --fov DEGREES       vertical field of view (default 45 when the\n"
+           "                          input has no camera)\n"
+           "                          Each camera option overrides that part of the\n"
+           "                          scene's camera line or the PLY's camera comment;\n"
+           "                          without either, --eye and --at are required.\n"
+           "      --shading MODE      flat (each element in its radiosity) or smooth\n"
+           "                          (vertex radiosity interpolated; default)\n"
+           "      --edges             draw the element edges in black\n"
+           "      --exposure X        multiply radiosity by X before the sRGB curve\n"
+           "                          (default: the brightest element is white)\n"
+           "      --scanline ROW      the image row (0 = top) for --profile and --plot\n"
+           "      --profile FILE      the row's linear radiosity as TSV: x r g b\n"
+           "      --plot FILE         the row's radiosity plotted as a PNG\n"
+           "\n"
+           "Scene inputs only:\n"
+           CLI_SOLVE_HELP
+           "\n"
+           "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
+}
+
+/* What the command line asked for. */
+typedef struct render_args {
+    const char *output, *profile, *plot, *input;
+    rad_render_options ropt;
+    int have_eye, have_at, have_up, have_fov;
+    rad_camera cam;             /* the overriding parts */
+    int scanline;               /* -1: none */
+    int solve_opt;              /* a scene-only option that was given, or 0 */
+} render_args;
+
+/* --NAME of an option id, for messages. */
+static const char *option_name(const struct option *longopts, int id)
+{
+    for (const struct option *o = longopts; o->name; o++)
+        if (o->val == id)
+            return o->name;
+    return "?";
+}
+
+static int parse_vec_option(const char *name, const char *arg, rad_vec3 *out, int *have)
+{
+    if (cli_parse_vec3(arg, out)) {
+        cli_error("--%s takes X,Y,Z (three numbers separated by commas), not '%s'", name, arg);
+        return 2;
+    }
+    *have = 1;
+    return 0;
+}
+
+/* A render option: 0 handled, 1 not a render option, 2 usage error. */
+static int render_option(render_args *a, int opt, const char *arg)
+{
+    switch (opt) {
+    case 'o':
+        a->output = arg;
+        return 0;
+    case OPT_WIDTH:
+    case OPT_HEIGHT:
+        if (cli_parse_int(arg, 1, RAD_RENDER_MAX_SIDE,
+                          opt == OPT_WIDTH ? &a->ropt.width : &a->ropt.height)) {
+            cli_error("--%s takes a whole number from 1 to %d, not '%s'",
+                      opt == OPT_WIDTH ? "width" : "height", RAD_RENDER_MAX_SIDE, arg);
+            return 2;
+        }
+        return 0;
+    case OPT_EYE: return parse_vec_option("eye", arg, &a->cam.eye, &a->have_eye);
+    case OPT_AT: return parse_vec_option("at", arg, &a->cam.at, &a->have_at);
+    case OPT_UP: return parse_vec_option("up", arg, &a->cam.up, &a->have_up);
+    case OPT_FOV:
+        if (cli_parse_double(arg, &a->cam.fov) || !(a->cam.fov > 0 && a->cam.fov < 180)) {
+            cli_error("--fov takes degrees between 0 and 180, not '%s'", arg);
+            return 2;
+        }
+        a->have_fov = 1;
+        return 0;
+    case OPT_SHADING:
+        if (strcmp(arg, "flat") == 0)
+            a->ropt.shading = RAD_SHADING_FLAT;
+        else if (strcmp(arg, "smooth") == 0)
+            a->ropt.shading = RAD_SHADING_SMOOTH;
+        else {
+            cli_error("--shading takes flat or smooth, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_EDGES:
+        a->ropt.edges = 1;
+        return 0;
+    case OPT_EXPOSURE:
+        if (cli_parse_double(arg, &a->ropt.exposure) || !(a->ropt.exposure > 0)) {
+            cli_error("--exposure takes a positive number, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_SCANLINE:
+        if (cli_parse_int(arg, 0, RAD_RENDER_MAX_SIDE - 1, &a->scanline)) {
+            cli_error("--scanline takes a row number from 0, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_PROFILE:
+        a->profile = arg;
+        return 0;
+    case OPT_PLOT:
+        a->plot = arg;
+        return 0;
+    default:
+        return 1;
+    }
+}
+
+/* Options that only make sense together; 0 fine, 2 usage error. */
+static int check_args(const render_args *a)
+{
+    const rad_render_options *o = &a->ropt;
+    if (!a->output) {
+        cli_error("render needs -o IMAGE.png");
+        return 2;
+    }
+    if ((double)o->width * o->height > RAD_RENDER_MAX_PIXELS) {
+        cli_error("a %d x %d picture is more than %d pixels", o->width, o->height,
+                  RAD_RENDER_MAX_PIXELS);
+        return 2;
+    }
+    if (a->scanline >= 0 && !a->profile && !a->plot) {
+        cli_error("--scanline needs --profile FILE or --plot FILE");
+        return 2;
+    }
+    if (a->scanline < 0 && (a->profile || a->plot)) {
+        cli_error("--profile and --plot need --scanline ROW");
+        return 2;
+    }
+    if (a->scanline >= o->height) {
+        cli_error("--scanline %d is outside the picture (rows 0 to %d)", a->scanline,
+                  o->height - 1);
+        return 2;
+    }
+    return 0;
+}
+
+static int ends_with_ply(const char *path)
+{
+    size_t n = strlen(path);
+    return n >= 4 && strcasecmp(path + n - 4, ".ply") == 0;
+}
+
+/* The input's camera with the command line's parts over it; 0 or 1 (printed). */
+static int make_camera(const render_args *a, const rad_camera *base, rad_camera *cam)
+{
+    rad_error err;
+    if (base->defined) {
+        *cam = *base;
+    } else {
+        if (!a->have_eye || !a->have_at) {
+            cli_error("%s has no camera: give --eye X,Y,Z and --at X,Y,Z (and --up, --fov "
+                      "if the defaults 0,1,0 and 45 do not suit)", a->input);
+            return 1;
+        }
+        memset(cam, 0, sizeof *cam);
+        cam->up = (rad_vec3){0, 1, 0};
+        cam->fov = 45;
+    }
+    cam->defined = 1;
+    if (a->have_eye)
+        cam->eye = a->cam.eye;
+    if (a->have_at)
+        cam->at = a->cam.at;
+    if (a->have_up)
+        cam->up = a->cam.up;
+    if (a->have_fov)
+        cam->fov = a->cam.fov;
+    if (rad_camera_check(cam, &err) != RAD_OK) {
+        cli_error("%s", err.message);
+        return 1;
+    }
+    return 0;
+}
+
+/* Read or solve the input into a model; 0 or 1 (printed). */
+static int load_model(cli_solve *s, const char *input, rad_render_model *model,
+                      rad_camera *cam)
+{
+    rad_error err;
+    if (ends_with_ply(input)) {
+        if (rad_ply_read(model, cam, input, &err) != RAD_OK) {
+            cli_error_rec(&err);
+            return 1;
+        }
+        return 0;
+    }
+    cli_result res;
+    memset(&res, 0, sizeof res);
+    if (cli_solve_run(s, input, &res) != 0)
+        return 1;
+    *cam = res.scene.camera;
+    rad_status st = rad_render_model_from_mesh(model, &res.mesh, res.B, res.Bv, &err);
+    cli_result_free(&res);
+    if (st != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+static int write_profile(const char *path, const double *row, int width)
+{
+    rad_afile out;
+    rad_error err;
+    if (rad_afile_open(&out, path, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    fprintf(out.fp, "x\tr\tg\tb\n");
+    for (int x = 0; x < width; x++)
+        fprintf(out.fp, "%d\t%.17g\t%.17g\t%.17g\n", x, row[3 * x], row[3 * x + 1],
+                row[3 * x + 2]);
+    if (ferror(out.fp)) {
+        rad_afile_abort(&out);
+        cli_error("%s: write error", path);
+        return 1;
+    }
+    if (rad_afile_commit(&out, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+static void plot_title(const render_args *a, const cli_solve *s, char *buf, size_t n)
+{
+    const char *base = strrchr(a->input, '/');
+    int k = snprintf(buf, n, "%s, row %d, %s", base ? base + 1 : a->input, a->scanline,
+                     a->ropt.shading == RAD_SHADING_FLAT ? "flat" : "smooth");
+    if (k > 0 && (size_t)k < n && s->common.mesh_n > 0)
+        k += snprintf(buf + k, n - (size_t)k, ", mesh %dx%d", s->common.mesh_n,
+                      s->common.mesh_m);
+    if (k > 0 && (size_t)k < n && s->solve.bounces >= 0 && !ends_with_ply(a->input))
+        snprintf(buf + k, n - (size_t)k, ", %d bounce%s", s->solve.bounces,
+                 s->solve.bounces == 1 ? "" : "s");
+}
+
+/* Profile, plot, picture, in that order; 0 or 1 (printed). */
+static int write_outputs(const render_args *a, const cli_solve *s, const rad_image *img)
+{
+    rad_error err;
+    if (a->scanline >= 0) {
+        const double *row = rad_image_row(img, a->scanline);
+        if (a->profile && write_profile(a->profile, row, img->width))
+            return 1;
+        if (a->plot) {
+            char title[256];
+            plot_title(a, s, title, sizeof title);
+            if (rad_plot_scanline(row, img->width, title, RAD_PLOT_WIDTH, RAD_PLOT_HEIGHT,
+                                  a->plot, &err) != RAD_OK) {
+                cli_error_rec(&err);
+                return 1;
+            }
+        }
+    }
+    if (rad_image_write_png(img, a->output, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+int cmd_render(int argc, char **argv)
+{
+    static const struct option longopts[] = {
+        {"output", required_argument, NULL, 'o'},
+        {"width", required_argument, NULL, OPT_WIDTH},
+        {"height", required_argument, NULL, OPT_HEIGHT},
+        {"eye", required_argument, NULL, OPT_EYE},
+        {"at", required_argument, NULL, OPT_AT},
+        {"up", required_argument, NULL, OPT_UP},
+        {"fov", required_argument, NULL, OPT_FOV},
+        {"shading", required_argument, NULL, OPT_SHADING},
+        {"edges", no_argument, NULL, OPT_EDGES},
+        {"exposure", required_argument, NULL, OPT_EXPOSURE},
+        {"scanline", required_argument, NULL, OPT_SCANLINE},
+        {"profile", required_argument, NULL, OPT_PROFILE},
+        {"plot", required_argument, NULL, OPT_PLOT},
+        CLI_SOLVE_LONGOPTS,
+        {NULL, 0, NULL, 0}};
+    render_args a;
+    cli_solve s;
+    int opt, r;
+    memset(&a, 0, sizeof a);
+    rad_render_options_init(&a.ropt);
+    a.scanline = -1;
+    cli_solve_init(&s);
+    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP) {
+            help();
+            return 0;
+        }
+        if (opt == '?' || opt == ':')
+            return cli_usage_hint("render");
+        r = render_option(&a, opt, optarg);
+        if (r == 1) {
+            r = cli_solve_option(&s, opt, optarg);
+            if (r == 0 && opt != 'q' && opt != OPT_QUIET && !a.solve_opt)
+                a.solve_opt = opt;
+        }
+        if (r != 0)
+            return cli_usage_hint("render");
+    }
+    if (optind != argc - 1) {
+        cli_error(optind >= argc ? "render needs a SCENE or a SOLUTION.ply"
+                                 : "render takes one SCENE or SOLUTION.ply");
+        return cli_usage_hint("render");
+    }
+    a.input = argv[optind];
+    if (check_args(&a))
+        return cli_usage_hint("render");
+    if (ends_with_ply(a.input) && a.solve_opt) {
+        cli_error("--%s applies to a scene, not to a solution PLY",
+                  option_name(longopts, a.solve_opt));
+        return cli_usage_hint("render");
+    }
+    rad_render_model model;
+    rad_camera base;
+    rad_image img;
+    rad_error err;
+    int status = 1;
+    memset(&model, 0, sizeof model);
+    memset(&img, 0, sizeof img);
+    if (load_model(&s, a.input, &model, &base))
+        return 1;
+    if (make_camera(&a, &base, &a.ropt.camera))
+        goto done;
+    if (rad_render(&model, &a.ropt, &img, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        goto done;
+    }
+    status = write_outputs(&a, &s, &img);
+done:
+    rad_image_free(&img);
+    rad_render_model_free(&model);
+    return status;
+}

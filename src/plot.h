@@ -1,0 +1,35 @@
+/* plot.h -- scanline plots and PNG output through cairo.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The one place that writes PNG files: render.c hands its picture here,
+ * so the atomic-write logic exists once.
+ */
+#ifndef RAD_PLOT_H
+#define RAD_PLOT_H
+
+#include "radiosity.h"
+
+/* cairo's surface, declared here so that users of this header (the
+ * program, built without cairo's include path) need not include cairo.h;
+ * it is the struct behind cairo_surface_t. */
+struct _cairo_surface;
+
+#define RAD_PLOT_WIDTH 720      /* default plot size, pixels */
+#define RAD_PLOT_HEIGHT 405
+
+/* Plot a scanline profile: n samples, sample x band b at rgb[3*x + b]
+ * (the layout of rad_image_row), as three curves R, G, B in red, green and
+ * blue over x = 0 .. n-1 ("pixel column") against "radiosity", with ticks,
+ * a legend and the title (may be NULL).  Written as a PNG of width x height
+ * pixels to path, atomically.  Deterministic: same input, same bytes. */
+rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int width,
+                             int height, const char *path, rad_error *err);
+
+/* Write a cairo image surface as a PNG to path (or standard output for
+ * "-"): through a temporary file renamed over the target, so a failure
+ * never leaves a truncated file. */
+rad_status rad_png_write_surface(struct _cairo_surface *surface, const char *path,
+                                 rad_error *err);
+
+#endif /* RAD_PLOT_H */

@@ -1,0 +1,390 @@
+/* solve.c -- the radiosity system, band by band.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * For each colour band b the radiosities satisfy (Goral et al. 1984,
+ * eq. 6-7; Cohen et al. 1988, eq. 4)
+ *
+ *     B_i = E_i + rho_i sum_j F_ij B_j,   i.e.   (I - diag(rho) F) B = E.
+ *
+ * Arrays are column-major: F[i + j*n] = F_ij; B, E and rho are n x 3 with
+ * band b in column b (B[i + b*n]).
+ *
+ * Solvers:
+ *   gauss         LU with partial pivoting (LAPACK dgetrf/dgetrs, as the
+ *                 paper's Gaussian elimination), reciprocal condition from
+ *                 dgecon; or dgesvx with forward and backward error bounds.
+ *                 Bands whose reflectances agree on every element share one
+ *                 factorisation with several right-hand sides, and only one
+ *                 working matrix is alive at a time.
+ *   jacobi        B <- E + diag(rho) F B, all bands in one DGEMM per sweep.
+ *   gauss-seidel  B_i <- E_i + rho_i sum_j F_ij B_j in place, i ascending.
+ *                 Row i of a column-major F is strided, so when F obeys
+ *                 reciprocity (A_i F_ij = A_j F_ji, which the form-factor
+ *                 fill guarantees) the sum is taken down column i instead:
+ *                 sum_j F_ij B_j = (1/A_i) sum_j F_ji (A_j B_j).
+ *   bounces K     exactly K Jacobi sweeps from B = E, no convergence test:
+ *                 B_K = sum_{m=0..K} (diag(rho) F)^m E (the paper's fig. 7).
+ * A system is reported singular when dgetrf meets an exact zero pivot or
+ * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
+ * than about 6 digits of B could be trusted (round-off 1e-16 times the
+ * condition number 1e10).
+ */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lapack.h"
+#include "radiosity.h"
+#include "status.h"
+
+#define RAD_RCOND_MIN 1e-10
+
+void rad_solve_options_init(rad_solve_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->solver = RAD_SOLVER_GAUSS;
+    opt->tolerance = 1e-12;
+    opt->max_iterations = 100000;
+    opt->bounces = -1;
+}
+
+double rad_solve_bytes(int n, int with_errbounds)
+{
+    double nn = (double)n * (double)n * sizeof(double);
+    /* F, one working matrix (and dgesvx's factor copy), O(n) vectors */
+    return nn * (with_errbounds ? 3 : 2) + 64.0 * n * sizeof(double);
+}
+
+/* H = F X for the three bands at once (DGEMM, n x n times n x 3). */
+static void mult_f(int n, const double *F, const double *X, double *H)
+{
+    const int three = RAD_BANDS;
+    const double one = 1, zero = 0;
+    dgemm_("N", "N", &n, &three, &n, &one, F, &n, X, &n, &zero, H, &n, 1, 1);
+}
+
+static double max_abs(const double *x, size_t n)
+{
+    double m = 0;
+    for (size_t k = 0; k < n; k++)
+        m = fmax(m, fabs(x[k]));
+    return m;
+}
+
+/* ---- gauss ---------------------------------------------------------------- */
+
+/* Factor and solve (I - diag(rho) F) X = E for the bands listed in
+ * bands[0..nb): rho is that of bands[0]. */
+static rad_status solve_lu(int n, const double *F, const double *rho, const double *E,
+                           double *B, const int *bands, int nb, const rad_solve_options *opt,
+                           rad_solve_report *rep, rad_error *err)
+{
+    const size_t nn = (size_t)n * n;
+    double *A = malloc(sizeof *A * nn), *AF = NULL;
+    int *ipiv = malloc(sizeof *ipiv * (size_t)n), *iwork = malloc(sizeof *iwork * (size_t)n);
+    double *work = malloc(sizeof *work * 4 * (size_t)n);
+    double *rhs = malloc(sizeof *rhs * (size_t)n * nb), *X = malloc(sizeof *X * (size_t)n * nb);
+    double anorm = 0, rcond = 0;
+    int info = 0;
+    rad_status st = RAD_OK;
+    if (opt->error_bounds)
+        AF = malloc(sizeof *AF * nn);
+    if (!A || !ipiv || !iwork || !work || !rhs || !X || (opt->error_bounds && !AF)) {
+        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the %d x %d system", n, n);
+        goto done;
+    }
+    for (int j = 0; j < n; j++) { /* A = I - diag(rho) F; anorm = ||A||_1 */
+        double col = 0;
+        for (int i = 0; i < n; i++) {
+            double a = (i == j) - rho[i] * F[(size_t)i + (size_t)j * n];
+            A[(size_t)i + (size_t)j * n] = a;
+            col += fabs(a);
+        }
+        anorm = fmax(anorm, col);
+    }
+    for (int k = 0; k < nb; k++)
+        memcpy(rhs + (size_t)k * n, E + (size_t)bands[k] * n, sizeof *rhs * (size_t)n);
+    if (opt->error_bounds) {
+        char equed = 'N';
+        double *ferr = malloc(sizeof *ferr * (size_t)nb), *berr = malloc(sizeof *berr * (size_t)nb);
+        if (!ferr || !berr) {
+            free(ferr);
+            free(berr);
+            st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+            goto done;
+        }
+        dgesvx_("N", "N", &n, &nb, A, &n, AF, &n, ipiv, &equed, NULL, NULL, rhs, &n, X, &n,
+                &rcond, ferr, berr, work, iwork, &info, 1, 1, 1);
+        for (int k = 0; k < nb; k++) {
+            rep->ferr = fmax(rep->ferr, ferr[k]);
+            rep->berr = fmax(rep->berr, berr[k]);
+        }
+        free(ferr);
+        free(berr);
+        if (info > 0 && info <= n)
+            rcond = 0;
+    } else {
+        dgetrf_(&n, &n, A, &n, ipiv, &info);
+        if (info == 0) {
+            dgecon_("1", &n, A, &n, &anorm, &rcond, work, iwork, &info, 1);
+            dgetrs_("N", &n, &nb, A, &n, ipiv, rhs, &n, &info, 1);
+            memcpy(X, rhs, sizeof *X * (size_t)n * nb);
+        } else {
+            rcond = 0;
+        }
+    }
+    rep->rcond = rep->systems == 1 ? rcond : fmin(rep->rcond, rcond);
+    if (!(rcond >= RAD_RCOND_MIN)) {
+        st = rad_fail(err, RAD_ERR_SINGULAR,
+                      "the radiosity system is singular (reciprocal condition %.3g < %g): "
+                      "a closed enclosure that reflects everything (rho = 1) never "
+                      "absorbs light, so no steady state exists",
+                      rcond, RAD_RCOND_MIN);
+        goto done;
+    }
+    for (int k = 0; k < nb; k++)
+        memcpy(B + (size_t)bands[k] * n, X + (size_t)k * n, sizeof *B * (size_t)n);
+done:
+    free(A);
+    free(AF);
+    free(ipiv);
+    free(iwork);
+    free(work);
+    free(rhs);
+    free(X);
+    return st;
+}
+
+static rad_status solve_gauss(int n, const double *F, const double *rho, const double *E,
+                              double *B, const rad_solve_options *opt, rad_solve_report *rep,
+                              rad_error *err)
+{
+    int done[RAD_BANDS] = {0};
+    for (int b = 0; b < RAD_BANDS; b++) {
+        int bands[RAD_BANDS], nb = 0;
+        if (done[b])
+            continue;
+        for (int c = b; c < RAD_BANDS; c++) /* bands with the same reflectances */
+            if (!done[c] && memcmp(rho + (size_t)b * n, rho + (size_t)c * n,
+                                   sizeof *rho * (size_t)n) == 0) {
+                bands[nb++] = c;
+                done[c] = 1;
+            }
+        rep->systems++;
+        if (opt->progress && opt->progress(opt->progress_user, "solve", rep->systems - 1, RAD_BANDS))
+            return rad_fail(err, RAD_ERR_INVALID, "interrupted");
+        rad_status st = solve_lu(n, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, err);
+        if (st)
+            return st;
+    }
+    if (opt->progress)
+        opt->progress(opt->progress_user, "solve", RAD_BANDS, RAD_BANDS);
+    return RAD_OK;
+}
+
+/* ---- iterations ----------------------------------------------------------- */
+
+/* Does F obey A_i F_ij = A_j F_ji to round-off? */
+static int reciprocal(int n, const double *F, const rad_mesh *m)
+{
+    for (int j = 0; j < n; j++)
+        for (int i = j + 1; i < n; i++) {
+            double a = m->elements[i].area * F[(size_t)i + (size_t)j * n];
+            double b = m->elements[j].area * F[(size_t)j + (size_t)i * n];
+            if (fabs(a - b) > 1e-12 * fmax(fabs(a), fabs(b)))
+                return 0;
+        }
+    return 1;
+}
+
+/* One Gauss-Seidel sweep in place; returns max |change|. */
+static double gs_sweep(int n, const double *F, const double *rho, const double *E, double *B,
+                       double *W, const double *area, int recip)
+{
+    double change = 0;
+    for (int i = 0; i < n; i++) {
+        double h[RAD_BANDS] = {0, 0, 0};
+        if (recip) { /* sum_j F_ji A_j B_j / A_i: column i is contiguous */
+            const double *col = F + (size_t)i * n;
+            for (int j = 0; j < n; j++)
+                for (int b = 0; b < RAD_BANDS; b++)
+                    h[b] += col[j] * W[(size_t)j + (size_t)b * n];
+            for (int b = 0; b < RAD_BANDS; b++)
+                h[b] /= area[i];
+        } else {
+            for (int j = 0; j < n; j++)
+                for (int b = 0; b < RAD_BANDS; b++)
+                    h[b] += F[(size_t)i + (size_t)j * n] * B[(size_t)j + (size_t)b * n];
+        }
+        for (int b = 0; b < RAD_BANDS; b++) {
+            size_t k = (size_t)i + (size_t)b * n;
+            double v = E[k] + rho[k] * h[b];
+            change = fmax(change, fabs(v - B[k]));
+            B[k] = v;
+            W[k] = area[i] * v;
+        }
+    }
+    return change;
+}
+
+static rad_status solve_iterative(const rad_mesh *m, int n, const double *F, const double *rho,
+                                  const double *E, double *B, const rad_solve_options *opt,
+                                  rad_solve_report *rep, rad_error *err)
+{
+    const size_t n3 = (size_t)n * RAD_BANDS;
+    double *H = malloc(sizeof *H * n3), *W = malloc(sizeof *W * n3);
+    double *area = malloc(sizeof *area * (size_t)n);
+    const int gs = opt->solver == RAD_SOLVER_GAUSS_SEIDEL && opt->bounces < 0;
+    const int limit = opt->bounces >= 0 ? opt->bounces : opt->max_iterations;
+    double change = 0, prev = 0, rate = 0;
+    int it;
+    rad_status st = RAD_OK;
+    if (!H || !W || !area) {
+        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+        goto done;
+    }
+    for (int i = 0; i < n; i++)
+        area[i] = m->elements[i].area;
+    const int recip = gs && reciprocal(n, F, m);
+    memcpy(B, E, sizeof *B * n3); /* B_0 = E */
+    for (size_t k = 0; k < n3; k++)
+        W[k] = area[k % (size_t)n] * B[k];
+    for (it = 1; it <= limit; it++) {
+        if (gs) {
+            change = gs_sweep(n, F, rho, E, B, W, area, recip);
+        } else {
+            mult_f(n, F, B, H);
+            change = 0;
+            for (size_t k = 0; k < n3; k++) {
+                double v = E[k] + rho[k] * H[k];
+                change = fmax(change, fabs(v - B[k]));
+                B[k] = v;
+            }
+        }
+        /* asymptotic convergence factor: ratio of successive changes */
+        if (prev > 0 && change > 0)
+            rate = change / prev;
+        prev = change;
+        if (opt->progress && it % 16 == 0 && opt->bounces < 0) {
+            double scale = max_abs(B, n3), goal = opt->tolerance * scale;
+            double frac = change > goal && rate > 0 && rate < 1
+                              ? log(prev / scale) / log(opt->tolerance) : 1;
+            if (opt->progress(opt->progress_user, "iterate", fmin(fmax(frac, 0), 1), 1)) {
+                st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
+                goto done;
+            }
+        }
+        if (opt->bounces < 0 && change <= opt->tolerance * max_abs(B, n3))
+            break;
+    }
+    rep->sweeps = it > limit ? limit : it;
+    rep->spectral_radius = rate;
+    if (opt->bounces < 0 && it > limit) {
+        st = rad_fail(err, RAD_ERR_NOCONV,
+                      "%s did not converge in %d sweeps: relative change %.3g > tolerance %g "
+                      "(convergence factor per sweep %.6f%s)",
+                      gs ? "gauss-seidel" : "jacobi", limit, change / fmax(max_abs(B, n3), DBL_MIN),
+                      opt->tolerance, rate,
+                      rate >= 1 - 1e-9 ? ": the system looks singular (rho = 1 in a closed scene?)"
+                                       : "; raise --max-iterations or use --solver gauss");
+    }
+done:
+    free(H);
+    free(W);
+    free(area);
+    return st;
+}
+
+/* ---- diagnostics ---------------------------------------------------------- */
+
+static rad_status diagnose(const rad_mesh *m, int n, const double *F, const double *rho,
+                           const double *E, const double *B, rad_solve_report *rep,
+                           rad_error *err)
+{
+    const size_t n3 = (size_t)n * RAD_BANDS;
+    double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
+    if (!H || !rs) {
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++)
+            rs[i] += F[(size_t)i + (size_t)j * n];
+    rep->row_sum_min = n ? HUGE_VAL : 0;
+    rep->row_sum_max = n ? -HUGE_VAL : 0;
+    for (int i = 0; i < n; i++) {
+        rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
+        rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
+    }
+    mult_f(n, F, B, H); /* H = F B: the irradiance of Cohen et al. 1988 */
+    double emax = max_abs(E, n3), res = 0;
+    for (int b = 0; b < RAD_BANDS; b++) {
+        double em = 0, ab = 0, es = 0;
+        for (int i = 0; i < n; i++) {
+            size_t k = (size_t)i + (size_t)b * n;
+            double a = m->elements[i].area;
+            res = fmax(res, fabs(B[k] - rho[k] * H[k] - E[k]));
+            em += a * E[k];
+            ab += a * (1 - rho[k]) * H[k];
+            es += a * B[k] * (1 - rs[i]);
+        }
+        rep->emitted[b] = em;
+        rep->absorbed[b] = ab;
+        rep->escaped[b] = es;
+        rep->balance[b] = em > 0 ? (em - ab - es) / em : em - ab - es;
+    }
+    rep->residual = emax > 0 ? res / emax : res;
+    free(H);
+    free(rs);
+    return RAD_OK;
+}
+
+rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options *opt,
+                     double *B, rad_solve_report *rep, rad_error *err)
+{
+    const int n = m->nelements;
+    const size_t n3 = (size_t)n * RAD_BANDS;
+    rad_solve_report local;
+    rad_status st;
+    if (!rep)
+        rep = &local;
+    memset(rep, 0, sizeof *rep);
+    rep->solver = opt->solver;
+    rep->bounces = opt->bounces;
+    rep->rcond = NAN;
+    rep->spectral_radius = NAN;
+    rep->ferr = rep->berr = NAN;
+    if (opt->tolerance <= 0 || opt->max_iterations < 1)
+        return rad_fail(err, RAD_ERR_INVALID, "tolerance must be positive and max-iterations at least 1");
+    double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
+    if (!rho || !E) {
+        free(rho);
+        free(E);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    for (int i = 0; i < n; i++)
+        for (int b = 0; b < RAD_BANDS; b++) {
+            rho[(size_t)i + (size_t)b * n] = m->elements[i].reflect[b];
+            E[(size_t)i + (size_t)b * n] = m->elements[i].emit[b];
+        }
+    if (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
+        st = solve_gauss(n, F, rho, E, B, opt, rep, err);
+    else
+        st = solve_iterative(m, n, F, rho, E, B, opt, rep, err);
+    if (st == RAD_OK || st == RAD_ERR_NOCONV) {
+        rad_error derr;
+        if (diagnose(m, n, F, rho, E, B, rep, &derr) != RAD_OK && st == RAD_OK) {
+            st = derr.status;
+            if (err)
+                *err = derr;
+        }
+    }
+    free(rho);
+    free(E);
+    return st;
+}

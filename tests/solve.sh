@@ -1,0 +1,73 @@
+#!/bin/sh
+# solve.sh -- `radiosity solve` through its contract (DESIGN.md sections 5-6):
+# the element table by column name, Matrix Market, PLY, JSON report, exit
+# statuses, and outputs that are never half-written.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+. "${top_srcdir:-.}/tests/lib.sh"
+cube="$top_srcdir/data/goral1984-cube.scene"
+
+"$RADIOSITY" solve -q --mesh 3x3 --elements "$work/e.tsv" --form-factors "$work/f.mtx" \
+  --report "$work/r.json" -o "$work/s.ply" "$cube"
+ok $? "solve the cube with every output"
+# column lookup by name, as a user's script would do it
+cols=$(head -n 1 "$work/e.tsv")
+for c in element surface cx cy cz area r g b; do
+  printf '%s\n' "$cols" | tr '\t' '\n' | grep -qx "$c"; ok $? "element table has column '$c'"
+done
+[ "$(tail -n +2 "$work/e.tsv" | wc -l)" -eq 54 ]; ok $? "54 element rows"
+# the light (surface 0) has B = E = 1 (it reflects nothing)
+awk -F'\t' 'NR==1 { for (k=1;k<=NF;k++) c[$k]=k; next }
+  $c["surface"]==0 && ($c["r"]!=1 || $c["g"]!=1 || $c["b"]!=1) { bad=1 } END { exit bad }' "$work/e.tsv"
+ok $? "the emitter's radiosity is its emission"
+# energy balance from the table alone: sum A (B - E) over the grey walls is
+# positive and the element areas add up to 6 (to print precision)
+a=$(awk -F'\t' 'NR==1 { for (k=1;k<=NF;k++) c[$k]=k; next } { s += $c["area"] } END { printf "%.15g", s }' "$work/e.tsv")
+close_to "$a" 6 1e-14; ok $? "element areas add up to 6 ($a)"
+head -n 1 "$work/f.mtx" | grep -q '^%%MatrixMarket matrix array real general$'; ok $? "Matrix Market header"
+[ "$(grep -v '^%' "$work/f.mtx" | head -n 1)" = "54 54" ]; ok $? "Matrix Market size line"
+[ "$(grep -v '^%' "$work/f.mtx" | tail -n +2 | wc -l)" -eq 2916 ]; ok $? "54 x 54 entries"
+# column-major: row sums of F (from element i) are 1 in a closed cube
+awk 'BEGIN { n = 0 } /^%/ { next } n == 0 { n = $1; k = 0; next }
+  { i = k % n; s[i] += $1; k++ } END { for (i = 0; i < n; i++) { d = s[i] - 1; if (d < 0) d = -d; if (d > 1e-12) bad = 1 } exit bad }' "$work/f.mtx"
+ok $? "Matrix Market rows (from element i) sum to 1 within 1e-12"
+head -n 1 "$work/s.ply" | grep -qx ply; ok $? "PLY magic"
+grep -q '^element vertex 96$' "$work/s.ply" && grep -q '^element face 54$' "$work/s.ply"; ok $? "PLY: 96 vertices, 54 faces"
+grep -q '^property uchar red$' "$work/s.ply" && grep -q '^property double radiosity_r$' "$work/s.ply"; ok $? "PLY: linear radiosity and sRGB bytes"
+grep -q '"status": "ok"' "$work/r.json" && grep -q '"residual"' "$work/r.json" && grep -q '"energy_balance_relative"' "$work/r.json"
+ok $? "JSON report with status, residual and energy balance"
+if command -v python3 > /dev/null; then
+  python3 -c "import json,sys; r=json.load(open(sys.argv[1])); sys.exit(0 if r['elements']==54 and abs(r['row_sum_max']-1)<1e-12 else 1)" "$work/r.json"
+  ok $? "the report is valid JSON"
+fi
+
+# solvers agree through the CLI too (table values, 1e-10)
+for s in jacobi gauss-seidel; do
+  "$RADIOSITY" solve -q --mesh 3x3 --solver $s --elements "$work/e_$s.tsv" "$cube"
+  paste "$work/e.tsv" "$work/e_$s.tsv" | awk -F'\t' 'NR > 1 { for (k = 12; k <= 14; k++) { d = $k - $(k + 14); if (d < 0) d = -d; if (d > 1e-10) bad = 1 } } END { exit bad }'
+  ok $? "--solver $s agrees with gauss to 1e-10"
+done
+"$RADIOSITY" solve -q --mesh 2x2 --bounces 0 --elements "$work/b0.tsv" "$cube"
+awk -F'\t' 'NR > 1 && $2 != 0 && ($12 != 0 || $13 != 0 || $14 != 0) { bad = 1 } END { exit bad }' "$work/b0.tsv"
+ok $? "--bounces 0: only the emitter is lit"
+
+# errors
+printf 'material w reflect 1 emit 1\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\nquad w 0 0 1  0 1 1  1 1 1  1 0 1\nquad w 0 0 0  0 1 0  0 1 1  0 0 1\nquad w 1 0 0  1 0 1  1 1 1  1 1 0\nquad w 0 0 0  0 0 1  1 0 1  1 0 0\nquad w 0 1 0  1 1 0  1 1 1  0 1 1\n' > "$work/white.scene"
+"$RADIOSITY" solve -q -o "$work/white.ply" "$work/white.scene" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q singular "$work/err" && [ ! -e "$work/white.ply" ]
+ok $? "closed box with reflectance 1: exit 1, 'singular', no output"
+"$RADIOSITY" solve -q --solver jacobi --max-iterations 2 --elements "$work/nc.tsv" "$cube" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q 'did not converge' "$work/err" && [ ! -e "$work/nc.tsv" ]
+ok $? "jacobi stopped early: exit 1, says so, writes no table"
+"$RADIOSITY" solve --solver lu "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown solver: exit 2"
+"$RADIOSITY" solve --bounces -1 "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "negative bounces: exit 2"
+"$RADIOSITY" solve --help | grep -q -- '--bounces'; ok $? "solve --help lists --bounces"
+
+# a run killed while writing never leaves a partial file under the target name
+echo precious > "$work/big.mtx"
+"$RADIOSITY" solve -q --mesh 12x12 --form-factors "$work/big.mtx" "$cube" &
+pid=$!
+i=0
+while [ $i -lt 200 ] && ! ls "$work" | grep -q 'big.mtx.tmp'; do sleep 0.05; i=$((i + 1)); done
+kill -9 $pid 2> /dev/null; wait $pid 2> /dev/null
+[ "$(cat "$work/big.mtx")" = precious ]; ok $? "killed mid-write: the existing target is untouched"
+done_testing
