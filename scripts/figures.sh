@@ -1,2 +1,133 @@
 #!/bin/sh
-echo "figures: being written"
+# figures.sh -- the pictures of Goral, Torrance, Greenberg & Battaile 1984
+# (their figures 6-8) from the cube scene, with an HTML page showing them
+# side by side with the exact command behind each.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+#
+# Usage: scripts/figures.sh RADIOSITY DATADIR OUTDIR
+#   RADIOSITY  the program (e.g. src/radiosity)
+#   DATADIR    where goral1984-cube.scene is (e.g. data)
+#   OUTDIR     where the pictures and index.html go (created if needed)
+#
+# Figure 6: flat shading at meshes 1x1 to 7x7, each with the RGB scanline
+#           plot of the middle row (the paper's intensity traces).
+# Figure 7: the 5x5 mesh after 0, 1, 2, 4 and 8 reflections, and solved.
+# Figure 8: smooth (Gouraud) shading of the 3x3 and 7x7 meshes.
+set -eu
+
+if [ $# -ne 3 ]; then
+  echo "Usage: $0 RADIOSITY DATADIR OUTDIR" >&2
+  exit 2
+fi
+radiosity=$1
+scene=$2/goral1984-cube.scene
+out=$3
+size=512
+row=$((size / 2))
+
+[ -x "$radiosity" ] || { echo "$0: $radiosity is not an executable" >&2; exit 1; }
+[ -r "$scene" ] || { echo "$0: cannot read $scene" >&2; exit 1; }
+mkdir -p "$out"
+
+html_escape() { printf '%s' "$1" | sed 's/&/\&amp;/g; s/</\&lt;/g; s/>/\&gt;/g; s/"/\&quot;/g'; }
+
+# The command line as a shell would accept it back (quoting what needs it).
+shell_quote() {
+  q=
+  for a in "$@"; do
+    case "$a" in
+      '' | *[!A-Za-z0-9_./,:=+@%-]*) a="'$(printf '%s' "$a" | sed "s/'/'\\\\''/g")'" ;;
+    esac
+    q="${q:+$q }$a"
+  done
+  printf '%s' "$q"
+}
+
+cells=
+# fig NAME CAPTION [PLOT] -- ARGS...: run `radiosity render ARGS... -o OUT/NAME.png`
+# and add a cell (picture, optional plot, caption, command) to the current row.
+fig() {
+  name=$1 caption=$2 plot=$3
+  shift 4
+  set -- render -q "$@" -o "$out/$name.png"
+  if [ -n "$plot" ]; then
+    set -- "$@" --scanline "$row" --plot "$out/$name-plot.png" --profile "$out/$name-profile.tsv"
+  fi
+  "$radiosity" "$@" || { echo "$0: failed: $(shell_quote "$radiosity" "$@")" >&2; exit 1; }
+  cmd=$(html_escape "$(shell_quote "$radiosity" "$@")")
+  cell="<td><figure><img src=\"$name.png\" width=\"256\" height=\"256\" alt=\"$(html_escape "$caption")\">"
+  if [ -n "$plot" ]; then
+    cell="$cell<br><img src=\"$name-plot.png\" width=\"256\" alt=\"scanline $row\">"
+  fi
+  cell="$cell<figcaption>$(html_escape "$caption")"
+  if [ -n "$plot" ]; then
+    cell="$cell (<a href=\"$name-profile.tsv\">row $row, TSV</a>)"
+  fi
+  cells="$cells$cell<br><code>$cmd</code></figcaption></figure></td>
+"
+}
+
+rows=
+end_row() {
+  rows="$rows<h2>$1</h2>
+<p>$2</p>
+<table><tr>
+$cells</tr></table>
+"
+  cells=
+}
+
+start=$(date +%s)
+
+for n in 1 2 3 4 5 7; do
+  fig "fig6-${n}x$n" "${n}x$n elements per wall, flat" plot -- \
+    "$scene" --mesh "${n}x$n" --shading flat
+done
+end_row "Figure 6: flat shading at increasing mesh resolution" \
+  "Each element is drawn in its own radiosity; below each picture the linear R, G, B radiosity along row $row (the middle row) of the picture."
+
+for k in 0 1 2 4 8; do
+  fig "fig7-bounces-$k" "5x5, $k reflection$([ "$k" = 1 ] || echo s)" "" -- \
+    "$scene" --mesh 5x5 --shading flat --bounces "$k"
+done
+fig "fig7-solved" "5x5, solved (all reflections)" "" -- "$scene" --mesh 5x5 --shading flat
+end_row "Figure 7: the light after K reflections" \
+  "B = sum over m = 0..K of (rho F)^m E (Jacobi from B = E, without a convergence test), against the solution of the full system.  After 0 reflections only the light itself is lit, and the camera looks through its back, so that picture is black; colour bleeds onto the grey walls from the second reflection on.  The exposure of each picture maps its brightest element (the light) to white."
+
+for n in 3 7; do
+  fig "fig8-${n}x$n-smooth" "${n}x$n elements per wall, smooth" "" -- \
+    "$scene" --mesh "${n}x$n" --shading smooth
+  fig "fig8-${n}x$n-flat" "${n}x$n elements per wall, flat" "" -- \
+    "$scene" --mesh "${n}x$n" --shading flat
+done
+end_row "Figure 8: smooth shading" \
+  "Vertex radiosity (the mean of the elements around each vertex) interpolated bilinearly across each element (Gouraud shading), next to the flat picture of the same mesh."
+
+version=$("$radiosity" --version | head -n 1)
+cat > "$out/index.html.tmp" <<EOF
+<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>radiosity: the figures of Goral et al. 1984</title>
+<style>
+body { font-family: sans-serif; margin: 1em 2em; }
+table { border-collapse: collapse; }
+td { vertical-align: top; padding: 4px; }
+figure { margin: 0; width: 260px; }
+figcaption { font-size: 85%; }
+code { font-size: 80%; word-break: break-all; }
+</style>
+</head>
+<body>
+<h1>The colour-bleeding cube of Goral, Torrance, Greenberg &amp; Battaile (1984)</h1>
+<p>Scene <code>$(html_escape "$scene")</code>: a unit cube seen through its emitting front
+wall; the red wall (x = 0) is on the right, the blue wall on the left.  The
+reflectances are this project's choice (see the scene file).  Pictures are
+${size} x ${size}, shown at half size; the command under each picture made it.
+Made by $(html_escape "$version").</p>
+$rows</body>
+</html>
+EOF
+mv "$out/index.html.tmp" "$out/index.html"
+echo "figures: $out/index.html ($(( $(date +%s) - start )) s)"

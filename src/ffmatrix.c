@@ -4,9 +4,9 @@
  *
  * F is n x n, column-major, F[i + j*n] = F_ij (from i to j).  Each unordered
  * pair {i, j} is integrated once: the kernel returns the symmetric contour
- * sum S, and F_ij = S/(2 pi A_i), F_ji = S/(2 pi A_j), which is
- * reciprocity A_i F_ij = A_j F_ji (Goral et al. 1984, eq. 4) by
- * construction.  Rows are shared among OpenMP threads dynamically (row i
+ * sum S, F_ji = S/(2 pi A_j) goes into column i, and F_ij = F_ji A_j / A_i
+ * is filled by a tiled transpose afterwards: reciprocity A_i F_ij = A_j F_ji
+ * (Goral et al. 1984, eq. 4) holds by construction.  Rows are shared among OpenMP threads dynamically (row i
  * has n-1-i pairs); each thread owns its clipping scratch.  The work is cut
  * into blocks of rows so that the progress callback runs between blocks,
  * on the calling thread.
@@ -29,7 +29,7 @@
 
 #define RAD_PI 3.14159265358979323846
 
-void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n)
+void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges)
 {
     rad_vec3 nw = v3_newell(v, n), lo = v[0], hi = v[0], c = v3(0, 0, 0);
     double a = 0.5 * v3_norm(nw);
@@ -49,6 +49,8 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n)
     poly->area = a;
     poly->centroid = a > 0 ? v3_add(v[0], v3_scale(c, 1.0 / a)) : v[0];
     poly->size = v3_norm(v3_sub(hi, lo));
+    poly->edges = edges;
+    poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
 }
 
 double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
@@ -57,25 +59,35 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_poly pa, pb;
     rad_ff_scratch w;
     double s;
-    rad_ff_poly_make(&pa, a, na);
-    rad_ff_poly_make(&pb, b, nb);
+    rad_ff_edge *ea = malloc(sizeof *ea * (size_t)na), *eb = malloc(sizeof *eb * (size_t)nb);
+    if (!ea || !eb) {
+        free(ea);
+        free(eb);
+        return NAN;
+    }
+    rad_ff_poly_make(&pa, a, na, ea);
+    rad_ff_poly_make(&pb, b, nb, eb);
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
         *errest /= 2 * RAD_PI * pa.area;
     rad_ff_scratch_free(&w);
+    free(ea);
+    free(eb);
     return f;
 }
 
 /* Element polygons with contiguous vertices, as the kernel wants them. */
-static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts)
+static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
+                             rad_ff_edge **edges)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
     for (int e = 0; e < m->nelements; e++)
         total += (size_t)m->elements[e].nverts;
     *polys = malloc(sizeof **polys * ne);
     *pts = malloc(sizeof **pts * (total ? total : 1));
-    if (!*polys || !*pts)
+    *edges = malloc(sizeof **edges * (total ? total : 1));
+    if (!*polys || !*pts || !*edges)
         return RAD_ERR_NOMEM;
     size_t at = 0;
     for (int e = 0; e < m->nelements; e++) {
@@ -83,49 +95,59 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         rad_ff_poly *p = &(*polys)[e];
         for (int k = 0; k < el->nverts; k++)
             (*pts)[at + (size_t)k] = rad_mesh_vertex(m, e, k);
-        p->v = *pts + at;
-        p->n = el->nverts;
+        rad_ff_poly_make(p, *pts + at, el->nverts, *edges + at);
+        /* the mesh's own normal (shared by a surface), centroid and area */
         p->normal = el->normal;
         p->centroid = el->centroid;
         p->area = el->area;
-        rad_ff_poly tmp;
-        rad_ff_poly_make(&tmp, p->v, p->n);
-        p->size = tmp.size;
+        p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
         at += (size_t)el->nverts;
     }
     return RAD_OK;
 }
 
-/* One row i: pairs (i, j > i).  Tracks the largest estimated absolute and
- * relative errors.  Returns 0, or -1 when scratch ran out. */
-static int fill_row(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
-                    rad_ff_scratch *w, double *F, double *errest, double *maxerr,
-                    double *maxrel)
+/* Pairs (i, j > i): the contour sum S gives F_ji = S/(2 pi A_j), stored in
+ * column i (contiguous, so threads on neighbouring i do not share cache
+ * lines); mirror() fills F_ij afterwards.  Tracks the largest estimated
+ * absolute and relative errors.  Returns 0, or -1 when scratch ran out. */
+static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
+                       rad_ff_scratch *w, double *F, double *errest, double *maxerr,
+                       double *maxrel)
 {
-    const double ti = 2 * RAD_PI * polys[i].area;
     const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
+    double *col = F + (size_t)i * n, *ecol = errest ? errest + (size_t)i * n : NULL;
     for (int j = i + 1; j < n; j++) {
         double s, e = 0;
         double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
         if (isnan(fij))
             return -1;
         const double tj = 2 * RAD_PI * polys[j].area;
-        F[(size_t)i + (size_t)j * n] = fij;
-        F[(size_t)j + (size_t)i * n] = s / tj;
+        col[j] = s / tj;
         if (want && s != 0) {
-            double ei = e / ti, ej = e / tj;
-            *maxerr = fmax(*maxerr, fmax(ei, ej));
+            *maxerr = fmax(*maxerr, e / fmin(tj, 2 * RAD_PI * polys[i].area));
             *maxrel = fmax(*maxrel, e / fabs(s));
         }
-        if (errest) {
-            errest[(size_t)i + (size_t)j * n] = want ? e / ti : NAN;
-            errest[(size_t)j + (size_t)i * n] = want ? e / tj : NAN;
-        }
+        if (ecol)
+            ecol[j] = want ? e / tj : NAN;
     }
-    F[(size_t)i + (size_t)i * n] = 0;
-    if (errest)
-        errest[(size_t)i + (size_t)i * n] = 0;
+    col[i] = 0;
+    if (ecol)
+        ecol[i] = 0;
     return 0;
+}
+
+/* F_ij = F_ji A_j / A_i for i < j (reciprocity), in cache-sized tiles. */
+static void mirror(const rad_ff_poly *polys, int n, double *M, int threads)
+{
+    const int T = 64;
+    const int nt = (n + T - 1) / T;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (int tj = 0; tj < nt; tj++)
+        for (int ti = 0; ti <= tj; ti++)
+            for (int j = tj * T; j < n && j < (tj + 1) * T; j++)
+                for (int i = ti * T; i < j && i < (ti + 1) * T; i++)
+                    M[(size_t)i + (size_t)j * n] =
+                        M[(size_t)j + (size_t)i * n] * (polys[j].area / polys[i].area);
 }
 
 static void fill_stats(const double *F, int n, rad_ff_stats *st)
@@ -154,28 +176,30 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     const int n = m->nelements;
     rad_ff_poly *polys = NULL;
     rad_vec3 *pts = NULL;
+    rad_ff_edge *edges = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
-    if (mesh_polys(m, &polys, &pts) != RAD_OK) {
+    if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
+        free(edges);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
     }
     const double total = 0.5 * (double)n * (n - 1);
+    const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
     const int block = n / 200 > 1 ? n / 200 : 1;
     for (int i0 = 0; i0 < n && !failed && !stop; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
-#pragma omp parallel num_threads(opt->threads > 0 ? opt->threads : omp_get_max_threads()) \
-    reduction(|| : failed) reduction(max : maxerr, maxrel)
+#pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel)
         {
             rad_ff_scratch w;
             rad_ff_scratch_init(&w);
 #pragma omp for schedule(dynamic, 1)
             for (int i = i0; i < i1; i++)
-                if (fill_row(polys, n, i, opt, &w, F, errest, &maxerr, &maxrel) != 0)
+                if (fill_column(polys, n, i, opt, &w, F, errest, &maxerr, &maxrel) != 0)
                     failed = 1;
             rad_ff_scratch_free(&w);
         }
@@ -184,8 +208,14 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
             stop = opt->progress(opt->progress_user, "form factors", done, total);
         }
     }
+    if (!failed && !stop) {
+        mirror(polys, n, F, threads);
+        if (errest)
+            mirror(polys, n, errest, threads);
+    }
     free(polys);
     free(pts);
+    free(edges);
     if (failed)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
     if (stop)

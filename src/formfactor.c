@@ -97,12 +97,7 @@ static double ln_point_segment(rad_vec3 x, rad_vec3 q0, rad_vec3 e, double len)
 
 /* ---- quadrature of one edge pair ---------------------------------------- */
 
-typedef struct ff_edge {
-    rad_vec3 p0;    /* start, local coordinates */
-    rad_vec3 d;     /* p1 - p0 */
-    rad_vec3 e;     /* unit direction */
-    double len;
-} ff_edge;
+typedef rad_ff_edge ff_edge;
 
 /* K x K Gauss-Legendre product rule for I_pq. */
 static double ln_gauss(const ff_edge *p, const ff_edge *q, int k)
@@ -264,7 +259,7 @@ static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, doubl
     return pos;
 }
 
-static int make_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
+int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
 {
     int m = 0;
     for (int k = 0; k < n; k++) {
@@ -376,8 +371,25 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     }
     if (na < 3 || nb < 3)
         return 0.0;
-    int mea = make_edges(pa, na, a->centroid, ea);
-    int meb = make_edges(pb, nb, a->centroid, eb);
+    /* edges in coordinates centred on A's centroid: precomputed unless
+     * clipped */
+    int mea, meb;
+    if (nega) {
+        mea = rad_ff_edges(pa, na, a->centroid, ea);
+    } else {
+        mea = a->nedges;
+        memcpy(ea, a->edges, sizeof *ea * (size_t)mea);
+    }
+    if (negb) {
+        meb = rad_ff_edges(pb, nb, a->centroid, eb);
+    } else {
+        const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
+        meb = b->nedges;
+        for (int k = 0; k < meb; k++) {
+            eb[k] = b->edges[k];
+            eb[k].p0 = v3_add(eb[k].p0, shift);
+        }
+    }
     rad_vec3 sep = v3_sub(b->centroid, a->centroid);
     double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
     double s = contour_sum(ea, mea, eb, meb, opt, scale2, errest);

@@ -7,10 +7,20 @@
 
 #include "radiosity.h"
 
+/* One edge of a polygon, relative to the polygon's centroid. */
+typedef struct rad_ff_edge {
+    rad_vec3 p0;    /* start, relative to the centroid */
+    rad_vec3 d;     /* end - start */
+    rad_vec3 e;     /* unit direction */
+    double len;
+} rad_ff_edge;
+
 /* A planar convex polygon ready for the kernel. */
 typedef struct rad_ff_poly {
     const rad_vec3 *v;      /* n vertices, counter-clockwise about normal */
     int n;
+    rad_ff_edge *edges;     /* its non-degenerate edges (n of room) */
+    int nedges;
     rad_vec3 normal;        /* unit front normal */
     rad_vec3 centroid;
     double area;
@@ -26,8 +36,12 @@ typedef struct rad_ff_scratch {
 void rad_ff_scratch_init(rad_ff_scratch *w);
 void rad_ff_scratch_free(rad_ff_scratch *w);
 
-/* Fill poly from n vertices (normal, centroid, area, size computed). */
-void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n);
+/* Fill poly from n vertices (normal, centroid, area, size and edges
+ * computed); `edges` must have room for n. */
+void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges);
+/* Compute the edges of p[0..n) relative to `origin` into e; returns their
+ * number (zero-length edges are dropped). */
+int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
 
 /* F from a to b.  *contour receives the symmetric contour sum S (so that
  * F_ba = S / (2 pi A_b)); *errest (may be NULL) an estimate of the

@@ -418,9 +418,7 @@ static rad_status check_header(reader *r, ply_state *s)
     s->face = find_element(s, "face");
     if (s->vertex < 0)
         return fail_at(r, "the PLY has no vertex element");
-    if (s->face < 0)
-        return fail_at(r, "the PLY has no face element");
-    ply_element *v = &s->elem[s->vertex], *f = &s->elem[s->face];
+    ply_element *v = &s->elem[s->vertex];
     static const char *const axis[3] = {"x", "y", "z"};
     int have[3] = {0, 0, 0}, indices = 0;
     for (int k = 0; k < v->nprops; k++) {
@@ -435,6 +433,9 @@ static rad_status check_header(reader *r, ply_state *s)
         r->line = v->line;
         return fail_at(r, "element vertex needs the properties x, y and z");
     }
+    if (s->face < 0)
+        return fail_at(r, "the PLY has no face element");
+    ply_element *f = &s->elem[s->face];
     for (int k = 0; k < f->nprops; k++) {
         ply_prop *p = &f->props[k];
         if (p->count_type != T_NONE && !indices &&

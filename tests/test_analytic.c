@@ -564,7 +564,7 @@ static void test_parallel(void)
                                       parallel_thin(b, a, c));
                 sweep_add(&s, rad_analytic_parallel_rectangles(a, b, c),
                           parallel_reference(a, b, c), TOL, a, b, c);
-                /* symmetry in a and b */
+                /* the two references check each other where both hold */
                 if (tb.bound <= REF_TRUST && th.bound <= REF_TRUST)
                     sweep_add(&agree, (double)th.value, tb, 1e-15, a, b, c);
             }
@@ -675,11 +675,11 @@ static ref perpendicular_textbook(double l, double w, double h)
  *        = H^2 int_0^P (1 - rho cos p)/(rho^2 + H^2) d rho >= 0,
  * which loses at most a factor ~2 to cancellation (the weight 1 - rho
  * cos p >= 0 falls linearly).  F = (1/(pi W)) int_0^(pi/2) sin p G(p) dp,
- * split at the corner p0 = atan W.  Both pieces are smooth; where P varies
- * over many decades the variable is changed so that the nodes follow it:
- * on [0, p0] by tan p = W e^(-s) when W > 1 (then 1/cos p runs from 1 to
- * ~W), on [p0, pi/2] by tan p = W e^(s) when W < 1.  Gauss-Legendre with
- * n nodes per decade-sized panel. */
+ * split at the corner p0 = atan W.  P spans many decades when W or 1/W is
+ * large, so both pieces are integrated in s = ln tan p (dp = ds tan p /
+ * (1 + tan^2 p)), where the integrand is smooth and analytic, on panels one
+ * decade of tan p wide with n Gauss-Legendre nodes each.  sin p and cos p
+ * are formed from tan p. */
 static ld perp_G(ld cos_p, ld P, ld H)
 {
     return H * atanl(P / H) - H * H * cos_p / 2 * log1pl(P * P / (H * H));
@@ -792,9 +792,10 @@ static void test_perpendicular(void)
      * the 2-D factor (W + H - R)/(2W), R = sqrt(W^2 + H^2); expanding C-14
      * for small W, H adds the end correction:
      *   pi W F = pi/2 (W + H - R) + (W^2 ln(W^2/R^2) + H^2 ln(H^2/R^2))/4
-     *            + W^2 H^2 / 12 + O(W^2 H^2 R^2),
-     * relative remainder below W H^2 R^2 <= 2e-20 here.  h >> w gives
-     * F -> 1/2 (W = 1e-8, H = 1e-4). */
+     *            + W^2 H^2 / 12 + O(W^2 H^2 R^2)
+     * (psi(x) = pi x/2 - x^2 + x^4/3 - ..., log1p to second order).  As
+     * pi W F >= pi W H / (W + H + R), the relative remainder is O(R^5),
+     * below 1e-18 here.  W + H - R is evaluated as 2WH/(W + H + R). */
     for (j = 0; j <= 4; j++)
         for (k = 0; k <= 4; k++) {
             const double l = 1e4, w = grid[j], h = grid[k];
