@@ -215,6 +215,7 @@ static void usage(FILE *out)
             "  render SCENE|SOLUTION -o IMAGE.png\n"
             "                          solve (or read a solution) and draw it\n"
             "  formfactor SCENE        form factors of all element pairs (TSV)\n"
+            "  progress SCENE          the convergence race of Cohen et al. 1988\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
             "\n"
             "Options:\n"
@@ -256,6 +257,8 @@ int main(int argc, char **argv)
         return cmd_solve(argc - 1, argv + 1);
     if (strcmp(cmd, "render") == 0)
         return cmd_render(argc - 1, argv + 1);
+    if (strcmp(cmd, "progress") == 0)
+        return cmd_progress(argc - 1, argv + 1);
     cli_error("unknown command '%s'", cmd);
     return cli_usage_hint(NULL);
 }

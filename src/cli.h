@@ -87,6 +87,8 @@ enum {
     OPT_REPORT,
     OPT_ELEMENTS,
     OPT_FORM_FACTORS,
+    OPT_TRACE,
+    OPT_PATCHES,
     OPT_SOLVE_END
 };
 
@@ -107,11 +109,16 @@ typedef struct cli_solve {
     {"report", required_argument, NULL, OPT_REPORT},                      \
     {"elements", required_argument, NULL, OPT_ELEMENTS},                  \
     {"form-factors", required_argument, NULL, OPT_FORM_FACTORS},          \
+    {"trace", required_argument, NULL, OPT_TRACE},                        \
+    {"patches", no_argument, NULL, OPT_PATCHES},                          \
     CLI_COMMON_LONGOPTS
 
 #define CLI_SOLVE_HELP                                                             \
     "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
-    "                          jacobi or gauss-seidel\n"                          \
+    "                          jacobi, gauss-seidel or progressive (shooting,\n"  \
+    "                          Cohen et al. 1988)\n"                              \
+    "      --trace FILE        progressive: one TSV row per shooting step\n"       \
+    "      --patches           progressive: each surface shoots as one patch\n"    \
     "      --tolerance T       iterative solvers: stop when the relative change\n"\
     "                          of B between sweeps is below T (default 1e-12)\n"  \
     "      --max-iterations N  iterative solvers: give up after N sweeps\n"        \
@@ -143,6 +150,7 @@ void cli_result_free(cli_result *r);
 int cmd_formfactor(int argc, char **argv);
 int cmd_solve(int argc, char **argv);
 int cmd_render(int argc, char **argv);
+int cmd_progress(int argc, char **argv);
 int cmd_analytic(int argc, char **argv);
 
 #endif /* RAD_CLI_H */

@@ -69,7 +69,7 @@ static void help(void)
            "      --profile FILE      the row's linear radiosity as TSV: x r g b\n"
            "      --plot FILE         the row's radiosity plotted as a PNG\n"
            "\n"
-           "Scene inputs only:\n"
+           "Solving a scene (refused with a PLY input, except -q and --help):\n"
            CLI_SOLVE_HELP
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");

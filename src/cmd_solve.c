@@ -41,8 +41,10 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             s->solve.solver = RAD_SOLVER_JACOBI;
         else if (strcmp(arg, "gauss-seidel") == 0)
             s->solve.solver = RAD_SOLVER_GAUSS_SEIDEL;
+        else if (strcmp(arg, "progressive") == 0)
+            s->solve.solver = RAD_SOLVER_PROGRESSIVE;
         else {
-            cli_error("--solver takes gauss, jacobi or gauss-seidel, not '%s'", arg);
+            cli_error("--solver takes gauss, jacobi, gauss-seidel or progressive, not '%s'", arg);
             return 2;
         }
         return 0;
@@ -76,6 +78,12 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         return 0;
     case OPT_FORM_FACTORS:
         s->form_factors = arg;
+        return 0;
+    case OPT_TRACE:
+        s->solve.trace = arg;
+        return 0;
+    case OPT_PATCHES:
+        s->solve.patches = 1;
         return 0;
     default:
         return cli_common_option(&s->common, opt, arg);
@@ -144,7 +152,7 @@ static int w_report(FILE *out, const void *c)
 static void summary(const rad_run_info *in)
 {
     const rad_solve_report *s = in->solve;
-    static const char *const solvers[] = {"gauss", "jacobi", "gauss-seidel"};
+    static const char *const solvers[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
     fprintf(stderr, "radiosity: %d elements, %.1f MiB of matrices; form factors %.3g s "
                     "(%.3g pairs/s, %s), solve %.3g s\n",
             in->nelements, in->memory_bytes / 1048576.0, in->t_formfactor,

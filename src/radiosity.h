@@ -216,7 +216,8 @@ double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
 typedef enum rad_solver {
     RAD_SOLVER_GAUSS = 0,       /* LU with partial pivoting (LAPACK dgesv) */
     RAD_SOLVER_JACOBI,
-    RAD_SOLVER_GAUSS_SEIDEL
+    RAD_SOLVER_GAUSS_SEIDEL,
+    RAD_SOLVER_PROGRESSIVE      /* shooting, Cohen et al. 1988 (progressive.c) */
 } rad_solver;
 
 typedef struct rad_solve_options {
@@ -229,6 +230,12 @@ typedef struct rad_solve_options {
     int threads;                /* 0: default */
     rad_progress_fn progress;   /* may be NULL */
     void *progress_user;
+    /* progressive refinement (Cohen et al. 1988) */
+    int patches;                /* 0: elements shoot; 1: each surface shoots as a patch */
+    int sort;                   /* 1: shoot the largest unshot power first (default) */
+    int ambient;                /* 1: trace/display with the ambient term */
+    const char *trace;          /* path of the per-step TSV trace, or NULL */
+    const double *reference;    /* converged B for the trace's rms columns, or NULL */
 } rad_solve_options;
 
 void rad_solve_options_init(rad_solve_options *opt);
@@ -255,6 +262,12 @@ typedef struct rad_solve_report {
  * last iterate, which the caller must not present as the answer). */
 rad_status rad_solve(const rad_mesh *mesh, const double *F, const rad_solve_options *opt,
                      double *B, rad_solve_report *report, rad_error *err);
+
+/* Progressive refinement (Cohen, Chen, Wallace & Greenberg 1988): called by
+ * rad_solve for RAD_SOLVER_PROGRESSIVE; rho and E are n x 3 column-major. */
+rad_status rad_solve_progressive(const rad_mesh *mesh, const double *F, const double *rho,
+                                 const double *E, const rad_solve_options *opt, double *B,
+                                 rad_solve_report *report, rad_error *err);
 
 /* Bytes the solve of n elements needs at its peak (F plus one working
  * matrix, plus O(n)), for the memory check before allocating. */

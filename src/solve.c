@@ -50,6 +50,7 @@ void rad_solve_options_init(rad_solve_options *opt)
     opt->tolerance = 1e-12;
     opt->max_iterations = 100000;
     opt->bounces = -1;
+    opt->sort = 1;
 }
 
 double rad_solve_bytes(int n, int with_errbounds)
@@ -374,6 +375,8 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
         }
     if (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
         st = solve_gauss(n, F, rho, E, B, opt, rep, err);
+    else if (opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0)
+        st = rad_solve_progressive(m, F, rho, E, opt, B, rep, err);
     else
         st = solve_iterative(m, n, F, rho, E, B, opt, rep, err);
     if (st == RAD_OK || st == RAD_ERR_NOCONV) {

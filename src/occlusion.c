@@ -1,0 +1,2 @@
+/* occlusion.c -- (being written) */
+#include <config.h>

@@ -1,0 +1,2 @@
+// visibility.cc -- (being written)
+#include <config.h>
