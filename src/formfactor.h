@@ -49,4 +49,11 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest);
 
+/* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
+ * a and b (already clipped to face each other), points relative to
+ * `origin`: orders rise until two agree to rel_tol.  Returns 0 with *s and
+ * *err set, 1 when it did not converge (use the contour), -1 out of memory. */
+int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, int nb,
+                rad_vec3 norm_b, rad_vec3 origin, double rel_tol, double *s, double *err);
+
 #endif /* RAD_FORMFACTOR_H */

@@ -28,15 +28,15 @@ head -n 1 "$work/f.mtx" | grep -q '^%%MatrixMarket matrix array real general$'; 
 [ "$(grep -v '^%' "$work/f.mtx" | tail -n +2 | wc -l)" -eq 2916 ]; ok $? "54 x 54 entries"
 # column-major: row sums of F (from element i) are 1 in a closed cube
 awk 'BEGIN { n = 0 } /^%/ { next } n == 0 { n = $1; k = 0; next }
-  { i = k % n; s[i] += $1; k++ } END { for (i = 0; i < n; i++) { d = s[i] - 1; if (d < 0) d = -d; if (d > 1e-12) bad = 1 } exit bad }' "$work/f.mtx"
-ok $? "Matrix Market rows (from element i) sum to 1 within 1e-12"
+  { i = k % n; s[i] += $1; k++ } END { for (i = 0; i < n; i++) { d = s[i] - 1; if (d < 0) d = -d; if (d > 1e-7) bad = 1 } exit bad }' "$work/f.mtx"
+ok $? "Matrix Market rows (from element i) sum to 1 within 1e-7 (default promises 1e-6 per entry)"
 head -n 1 "$work/s.ply" | grep -qx ply; ok $? "PLY magic"
 grep -q '^element vertex 96$' "$work/s.ply" && grep -q '^element face 54$' "$work/s.ply"; ok $? "PLY: 96 vertices, 54 faces"
 grep -q '^property uchar red$' "$work/s.ply" && grep -q '^property double radiosity_r$' "$work/s.ply"; ok $? "PLY: linear radiosity and sRGB bytes"
 grep -q '"status": "ok"' "$work/r.json" && grep -q '"residual"' "$work/r.json" && grep -q '"energy_balance_relative"' "$work/r.json"
 ok $? "JSON report with status, residual and energy balance"
 if command -v python3 > /dev/null; then
-  python3 -c "import json,sys; r=json.load(open(sys.argv[1])); sys.exit(0 if r['elements']==54 and abs(r['row_sum_max']-1)<1e-12 else 1)" "$work/r.json"
+  python3 -c "import json,sys; r=json.load(open(sys.argv[1])); sys.exit(0 if r['elements']==54 and abs(r['row_sum_max']-1)<1e-7 else 1)" "$work/r.json"
   ok $? "the report is valid JSON"
 fi
 

@@ -273,12 +273,13 @@ static void test_cube(rad_accuracy acc, double rowtol, const char *name)
 }
 
 /* Additivity: the wall-to-wall form factor of the 1x1 cube equals the
- * area-weighted sum over a 3x3 subdivision (exact with closed forms). */
+ * area-weighted sum over a 3x3 subdivision; reference mode promises 1e-9
+ * per entry, and the sums of 81 such entries stay within 1e-10. */
 static void test_additivity(void)
 {
     rad_mesh m1, m3;
-    double *F1 = cube_matrix(1, RAD_ACCURACY_DEFAULT, &m1);
-    double *F3 = cube_matrix(3, RAD_ACCURACY_DEFAULT, &m3);
+    double *F1 = cube_matrix(1, RAD_ACCURACY_REFERENCE, &m1);
+    double *F3 = cube_matrix(3, RAD_ACCURACY_REFERENCE, &m3);
     double worst = 0;
     if (F1 && F3) {
         int n3 = m3.nelements;
@@ -295,7 +296,7 @@ static void test_additivity(void)
                     worst = fmax(worst, fabs(sum));
             }
     }
-    tap_ok(F1 && F3 && worst < 1e-12, "additivity: 3x3 sums equal the 1x1 factors (worst %.3g)", worst);
+    tap_ok(F1 && F3 && worst < 1e-10, "additivity: 3x3 sums equal the 1x1 factors (worst %.3g)", worst);
     free(F1);
     free(F3);
     rad_mesh_free(&m1);
@@ -344,8 +345,12 @@ int main(void)
     test_squares();
     /* the nine-point rule's closure error on the 7x7 cube: issue 2 asks 5e-6 */
     test_cube(RAD_ACCURACY_CLASSIC, 5e-6, "classic");
-    /* closed forms: round-off only (a row of 294 terms: 1e-13 is generous) */
-    test_cube(RAD_ACCURACY_DEFAULT, 1e-13, "default");
+    /* default promises 1e-6 per entry (internal tolerance 1e-8 of each
+     * pair's S): rows within 1e-7 */
+    test_cube(RAD_ACCURACY_DEFAULT, 1e-7, "default");
+    /* reference promises 1e-9 per entry (internal 1e-11); issue 5 asks
+     * rows within 1e-11 on the cube, where all edge pairs have closed forms */
+    test_cube(RAD_ACCURACY_REFERENCE, 1e-11, "reference");
     test_additivity();
     return tap_done();
 }
