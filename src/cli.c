@@ -216,6 +216,7 @@ static void usage(FILE *out)
             "                          solve (or read a solution) and draw it\n"
             "  formfactor SCENE        form factors of all element pairs (TSV)\n"
             "  progress SCENE          the convergence race of Cohen et al. 1988\n"
+            "  sweep SCENE             time against error over meshes, modes, solvers\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
             "\n"
             "Options:\n"
@@ -259,6 +260,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (strcmp(cmd, "progress") == 0)
         return cmd_progress(argc - 1, argv + 1);
+    if (strcmp(cmd, "sweep") == 0)
+        return cmd_sweep(argc - 1, argv + 1);
     cli_error("unknown command '%s'", cmd);
     return cli_usage_hint(NULL);
 }

@@ -1,13 +1,896 @@
-/* progressive.c -- (being written) */
+/* progressive.c -- progressive refinement: shooting, sorting, the ambient term.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Cohen, Chen, Wallace & Greenberg, "A Progressive Refinement Approach to
+ * Fast Radiosity Image Generation", SIGGRAPH 1988.  Per colour band, with
+ * the unshot radiosity dB:
+ *
+ *   start  B = E, dB = E.
+ *   step   pick the shooter i with the largest unshot power A_i dB_i,
+ *          summed over the bands (sorting), or the next one in file order,
+ *          cycling (opt->sort = 0); for every element j
+ *              dRad_j = rho_j dB_i F_ij A_i / A_j,   B_j += dRad_j,
+ *              dB_j += dRad_j;
+ *          then dB_i = 0.  By reciprocity (A_i F_ij = A_j F_ji) the factor
+ *          F_ij A_i / A_j is F_ji, and column i of the column-major F holds
+ *          F_ji for all j contiguously: a shot streams one column.  An F
+ *          that is not reciprocal to round-off is read along row i instead.
+ *   stop   when the unshot power sum_i A_i |dB_i| is at most tolerance
+ *          times the emitted power sum_i A_i E_i, in every band.  (|dB|:
+ *          the negative form factors the classic rule may produce must not
+ *          hide unshot power.)  After opt->max_iterations steps without
+ *          that: RAD_ERR_NOCONV.
+ *
+ * The limit is the solution of B = E + diag(rho) F B: every radiosity an
+ * element ever receives is shot on once, so the sum is the Neumann series.
+ *
+ * Ambient term (Cohen et al. 1988, eq. 9-13), per band, for display and
+ * error curves only: it is never shot and never changes B.
+ *     F*_j = A_j / sum_k A_k                                       (eq. 9)
+ *     rho_ave = sum_j rho_j A_j / sum_j A_j                        (eq. 10)
+ *     R = 1 / (1 - rho_ave)                                        (eq. 11)
+ *     Ambient = R sum_j dB_j F*_j                                  (eq. 12)
+ *     B'_i = B_i + rho_i Ambient                                   (eq. 13)
+ * (R = 0 when rho_ave = 1: a scene that reflects everything has no finite
+ * ambient estimate.)
+ *
+ * Patches and elements (section 3.4), opt->patches: each scene surface P
+ * shoots as one patch.  Its unshot power is its elements', A_P dB_P =
+ * sum_{i in P} A_i dB_i; its unshot radiosity dB_P is their area-weighted
+ * mean, as its radiosity is the area-weighted mean of its elements'.  It
+ * shoots to every element j
+ *     dRad_j = rho_j sum_{i in P} dB_i F_ij A_i / A_j,
+ * which is the paper's rho_j dB_P F_Pj A_P / A_j with the patch-to-element
+ * factor F_Pj = sum_{i in P} A_i F_ij / A_P when dB is uniform over P.
+ * Keeping each element's own dB costs the same per shot and makes the limit
+ * the element solution itself (the same B as gauss), not the substructured
+ * approximation in which every element sees only patch means.
+ *
+ * Error (eq. 14): sqrt(sum_i A_i (B_i - B_conv_i)^2 / sum_i A_i), the
+ * area-weighted RMS difference from the converged solution, averaged over
+ * the three bands; with the ambient term B' replaces B.
+ *
+ * The trace (opt->trace) has one row per step: step, shooter (element or
+ * patch), shot (power shot, summed over the bands), unshot (unshot power
+ * left), rms and rms_ambient against opt->reference, or against a gauss
+ * solve of the mesh's own reflectances and emissions when that is NULL.
+ * It is also written when the iteration gives up: it says what happened.
+ *
+ * The race of figure 7 (progressive.h) runs the gathering method of
+ * Gauss-Seidel, one element row per step, B_i <- E_i + rho_i sum_j F_ij B_j
+ * for i = step mod n, beside shooting in file order, sorted shooting, and
+ * sorted shooting shown with the ambient term.
+ */
 #include <config.h>
 
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cairo.h>
+
+#include "atomicfile.h"
+#include "plot.h"
+#include "progressive.h"
 #include "radiosity.h"
 #include "status.h"
 
-rad_status rad_solve_progressive(const rad_mesh *mesh, const double *F, const double *rho,
+#define NB RAD_BANDS
+
+/* ---- small helpers ------------------------------------------------------- */
+
+/* Does F obey A_i F_ij = A_j F_ji to round-off? */
+static int reciprocal(int n, const double *F, const double *area)
+{
+    for (int j = 0; j < n; j++)
+        for (int i = j + 1; i < n; i++) {
+            double a = area[i] * F[(size_t)i + (size_t)j * n];
+            double b = area[j] * F[(size_t)j + (size_t)i * n];
+            if (fabs(a - b) > 1e-12 * fmax(fabs(a), fabs(b)))
+                return 0;
+        }
+    return 1;
+}
+
+static double *element_areas(const rad_mesh *m)
+{
+    double *area = malloc(sizeof *area * (size_t)(m->nelements ? m->nelements : 1));
+    if (area)
+        for (int i = 0; i < m->nelements; i++)
+            area[i] = m->elements[i].area;
+    return area;
+}
+
+static double sum(const double *x, int n)
+{
+    double s = 0;
+    for (int i = 0; i < n; i++)
+        s += x[i];
+    return s;
+}
+
+static double max_abs(const double *x, size_t n)
+{
+    double m = 0;
+    for (size_t k = 0; k < n; k++)
+        m = fmax(m, fabs(x[k]));
+    return m;
+}
+
+static double max_diff(const double *a, const double *b, size_t n)
+{
+    double d = 0;
+    for (size_t k = 0; k < n; k++)
+        d = fmax(d, fabs(a[k] - b[k]));
+    return d;
+}
+
+/* ---- the shooting state -------------------------------------------------- */
+
+typedef struct shooter {
+    int n;                      /* elements */
+    int nshooters;              /* n, or the number of patches */
+    const int *first;           /* patches: shooter s owns elements
+                                   [first[s], first[s+1]); NULL: s is element s */
+    const double *F, *rho, *area;
+    int recip;                  /* F is reciprocal: shoot down column i */
+    int sort;                   /* largest unshot power first */
+    int next;                   /* file order: the next shooter */
+    double *B;                  /* n x NB, the caller's */
+    double *dB;                 /* n x NB unshot radiosity */
+    double *saved;              /* a patch's unshot radiosity while it shoots */
+} shooter;
+
+static void shooter_range(const shooter *sh, int s, int *lo, int *hi)
+{
+    *lo = sh->first ? sh->first[s] : s;
+    *hi = sh->first ? sh->first[s + 1] : s + 1;
+}
+
+static void shooter_free(shooter *sh)
+{
+    free(sh->dB);
+    free(sh->saved);
+    sh->dB = sh->saved = NULL;
+}
+
+/* B = E, dB = E. */
+static rad_status shooter_init(shooter *sh, const rad_mesh *m, const double *F,
+                               const double *rho, const double *E, const double *area,
+                               int recip, int patches, int sort, double *B, rad_error *err)
+{
+    const int n = m->nelements;
+    const size_t n3 = (size_t)n * NB;
+    int widest = 1;
+    memset(sh, 0, sizeof *sh);
+    sh->n = n;
+    sh->nshooters = patches ? m->nsurfaces : n;
+    sh->first = patches ? m->surface_first : NULL;
+    sh->F = F;
+    sh->rho = rho;
+    sh->area = area;
+    sh->recip = recip;
+    sh->sort = sort;
+    sh->B = B;
+    for (int s = 0; s < sh->nshooters; s++) {
+        int lo, hi;
+        shooter_range(sh, s, &lo, &hi);
+        widest = hi - lo > widest ? hi - lo : widest;
+    }
+    sh->dB = malloc(sizeof *sh->dB * (n3 ? n3 : 1));
+    sh->saved = malloc(sizeof *sh->saved * (size_t)widest * NB);
+    if (!sh->dB || !sh->saved) {
+        shooter_free(sh);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for progressive refinement");
+    }
+    memcpy(B, E, sizeof *B * n3);
+    memcpy(sh->dB, E, sizeof *sh->dB * n3);
+    return RAD_OK;
+}
+
+/* Unshot power of shooter s, summed over the bands. */
+static double shooter_power(const shooter *sh, int s)
+{
+    int lo, hi;
+    double p = 0;
+    shooter_range(sh, s, &lo, &hi);
+    for (int i = lo; i < hi; i++)
+        for (int b = 0; b < NB; b++)
+            p += sh->area[i] * fabs(sh->dB[(size_t)i + (size_t)b * sh->n]);
+    return p;
+}
+
+/* The next shooter: the largest unshot power (first on ties), or file order. */
+static int shooter_pick(shooter *sh)
+{
+    if (!sh->sort) {
+        int s = sh->next;
+        sh->next = (s + 1) % sh->nshooters;
+        return s;
+    }
+    int best = 0;
+    double most = -1;
+    for (int s = 0; s < sh->nshooters; s++) {
+        double p = shooter_power(sh, s);
+        if (p > most) {
+            most = p;
+            best = s;
+        }
+    }
+    return best;
+}
+
+/* Element i shoots d (band b): dRad_j = rho_j d F_ij A_i / A_j to every j. */
+static void shoot_element(shooter *sh, int i, int b, double d)
+{
+    const size_t n = (size_t)sh->n;
+    double *B = sh->B + b * n, *dB = sh->dB + b * n;
+    const double *rho = sh->rho + b * n;
+    if (sh->recip) { /* F_ij A_i / A_j = F_ji: column i */
+        const double *col = sh->F + (size_t)i * n;
+        for (size_t j = 0; j < n; j++) {
+            double r = rho[j] * d * col[j];
+            B[j] += r;
+            dB[j] += r;
+        }
+    } else { /* row i, strided */
+        const double p = d * sh->area[i];
+        for (size_t j = 0; j < n; j++) {
+            double r = rho[j] * p * sh->F[(size_t)i + j * n] / sh->area[j];
+            B[j] += r;
+            dB[j] += r;
+        }
+    }
+}
+
+/* Shooter s shoots all its unshot radiosity; shot[b] = the power shot. */
+static void shooter_shoot(shooter *sh, int s, double shot[NB])
+{
+    const size_t n = (size_t)sh->n;
+    int lo, hi;
+    shooter_range(sh, s, &lo, &hi);
+    const size_t w = (size_t)(hi - lo);
+    for (int b = 0; b < NB; b++) /* take it first: a patch may light itself */
+        for (int i = lo; i < hi; i++) {
+            double *d = &sh->dB[(size_t)i + b * n];
+            sh->saved[(size_t)(i - lo) + b * w] = *d;
+            *d = 0;
+        }
+    for (int b = 0; b < NB; b++) {
+        shot[b] = 0;
+        for (int i = lo; i < hi; i++) {
+            double d = sh->saved[(size_t)(i - lo) + b * w];
+            if (d == 0)
+                continue;
+            shot[b] += sh->area[i] * d;
+            shoot_element(sh, i, b, d);
+        }
+    }
+}
+
+/* U[b] = sum_i A_i |dB_i|. */
+static void unshot_power(const shooter *sh, double U[NB])
+{
+    for (int b = 0; b < NB; b++) {
+        const double *dB = sh->dB + (size_t)b * sh->n;
+        U[b] = 0;
+        for (int i = 0; i < sh->n; i++)
+            U[b] += sh->area[i] * fabs(dB[i]);
+    }
+}
+
+/* ---- the ambient term and the error -------------------------------------- */
+
+typedef struct ambient {
+    double total_area;          /* sum A */
+    double R[NB];               /* 1 / (1 - rho_ave), eq. 10-11 */
+} ambient;
+
+static ambient ambient_init(int n, const double *area, const double *rho)
+{
+    ambient a;
+    a.total_area = sum(area, n);
+    for (int b = 0; b < NB; b++) {
+        double s = 0;
+        for (int i = 0; i < n; i++)
+            s += rho[(size_t)i + (size_t)b * n] * area[i];
+        double ave = a.total_area > 0 ? s / a.total_area : 0;
+        a.R[b] = ave < 1 ? 1 / (1 - ave) : 0;
+    }
+    return a;
+}
+
+/* Ambient = R sum_j dB_j F*_j = R U / sum A (eq. 9, 12), U the unshot power. */
+static void ambient_value(const ambient *a, const double U[NB], double amb[NB])
+{
+    for (int b = 0; b < NB; b++)
+        amb[b] = a->total_area > 0 ? a->R[b] * U[b] / a->total_area : 0;
+}
+
+/* B' = B + rho Ambient (eq. 13). */
+static void ambient_display(int n, const double *B, const double *rho, const double amb[NB],
+                            double *out)
+{
+    for (int b = 0; b < NB; b++)
+        for (int i = 0; i < n; i++) {
+            size_t k = (size_t)i + (size_t)b * n;
+            out[k] = B[k] + rho[k] * amb[b];
+        }
+}
+
+/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be NULL. */
+static double rms_error(int n, const double *area, double total_area, const double *rho,
+                        const double *amb, const double *B, const double *Bref)
+{
+    double mean = 0;
+    if (!(total_area > 0))
+        return 0;
+    for (int b = 0; b < NB; b++) {
+        double s = 0;
+        for (int i = 0; i < n; i++) {
+            size_t k = (size_t)i + (size_t)b * n;
+            double d = B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
+            s += area[i] * d * d;
+        }
+        mean += sqrt(s / total_area);
+    }
+    return mean / NB;
+}
+
+/* ---- the trace ----------------------------------------------------------- */
+
+typedef struct trace {
+    int on;
+    rad_afile file;
+    const double *Bref;
+    double *own;                /* the reference when we solved for it */
+} trace;
+
+static rad_status trace_open(trace *tr, const rad_mesh *m, const double *F,
+                             const rad_solve_options *opt, rad_error *err)
+{
+    memset(tr, 0, sizeof *tr);
+    if (!opt->trace)
+        return RAD_OK;
+    tr->Bref = opt->reference;
+    if (!tr->Bref) { /* the converged solution, by gauss */
+        rad_solve_options g = *opt;
+        g.solver = RAD_SOLVER_GAUSS;
+        g.trace = NULL;
+        g.reference = NULL;
+        g.bounces = -1;
+        tr->own = malloc(sizeof *tr->own * (size_t)(m->nelements ? m->nelements : 1) * NB);
+        if (!tr->own)
+            return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the trace's reference");
+        rad_status st = rad_solve(m, F, &g, tr->own, NULL, err);
+        if (st) {
+            free(tr->own);
+            tr->own = NULL;
+            return st;
+        }
+        tr->Bref = tr->own;
+    }
+    rad_status st = rad_afile_open(&tr->file, opt->trace, err);
+    if (st) {
+        free(tr->own);
+        tr->own = NULL;
+        return st;
+    }
+    tr->on = 1;
+    fputs("step\tshooter\tshot\tunshot\trms\trms_ambient\n", tr->file.fp);
+    return RAD_OK;
+}
+
+static void trace_row(const trace *tr, int step, int who, double shot, double unshot,
+                      double rms, double rms_ambient)
+{
+    fprintf(tr->file.fp, "%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", step, who, shot, unshot, rms,
+            rms_ambient);
+}
+
+/* Commit (keep) or abort; returns the commit's status. */
+static rad_status trace_close(trace *tr, int keep, rad_error *err)
+{
+    rad_status st = RAD_OK;
+    if (tr->on) {
+        if (keep)
+            st = rad_afile_commit(&tr->file, err);
+        else
+            rad_afile_abort(&tr->file);
+    }
+    free(tr->own);
+    memset(tr, 0, sizeof *tr);
+    return st;
+}
+
+/* ---- the solver ---------------------------------------------------------- */
+
+static int converged(const double U[NB], const double emitted[NB], double tolerance)
+{
+    for (int b = 0; b < NB; b++)
+        if (!(U[b] <= tolerance * emitted[b]))
+            return 0;
+    return 1;
+}
+
+static double unshot_fraction(const double U[NB], const double emitted[NB])
+{
+    double f = 0;
+    for (int b = 0; b < NB; b++)
+        f = fmax(f, emitted[b] > 0 ? U[b] / emitted[b] : U[b] > 0 ? HUGE_VAL : 0);
+    return f;
+}
+
+/* Everything one run of the solver works with. */
+typedef struct run {
+    const rad_mesh *m;
+    const double *rho;
+    const rad_solve_options *opt;
+    shooter sh;
+    trace tr;
+    ambient amb;
+    double emitted[NB];
+    double U[NB];
+    double *area;
+} run;
+
+/* One shooting step and its trace row. */
+static void run_step(run *r, int step)
+{
+    double shot[NB], a[NB];
+    int s = shooter_pick(&r->sh);
+    shooter_shoot(&r->sh, s, shot);
+    unshot_power(&r->sh, r->U);
+    if (!r->tr.on)
+        return;
+    const int n = r->sh.n;
+    ambient_value(&r->amb, r->U, a);
+    trace_row(&r->tr, step, s, shot[0] + shot[1] + shot[2], r->U[0] + r->U[1] + r->U[2],
+              rms_error(n, r->area, r->amb.total_area, r->rho, NULL, r->sh.B, r->tr.Bref),
+              rms_error(n, r->area, r->amb.total_area, r->rho, a, r->sh.B, r->tr.Bref));
+}
+
+/* Report progress; non-zero when the caller asks to stop. */
+static int run_progress(const run *r, int step)
+{
+    const rad_solve_options *o = r->opt;
+    if (!o->progress || step % 64 != 0)
+        return 0;
+    double f = unshot_fraction(r->U, r->emitted);
+    double done = f > 0 && f < 1 ? log(f) / log(o->tolerance) : 1;
+    return o->progress(o->progress_user, "shoot", fmin(fmax(done, 0), 1), 1);
+}
+
+static rad_status no_convergence(const run *r, double at_half, rad_error *err)
+{
+    const double f = unshot_fraction(r->U, r->emitted);
+    const double now = r->U[0] + r->U[1] + r->U[2];
+    return rad_fail(err, RAD_ERR_NOCONV,
+                    "progressive refinement did not converge in %d shooting steps: unshot "
+                    "power %.3g of the emitted > tolerance %g%s",
+                    r->opt->max_iterations, f, r->opt->tolerance,
+                    r->opt->max_iterations >= 2 && now >= 0.999 * at_half
+                        ? ": the unshot power hardly decreases, the system looks singular "
+                          "(rho = 1 in a closed scene?)"
+                        : "; raise --max-iterations or use --solver gauss");
+}
+
+rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const double *rho,
                                  const double *E, const rad_solve_options *opt, double *B,
                                  rad_solve_report *report, rad_error *err)
 {
-    (void)mesh, (void)F, (void)rho, (void)E, (void)opt, (void)B, (void)report;
-    return rad_fail(err, RAD_ERR_INVALID, "progressive refinement is not built yet");
+    const int n = m->nelements;
+    run r;
+    rad_status st;
+    int steps = 0;
+    double at_half = HUGE_VAL;
+    if (!(opt->tolerance > 0) || opt->max_iterations < 1)
+        return rad_fail(err, RAD_ERR_INVALID,
+                        "tolerance must be positive and max-iterations at least 1");
+    memset(&r, 0, sizeof r);
+    r.m = m;
+    r.rho = rho;
+    r.opt = opt;
+    if (!(r.area = element_areas(m)))
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    r.amb = ambient_init(n, r.area, rho);
+    for (int b = 0; b < NB; b++) {
+        r.emitted[b] = 0;
+        for (int i = 0; i < n; i++)
+            r.emitted[b] += r.area[i] * fabs(E[(size_t)i + (size_t)b * n]);
+    }
+    st = shooter_init(&r.sh, m, F, rho, E, r.area, reciprocal(n, F, r.area), opt->patches != 0,
+                      opt->sort != 0, B, err);
+    if (st) {
+        free(r.area);
+        return st;
+    }
+    st = trace_open(&r.tr, m, F, opt, err);
+    unshot_power(&r.sh, r.U);
+    while (st == RAD_OK && !converged(r.U, r.emitted, opt->tolerance)) {
+        if (steps == opt->max_iterations) {
+            st = no_convergence(&r, at_half, err);
+            break;
+        }
+        run_step(&r, ++steps);
+        if (steps == (opt->max_iterations + 1) / 2)
+            at_half = r.U[0] + r.U[1] + r.U[2];
+        if (run_progress(&r, steps))
+            st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
+    }
+    if (report)
+        report->sweeps = steps; /* for progressive, 'sweeps' counts shooting steps */
+    if (opt->progress && st == RAD_OK)
+        opt->progress(opt->progress_user, "shoot", 1, 1);
+    /* the trace is kept when the iteration gave up too: it shows why */
+    rad_error terr;
+    rad_status tst = trace_close(&r.tr, st == RAD_OK || st == RAD_ERR_NOCONV, &terr);
+    if (tst && st == RAD_OK) {
+        st = tst;
+        if (err)
+            *err = terr;
+    }
+    shooter_free(&r.sh);
+    free(r.area);
+    return st;
+}
+
+/* ---- the race of figure 7 ------------------------------------------------- */
+
+static const char *const race_names[RAD_RACE_METHODS] = {"gathering", "shooting", "sorted",
+                                                         "sorted_ambient"};
+
+const char *rad_race_name(int method)
+{
+    return method >= 0 && method < RAD_RACE_METHODS ? race_names[method] : "?";
+}
+
+void rad_race_options_init(rad_race_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->steps = 1;
+    opt->reach = 1e-6;
+}
+
+typedef struct race {
+    const rad_race_options *opt;
+    int n;
+    const double *rho, *area, *Bref;
+    double total_area, scale;
+    double *rms;
+    int *reached;
+} race;
+
+/* Record method m's displayed B after k steps; non-zero: stop. */
+static int race_record(const race *rc, int m, int k, const double *B)
+{
+    const size_t n3 = (size_t)rc->n * NB;
+    const rad_race_options *o = rc->opt;
+    rc->rms[(size_t)k + (size_t)m * (size_t)(o->steps + 1)] =
+        rms_error(rc->n, rc->area, rc->total_area, rc->rho, NULL, B, rc->Bref);
+    if (rc->reached[m] < 0 && max_diff(B, rc->Bref, n3) <= o->reach * rc->scale)
+        rc->reached[m] = k;
+    if (o->snapshot && o->snapshot_every > 0 && k % o->snapshot_every == 0 &&
+        o->snapshot(o->snapshot_user, m, k, B))
+        return 1;
+    return 0;
+}
+
+static int race_progress(const race *rc, int done)
+{
+    const rad_race_options *o = rc->opt;
+    if (!o->progress || done % 256 != 0)
+        return 0;
+    return o->progress(o->progress_user, "race", done, 3.0 * o->steps);
+}
+
+/* Gauss-Seidel for one element: B_i <- E_i + rho_i sum_j F_ij B_j. */
+static void gather_row(int n, const double *F, const double *rho, const double *E, double *B,
+                       int i)
+{
+    double h[NB] = {0, 0, 0};
+    for (int j = 0; j < n; j++) {
+        const double f = F[(size_t)i + (size_t)j * n];
+        for (int b = 0; b < NB; b++)
+            h[b] += f * B[(size_t)j + (size_t)b * n];
+    }
+    for (int b = 0; b < NB; b++) {
+        const size_t k = (size_t)i + (size_t)b * n;
+        B[k] = E[k] + rho[k] * h[b];
+    }
+}
+
+static int race_gather(const race *rc, const double *F, const double *E, double *B)
+{
+    memcpy(B, E, sizeof *B * (size_t)rc->n * NB);
+    for (int k = 0; k <= rc->opt->steps; k++) {
+        if (k > 0 && rc->n > 0)
+            gather_row(rc->n, F, rc->rho, E, B, (k - 1) % rc->n);
+        if (race_record(rc, RAD_RACE_GATHERING, k, B) || race_progress(rc, k))
+            return 1;
+    }
+    return 0;
+}
+
+/* Shooting from sh (already initialised); sorted also records the ambient. */
+static int race_shoot(const race *rc, shooter *sh, int done, double *disp)
+{
+    const ambient amb = ambient_init(rc->n, rc->area, rc->rho);
+    const int m = sh->sort ? RAD_RACE_SORTED : RAD_RACE_SHOOTING;
+    for (int k = 0; k <= rc->opt->steps; k++) {
+        double shot[NB], U[NB], a[NB];
+        if (k > 0 && sh->nshooters > 0)
+            shooter_shoot(sh, shooter_pick(sh), shot);
+        if (race_record(rc, m, k, sh->B) || race_progress(rc, done + k))
+            return 1;
+        if (!sh->sort)
+            continue;
+        unshot_power(sh, U);
+        ambient_value(&amb, U, a);
+        ambient_display(rc->n, sh->B, rc->rho, a, disp);
+        if (race_record(rc, RAD_RACE_SORTED_AMBIENT, k, disp))
+            return 1;
+    }
+    return 0;
+}
+
+rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bref,
+                        const rad_race_options *opt, double *rms, int *reached, rad_error *err)
+{
+    const int n = mesh->nelements;
+    const size_t n3 = (size_t)(n ? n : 1) * NB;
+    rad_status st = RAD_OK;
+    if (opt->steps < 1 || !(opt->reach > 0))
+        return rad_fail(err, RAD_ERR_INVALID, "the race needs at least one step and reach > 0");
+    double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
+    double *B = malloc(sizeof *B * n3), *disp = malloc(sizeof *disp * n3);
+    double *area = element_areas(mesh);
+    if (!rho || !E || !B || !disp || !area) {
+        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the race");
+        goto done;
+    }
+    for (int i = 0; i < n; i++)
+        for (int b = 0; b < NB; b++) {
+            rho[(size_t)i + (size_t)b * n] = mesh->elements[i].reflect[b];
+            E[(size_t)i + (size_t)b * n] = mesh->elements[i].emit[b];
+        }
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        reached[m] = -1;
+    race rc = {opt, n, rho, area, Bref, sum(area, n), max_abs(Bref, (size_t)n * NB), rms, reached};
+    const int recip = reciprocal(n, F, area);
+    int stop = race_gather(&rc, F, E, B);
+    for (int sort = 0; sort <= 1 && !stop && st == RAD_OK; sort++) {
+        shooter sh;
+        st = shooter_init(&sh, mesh, F, rho, E, area, recip, opt->patches, sort, B, err);
+        if (st == RAD_OK)
+            stop = race_shoot(&rc, &sh, (1 + sort) * opt->steps, disp);
+        shooter_free(&sh);
+    }
+    if (stop && st == RAD_OK)
+        st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
+done:
+    free(rho);
+    free(E);
+    free(B);
+    free(disp);
+    free(area);
+    return st;
+}
+
+/* ---- the plot ----------------------------------------------------------- */
+
+#define FONT "DejaVu Sans"
+#define LEFT 80.0
+#define RIGHT 24.0
+#define TOP 40.0
+#define BOTTOM 56.0
+
+static const double race_colour[RAD_RACE_METHODS][3] = {
+    {0.45, 0.45, 0.45}, {0.0, 0.35, 0.85}, {0.0, 0.6, 0.2}, {0.85, 0.0, 0.0}};
+static const char *const race_label[RAD_RACE_METHODS] = {
+    "gathering (Gauss-Seidel)", "shooting, file order", "shooting, sorted",
+    "sorted + ambient"};
+
+/* The frame: x in steps, y in log10 of the error, and the page box. */
+typedef struct lframe {
+    double x1;                  /* x from 0 to x1 */
+    double xstep;
+    int d0, d1, dstep;          /* decades 10^d0 .. 10^d1 */
+    double left, right, top, bottom;
+} lframe;
+
+static double nice_step(double range, int target)
+{
+    double raw = range / target;
+    double mag = pow(10.0, floor(log10(raw)));
+    double r = raw / mag;
+    return (r < 1.5 ? 1 : r < 3 ? 2 : r < 7 ? 5 : 10) * mag;
+}
+
+static lframe race_frame(const double *rms, int steps, int width, int height)
+{
+    lframe fr;
+    double lo = HUGE_VAL, hi = 0;
+    for (size_t k = 0; k < (size_t)(steps + 1) * RAD_RACE_METHODS; k++)
+        if (isfinite(rms[k]) && rms[k] > 0) {
+            lo = fmin(lo, rms[k]);
+            hi = fmax(hi, rms[k]);
+        }
+    if (!(hi > 0)) {
+        lo = 1e-3;
+        hi = 1;
+    }
+    fr.d0 = (int)floor(log10(lo));
+    fr.d1 = (int)ceil(log10(hi));
+    if (fr.d1 <= fr.d0)
+        fr.d1 = fr.d0 + 1;
+    fr.dstep = (fr.d1 - fr.d0 + 7) / 8;
+    fr.x1 = steps;
+    fr.xstep = fmax(1.0, nice_step(fr.x1, 8));
+    fr.left = LEFT;
+    fr.right = width - RIGHT;
+    fr.top = TOP;
+    fr.bottom = height - BOTTOM;
+    return fr;
+}
+
+static double race_px(const lframe *fr, double x)
+{
+    return fr->left + x / fr->x1 * (fr->right - fr->left);
+}
+
+static double race_py(const lframe *fr, double v)
+{
+    return fr->bottom - (log10(v) - fr->d0) / (fr->d1 - fr->d0) * (fr->bottom - fr->top);
+}
+
+static void show_text(cairo_t *cr, double x, double y, double align, const char *s)
+{
+    cairo_text_extents_t te;
+    cairo_text_extents(cr, s, &te);
+    cairo_move_to(cr, x - align * te.x_advance, y);
+    cairo_show_text(cr, s);
+}
+
+static void grid_line(cairo_t *cr, double x0, double y0, double x1, double y1)
+{
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+}
+
+static void race_axes(cairo_t *cr, const lframe *fr)
+{
+    char buf[32];
+    cairo_set_font_size(cr, 12);
+    cairo_set_line_width(cr, 1);
+    for (int d = fr->d0; d <= fr->d1; d += fr->dstep) {
+        double py = floor(race_py(fr, pow(10.0, d))) + 0.5;
+        grid_line(cr, fr->left, py, fr->right, py);
+        cairo_move_to(cr, fr->left - 5, py);
+        cairo_line_to(cr, fr->left, py);
+        cairo_stroke(cr);
+        snprintf(buf, sizeof buf, "1e%d", d);
+        show_text(cr, fr->left - 8, py + 4, 1, buf);
+    }
+    for (long k = 0; k * fr->xstep <= fr->x1 * (1 + 1e-12); k++) {
+        double px = floor(race_px(fr, k * fr->xstep)) + 0.5;
+        grid_line(cr, px, fr->top, px, fr->bottom);
+        cairo_move_to(cr, px, fr->bottom);
+        cairo_line_to(cr, px, fr->bottom + 5);
+        cairo_stroke(cr);
+        snprintf(buf, sizeof buf, "%.6g", k * fr->xstep);
+        show_text(cr, px, fr->bottom + 18, 0.5, buf);
+    }
+    cairo_rectangle(cr, floor(fr->left) + 0.5, floor(fr->top) + 0.5,
+                    floor(fr->right) - floor(fr->left), floor(fr->bottom) - floor(fr->top));
+    cairo_stroke(cr);
+}
+
+static void race_labels(cairo_t *cr, const lframe *fr, int width, const char *title)
+{
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_font_size(cr, 14);
+    show_text(cr, 0.5 * (fr->left + fr->right), fr->bottom + 42, 0.5,
+              "step (element updates or shots)");
+    cairo_save(cr);
+    cairo_translate(cr, 20, 0.5 * (fr->top + fr->bottom));
+    cairo_rotate(cr, -0.5 * 3.14159265358979323846);
+    show_text(cr, 0, 0, 0.5, "area-weighted RMS error");
+    cairo_restore(cr);
+    if (title && *title) {
+        cairo_set_font_size(cr, 15);
+        show_text(cr, 0.5 * width, 26, 0.5, title);
+    }
+}
+
+static void race_curves(cairo_t *cr, const lframe *fr, const double *rms, int steps)
+{
+    /* a few points per pixel column are enough */
+    const int stride = (int)fmax(1, floor(steps / (2 * (fr->right - fr->left))));
+    cairo_save(cr);
+    cairo_rectangle(cr, fr->left, fr->top, fr->right - fr->left, fr->bottom - fr->top);
+    cairo_clip(cr);
+    cairo_set_line_width(cr, 1.6);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (int m = 0; m < RAD_RACE_METHODS; m++) {
+        const double *y = rms + (size_t)m * (size_t)(steps + 1);
+        int pen = 0;
+        cairo_set_source_rgb(cr, race_colour[m][0], race_colour[m][1], race_colour[m][2]);
+        for (int k = 0;; k = k + stride < steps ? k + stride : steps) {
+            if (isfinite(y[k]) && y[k] > 0) {
+                if (pen)
+                    cairo_line_to(cr, race_px(fr, k), race_py(fr, y[k]));
+                else
+                    cairo_move_to(cr, race_px(fr, k), race_py(fr, y[k]));
+                pen = 1;
+            } else { /* nothing to draw on a log axis */
+                pen = 0;
+            }
+            if (k == steps)
+                break;
+        }
+        cairo_stroke(cr);
+    }
+    cairo_restore(cr);
+}
+
+static void race_legend(cairo_t *cr, const lframe *fr)
+{
+    const double w = 200, h = 18.0 * RAD_RACE_METHODS + 8;
+    const double x = fr->right - w - 8, y = fr->top + 8;
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_rectangle(cr, x, y, w, h);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+    cairo_set_line_width(cr, 1);
+    cairo_stroke(cr);
+    cairo_set_font_size(cr, 12);
+    cairo_set_line_width(cr, 2);
+    for (int m = 0; m < RAD_RACE_METHODS; m++) {
+        double ly = y + 14 + 18.0 * m;
+        cairo_set_source_rgb(cr, race_colour[m][0], race_colour[m][1], race_colour[m][2]);
+        cairo_move_to(cr, x + 8, ly - 4);
+        cairo_line_to(cr, x + 30, ly - 4);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        show_text(cr, x + 36, ly, 0, race_label[m]);
+    }
+}
+
+rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
+                         int height, const char *path, rad_error *err)
+{
+    if (steps < 1)
+        return rad_fail(err, RAD_ERR_INVALID, "a race plot needs at least one step");
+    if (width < 300 || height < 200 || width > 16384 || height > 16384)
+        return rad_fail(err, RAD_ERR_INVALID,
+                        "plot size %d x %d is outside 300 x 200 to 16384 x 16384", width,
+                        height);
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+    cairo_t *cr = cairo_create(s);
+    const lframe fr = race_frame(rms, steps, width, height);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    race_axes(cr, &fr);
+    race_curves(cr, &fr, rms, steps);
+    race_legend(cr, &fr);
+    race_labels(cr, &fr, width, title);
+    rad_status st;
+    cairo_status_t cs = cairo_status(cr);
+    if (cs != CAIRO_STATUS_SUCCESS)
+        st = rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_INVALID,
+                      "%s: %s", path, cairo_status_to_string(cs));
+    else
+        st = rad_png_write_surface(s, path, err);
+    cairo_destroy(cr);
+    cairo_surface_destroy(s);
+    return st;
 }

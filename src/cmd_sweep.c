@@ -1,0 +1,419 @@
+/* cmd_sweep.c -- `radiosity sweep`: time against error over meshes, accuracy
+ * modes and solvers.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The truth B is, when the scene has one, the closed form: a closed scene
+ * whose elements all share one reflectance and emission (the furnace) has
+ * B = E / (1 - rho) on every element.  Otherwise it is the reference-mode
+ * gauss solution on the finest mesh listed (or --truth-mesh).  A coarse
+ * solution is compared with a fine truth element by element of the truth:
+ * fine element (gi, gj) of an N x M surface lies in coarse element
+ * (floor((gi + 1/2) n / N), floor((gj + 1/2) m / M)), so the error measures
+ * the piecewise-constant solution against the truth, area-weighted:
+ *     rms = sqrt( sum_f A_f (B_c(f) - B_f)^2 / sum_f A_f ),
+ * averaged over the colour bands (Cohen et al. 1988, eq. 14), and
+ * max = the largest |B_c(f) - B_f|.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "atomicfile.h"
+#include "cli.h"
+#include "plotxy.h"
+
+enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT };
+
+#define MAX_LIST 32
+
+static const char *const acc_names[] = {"classic", "default", "reference"};
+static const char *const solver_names[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
+
+typedef struct sweep_args {
+    cli_common common;
+    int meshes[MAX_LIST], nmeshes;
+    int acc[3], nacc;
+    int solvers[4], nsolvers;
+    int truth_mesh;
+    const char *output, *plot;
+} sweep_args;
+
+typedef struct solution {
+    rad_mesh mesh;
+    double *B;
+} solution;
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void help(void)
+{
+    printf("Usage: radiosity sweep [OPTIONS] SCENE\n"
+           "Measure the speed-accuracy trade: for each mesh, accuracy mode and solver,\n"
+           "time the form factors and the solve, and measure the error of B against\n"
+           "the best available truth (the closed form B = E/(1 - rho) for a closed\n"
+           "scene of one material; otherwise the reference-mode gauss solution on the\n"
+           "finest mesh).  The error is the area-weighted RMS of Cohen et al. 1988,\n"
+           "eq. 14, averaged over the bands, and the maximum, in units of B.\n"
+           "\n"
+           "Options:\n"
+           "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
+           "      --accuracies LIST   classic,default,reference (default: all)\n"
+           "      --solvers LIST      gauss,jacobi,gauss-seidel (default gauss)\n"
+           "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
+           "  -o, --output FILE       the table (TSV; default standard output)\n"
+           "      --plot FILE.png     error against time, log-log, a curve per mode\n"
+           "                          and solver\n"
+           "      --quadrature K      Gauss points per edge in classic (default 3)\n"
+           "      --threads N         OpenMP threads (default: all cores)\n"
+           "  -q, --quiet             no progress lines\n"
+           "      --help              show this help and exit\n"
+           "\n"
+           "Columns: mesh elements accuracy solver seconds_formfactor seconds_solve\n"
+           "seconds_total rms_error max_error truth.\n"
+           "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
+}
+
+static int parse_list(const char *arg, const char *const *names, int nnames, int *out, int max)
+{
+    char buf[256];
+    int n = 0;
+    if (strlen(arg) >= sizeof buf)
+        return -1;
+    strcpy(buf, arg);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int v = -1;
+        if (names) {
+            for (int k = 0; k < nnames; k++)
+                if (strcmp(t, names[k]) == 0)
+                    v = k;
+        } else if (cli_parse_int(t, 1, 1000, &v)) {
+            v = -1;
+        }
+        if (v < 0 || n >= max)
+            return -1;
+        out[n++] = v;
+    }
+    return n > 0 ? n : -1;
+}
+
+static int parse_args(sweep_args *a, int argc, char **argv)
+{
+    static const struct option longopts[] = {
+        {"meshes", required_argument, NULL, OPT_MESHES},
+        {"accuracies", required_argument, NULL, OPT_ACCURACIES},
+        {"solvers", required_argument, NULL, OPT_SOLVERS},
+        {"truth-mesh", required_argument, NULL, OPT_TRUTH_MESH},
+        {"plot", required_argument, NULL, OPT_PLOT},
+        {"output", required_argument, NULL, 'o'},
+        CLI_COMMON_LONGOPTS,
+        {NULL, 0, NULL, 0}};
+    int opt;
+    static const int default_meshes[] = {1, 2, 3, 5, 7, 10};
+    memset(a, 0, sizeof *a);
+    cli_common_init(&a->common);
+    memcpy(a->meshes, default_meshes, sizeof default_meshes);
+    a->nmeshes = 6;
+    a->nacc = 3;
+    for (int k = 0; k < 3; k++)
+        a->acc[k] = k;
+    a->nsolvers = 1;
+    a->output = "-";
+    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
+        switch (opt) {
+        case OPT_HELP:
+            help();
+            return 0;
+        case OPT_MESHES:
+            if ((a->nmeshes = parse_list(optarg, NULL, 0, a->meshes, MAX_LIST)) < 0) {
+                cli_error("--meshes takes whole numbers from 1 to 1000 separated by commas");
+                return 2;
+            }
+            break;
+        case OPT_ACCURACIES:
+            if ((a->nacc = parse_list(optarg, acc_names, 3, a->acc, 3)) < 0) {
+                cli_error("--accuracies takes classic, default, reference separated by commas");
+                return 2;
+            }
+            break;
+        case OPT_SOLVERS:
+            if ((a->nsolvers = parse_list(optarg, solver_names, 3, a->solvers, 4)) < 0) {
+                cli_error("--solvers takes gauss, jacobi, gauss-seidel separated by commas");
+                return 2;
+            }
+            break;
+        case OPT_TRUTH_MESH:
+            if (cli_parse_int(optarg, 1, 1000, &a->truth_mesh)) {
+                cli_error("--truth-mesh takes a whole number from 1 to 1000");
+                return 2;
+            }
+            break;
+        case OPT_PLOT:
+            a->plot = optarg;
+            break;
+        case 'o':
+            a->output = optarg;
+            break;
+        default:
+            if (cli_common_option(&a->common, opt, optarg) != 0)
+                return 2;
+        }
+    }
+    if (a->common.mesh_n) {
+        cli_error("sweep takes --meshes, not --mesh");
+        return 2;
+    }
+    if (optind != argc - 1) {
+        cli_error(optind >= argc ? "sweep needs a SCENE" : "sweep takes one SCENE");
+        return 2;
+    }
+    return -1; /* go on */
+}
+
+/* Mesh the scene n x n, fill F in the given mode, solve with the solver. */
+static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver,
+                   solution *out, double *t_ff, double *t_solve)
+{
+    rad_error err;
+    rad_solve_options so;
+    rad_scene_set_mesh(scene, n, n);
+    memset(out, 0, sizeof *out);
+    if (rad_mesh_build(&out->mesh, scene, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    const size_t ne = (size_t)out->mesh.nelements;
+    double need = rad_solve_bytes((int)ne, 0), have = rad_memory_available();
+    if (have > 0 && need > have) {
+        cli_error("mesh %dx%d: %zu elements need %.0f MiB, %.0f MiB available", n, n, ne,
+                  need / 1048576, have / 1048576);
+        rad_mesh_free(&out->mesh);
+        return 1;
+    }
+    double *F = malloc(sizeof *F * ne * ne);
+    out->B = malloc(sizeof *out->B * ne * RAD_BANDS);
+    if (!F || !out->B) {
+        free(F);
+        cli_error("out of memory for %zu elements", ne);
+        return 1;
+    }
+    double t0 = now();
+    rad_status st = rad_ff_matrix(&out->mesh, ff, F, NULL, NULL, &err);
+    double t1 = now();
+    if (st == RAD_OK) {
+        rad_solve_options_init(&so);
+        so.solver = (rad_solver)solver;
+        so.tolerance = 1e-13;
+        st = rad_solve(&out->mesh, F, &so, out->B, NULL, &err);
+    }
+    double t2 = now();
+    free(F);
+    if (st != RAD_OK) {
+        cli_error("mesh %dx%d, %s, %s: %s", n, n, acc_names[ff->accuracy], solver_names[solver],
+                  err.message);
+        return 1;
+    }
+    *t_ff = t1 - t0;
+    *t_solve = t2 - t1;
+    return 0;
+}
+
+/* Closed form: one material everywhere and a closed scene. */
+static int furnace_truth(const rad_scene *s, double out[RAD_BANDS])
+{
+    if (s->nmaterials < 1)
+        return 0;
+    for (int k = 1; k < s->nsurfaces; k++)
+        if (s->surfaces[k].material != s->surfaces[0].material)
+            return 0;
+    const rad_material *m = &s->materials[s->surfaces[0].material];
+    for (int b = 0; b < RAD_BANDS; b++) {
+        if (!(m->reflect[b] < 1))
+            return 0;
+        out[b] = m->emit[b] / (1 - m->reflect[b]);
+    }
+    return 1;
+}
+
+static int is_closed(rad_scene *s)
+{
+    solution t;
+    rad_ff_options o;
+    double a, b;
+    rad_ff_options_init(&o);
+    o.accuracy = RAD_ACCURACY_REFERENCE;
+    if (run_one(s, 1, &o, RAD_SOLVER_GAUSS, &t, &a, &b))
+        return 0;
+    /* closed iff the reference row sums are 1: recompute cheaply */
+    const int n = t.mesh.nelements;
+    double *F = malloc(sizeof *F * (size_t)n * n);
+    rad_error err;
+    int closed = F && rad_ff_matrix(&t.mesh, &o, F, NULL, NULL, &err) == RAD_OK;
+    for (int i = 0; closed && i < n; i++) {
+        double r = 0;
+        for (int j = 0; j < n; j++)
+            r += F[i + (size_t)j * n];
+        closed = fabs(r - 1) < 1e-8;
+    }
+    free(F);
+    free(t.B);
+    rad_mesh_free(&t.mesh);
+    return closed;
+}
+
+/* Error of solution c against truth t (same scene, finer or equal mesh). */
+static void compare(const solution *c, const solution *t, const double *closed, double *rms,
+                    double *maxerr)
+{
+    double s2 = 0, area = 0;
+    *maxerr = 0;
+    const rad_mesh *mt = t ? &t->mesh : &c->mesh;
+    const int nt = mt->nelements, nc = c->mesh.nelements;
+    for (int f = 0; f < nt; f++) {
+        const rad_element *el = &mt->elements[f];
+        const int s = el->surface;
+        int ci = (int)floor((el->gi + 0.5) * c->mesh.surface_n[s] / mt->surface_n[s]);
+        int cj = (int)floor((el->gj + 0.5) * c->mesh.surface_m[s] / mt->surface_m[s]);
+        int e = c->mesh.surface_first[s] + cj * c->mesh.surface_n[s] + ci;
+        for (int b = 0; b < RAD_BANDS; b++) {
+            double truth = closed ? closed[b] : t->B[f + (size_t)b * nt];
+            double d = c->B[e + (size_t)b * nc] - truth;
+            s2 += el->area * d * d;
+            *maxerr = fmax(*maxerr, fabs(d));
+        }
+        area += el->area;
+    }
+    *rms = sqrt(s2 / (area * RAD_BANDS));
+}
+
+typedef struct row {
+    int mesh, elements, acc, solver;
+    double t_ff, t_solve, rms, max;
+} row;
+
+static int write_table(FILE *out, const row *r, int nr, const char *truth)
+{
+    fprintf(out, "mesh\telements\taccuracy\tsolver\tseconds_formfactor\tseconds_solve\t"
+                 "seconds_total\trms_error\tmax_error\ttruth\n");
+    for (int k = 0; k < nr; k++)
+        fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n", r[k].mesh,
+                r[k].mesh, r[k].elements, acc_names[r[k].acc], solver_names[r[k].solver],
+                r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve, r[k].rms, r[k].max, truth);
+    return ferror(out) ? -1 : 0;
+}
+
+static int plot(const sweep_args *a, const row *r, int nr, const char *title)
+{
+    rad_series s[12];
+    double x[12][MAX_LIST], y[12][MAX_LIST];
+    char labels[12][48];
+    int ns = 0;
+    rad_error err;
+    for (int i = 0; i < a->nacc; i++)
+        for (int j = 0; j < a->nsolvers && ns < 12; j++, ns++) {
+            s[ns].n = 0;
+            snprintf(labels[ns], sizeof labels[ns], "%s, %s", acc_names[a->acc[i]],
+                     solver_names[a->solvers[j]]);
+            for (int k = 0; k < nr; k++)
+                if (r[k].acc == a->acc[i] && r[k].solver == a->solvers[j] && s[ns].n < MAX_LIST) {
+                    x[ns][s[ns].n] = r[k].t_ff + r[k].t_solve;
+                    y[ns][s[ns].n++] = r[k].rms;
+                }
+            s[ns].label = labels[ns];
+            s[ns].x = x[ns];
+            s[ns].y = y[ns];
+        }
+    rad_plot_spec spec = {title, "time, form factors + solve (s)", "RMS error of B", 1, 1, 0, 0};
+    if (rad_plot_xy(s, ns, &spec, a->plot, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+int cmd_sweep(int argc, char **argv)
+{
+    sweep_args a;
+    rad_scene scene;
+    int r = parse_args(&a, argc, argv);
+    if (r >= 0)
+        return r == 2 ? cli_usage_hint("sweep") : r;
+    if (cli_load_scene(argv[optind], &a.common, &scene))
+        return 1;
+    double closed[RAD_BANDS];
+    int have_closed = furnace_truth(&scene, closed) && is_closed(&scene);
+    solution truth = {0};
+    int finest = a.truth_mesh;
+    for (int k = 0; k < a.nmeshes; k++)
+        finest = a.meshes[k] > finest ? a.meshes[k] : finest;
+    int status = 1, nr = 0;
+    row rows[MAX_LIST * 12];
+    char tname[64];
+    if (have_closed) {
+        snprintf(tname, sizeof tname, "closed-form");
+    } else {
+        rad_ff_options o = a.common.ff;
+        double t1, t2;
+        o.accuracy = RAD_ACCURACY_REFERENCE;
+        if (!a.common.quiet)
+            fprintf(stderr, "radiosity: truth: reference gauss on %dx%d\n", finest, finest);
+        if (run_one(&scene, finest, &o, RAD_SOLVER_GAUSS, &truth, &t1, &t2))
+            goto done;
+        snprintf(tname, sizeof tname, "reference-%dx%d", finest, finest);
+    }
+    for (int m = 0; m < a.nmeshes; m++)
+        for (int i = 0; i < a.nacc; i++)
+            for (int j = 0; j < a.nsolvers; j++) {
+                rad_ff_options o = a.common.ff;
+                solution sol;
+                row *w = &rows[nr];
+                o.accuracy = (rad_accuracy)a.acc[i];
+                if (run_one(&scene, a.meshes[m], &o, a.solvers[j], &sol, &w->t_ff, &w->t_solve))
+                    goto done;
+                w->mesh = a.meshes[m];
+                w->elements = sol.mesh.nelements;
+                w->acc = a.acc[i];
+                w->solver = a.solvers[j];
+                compare(&sol, have_closed ? NULL : &truth, have_closed ? closed : NULL, &w->rms,
+                        &w->max);
+                if (!a.common.quiet)
+                    fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n",
+                            w->mesh, w->mesh, acc_names[w->acc], solver_names[w->solver],
+                            w->t_ff + w->t_solve, w->rms);
+                nr++;
+                free(sol.B);
+                rad_mesh_free(&sol.mesh);
+            }
+    rad_afile out;
+    rad_error err;
+    if (rad_afile_open(&out, a.output, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        goto done;
+    }
+    if (write_table(out.fp, rows, nr, tname) != 0) {
+        rad_afile_abort(&out);
+        cli_error("%s: write error", a.output);
+        goto done;
+    }
+    if (rad_afile_commit(&out, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        goto done;
+    }
+    if (a.plot && plot(&a, rows, nr, scene.filename))
+        goto done;
+    status = 0;
+done:
+    free(truth.B);
+    rad_mesh_free(&truth.mesh);
+    rad_scene_free(&scene);
+    return status;
+}

@@ -1,0 +1,62 @@
+/* progressive.h -- the convergence race of progressive refinement (internal).
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * rad_solve_progressive (radiosity.h) is the solver.  This header adds what
+ * `radiosity progress` needs to redraw figure 7 of Cohen, Chen, Wallace &
+ * Greenberg, "A Progressive Refinement Approach to Fast Radiosity Image
+ * Generation", SIGGRAPH 1988: the area-weighted RMS error (their eq. 14) of
+ * four methods step by step, and its plot.  Arrays follow the library's
+ * column-major convention.
+ */
+#ifndef RAD_PROGRESSIVE_H
+#define RAD_PROGRESSIVE_H
+
+#include "radiosity.h"
+
+/* The four methods of the race, in the order of the table's columns. */
+typedef enum rad_race_method {
+    RAD_RACE_GATHERING = 0,     /* Gauss-Seidel, one element row per step */
+    RAD_RACE_SHOOTING,          /* shooting in file order, cycling */
+    RAD_RACE_SORTED,            /* shooting the largest unshot power first */
+    RAD_RACE_SORTED_AMBIENT,    /* the same, displayed with the ambient term */
+    RAD_RACE_METHODS
+} rad_race_method;
+
+/* Column name of a method: "gathering", "shooting", "sorted", "sorted_ambient". */
+const char *rad_race_name(int method);
+
+/* Called with the displayed radiosity (n x RAD_BANDS) of `method` after
+ * `step` steps; return non-zero to stop the race (RAD_ERR_INVALID, with the
+ * message "interrupted"). */
+typedef int (*rad_race_snapshot_fn)(void *user, int method, int step, const double *B);
+
+typedef struct rad_race_options {
+    int steps;                  /* steps per method, >= 1 */
+    int patches;                /* the shooters shoot as patches (surfaces) */
+    double reach;               /* reached[]: max |B - Bref| <= reach * max |Bref| */
+    int snapshot_every;         /* call snapshot every K steps (and at 0); 0: never */
+    rad_race_snapshot_fn snapshot;
+    void *snapshot_user;
+    rad_progress_fn progress;   /* may be NULL */
+    void *progress_user;
+} rad_race_options;
+
+void rad_race_options_init(rad_race_options *opt);
+
+/* Run the four methods for opt->steps steps each from B = E against the
+ * converged solution Bref (n x RAD_BANDS).  rms is (steps + 1) x
+ * RAD_RACE_METHODS, column-major: rms[k + m*(steps + 1)] is the RMS error of
+ * method m after k steps (row 0: B = E).  reached[m] is the first step
+ * within opt->reach of Bref, or -1 if none within the steps. */
+rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bref,
+                        const rad_race_options *opt, double *rms, int *reached,
+                        rad_error *err);
+
+/* Plot the race (rms as rad_race_run leaves it) as a PNG of width x height
+ * pixels: log-scale error axis, one labelled curve per method.  Written
+ * atomically; "-" is standard output. */
+rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
+                         int height, const char *path, rad_error *err);
+
+#endif /* RAD_PROGRESSIVE_H */
