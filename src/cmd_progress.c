@@ -1,10 +1,405 @@
-/* cmd_progress.c -- (being written) */
+/* cmd_progress.c -- `radiosity progress`: the convergence race of Cohen et al. 1988.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Figure 7 of Cohen, Chen, Wallace & Greenberg, "A Progressive Refinement
+ * Approach to Fast Radiosity Image Generation", SIGGRAPH 1988: the
+ * area-weighted RMS error (their eq. 14) against the converged solution,
+ * step by step, of gathering (Gauss-Seidel, one element row per step),
+ * shooting in file order, sorted shooting, and sorted shooting shown with
+ * the ambient term.  The converged solution is the gauss solve.  scene ->
+ * mesh -> form factors -> gauss -> race (progressive.c) -> TSV, plot,
+ * snapshots.  Only parsing, dispatch and messages live here.
+ */
 #include <config.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atomicfile.h"
 #include "cli.h"
+#include "progressive.h"
+#include "render.h"
+
+#define DEFAULT_STEPS_CAP 10000 /* default --steps: 2 x elements, at most this */
+#define MAX_STEPS 10000000
+#define PLOT_WIDTH 800
+#define PLOT_HEIGHT 500
+
+enum {
+    OPT_STEPS = 1200,
+    OPT_PLOT,
+    OPT_REACH,
+    OPT_SNAPSHOTS,
+    OPT_SNAPSHOT_PREFIX,
+    OPT_RACE_PATCHES
+};
+
+typedef struct progress_args {
+    cli_common common;
+    rad_race_options race;      /* steps 0: the default */
+    const char *output;         /* TSV, NULL: standard output */
+    const char *plot;           /* PNG, or NULL */
+    const char *prefix;         /* snapshot file prefix */
+} progress_args;
+
+static void help(void)
+{
+    printf("Usage: radiosity progress [OPTIONS] SCENE\n"
+           "The convergence race of Cohen, Chen, Wallace & Greenberg 1988 (figure 7):\n"
+           "the area-weighted RMS error (their eq. 14) against the gauss solution,\n"
+           "step by step, of four methods, all from B = E:\n"
+           "  gathering       Gauss-Seidel, one element row per step\n"
+           "  shooting        progressive refinement, shooters in file order\n"
+           "  sorted          the largest unshot power shoots first\n"
+           "  sorted_ambient  the same, displayed with the ambient term\n"
+           "The table (TSV, %%.17g) has the columns step gathering shooting sorted\n"
+           "sorted_ambient, one row per step from 0.  A summary goes to standard error.\n"
+           "\n"
+           "Options:\n"
+           "      --steps N           steps per method (default: 2 x the element\n"
+           "                          count, at most %d)\n"
+           "  -o, --output FILE       the table; '-' or none: standard output\n"
+           "      --plot FILE.png     the four curves on a log-scale error axis\n"
+           "      --reach TOL         the summary gives the first step of each method\n"
+           "                          within TOL (max norm, relative) of the gauss\n"
+           "                          solution (default 1e-6)\n"
+           "      --patches           the shooters shoot as patches (whole surfaces)\n"
+           "      --snapshots K       render every K steps of every method (the\n"
+           "                          scene's camera, 512 x 512, the exposure of the\n"
+           "                          converged solution) to PREFIX-METHOD-STEP.png\n"
+           "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
+           CLI_COMMON_HELP
+           "\n"
+           "Outputs are written to a temporary file and renamed: a failed run never\n"
+           "leaves a partial file.  Exit status: 0 on success, 1 on an error, 2 on a\n"
+           "usage error.\n",
+           DEFAULT_STEPS_CAP);
+}
+
+/* 0 handled, 1 not ours, 2 usage error (printed). */
+static int parse_option(progress_args *a, int opt, const char *arg)
+{
+    switch (opt) {
+    case OPT_STEPS:
+        if (cli_parse_int(arg, 1, MAX_STEPS, &a->race.steps)) {
+            cli_error("--steps takes a whole number from 1 to %d, not '%s'", MAX_STEPS, arg);
+            return 2;
+        }
+        return 0;
+    case 'o':
+        a->output = arg;
+        return 0;
+    case OPT_PLOT:
+        a->plot = arg;
+        return 0;
+    case OPT_REACH:
+        if (cli_parse_double(arg, &a->race.reach) || !(a->race.reach > 0) || a->race.reach >= 1) {
+            cli_error("--reach takes a number between 0 and 1, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_SNAPSHOTS:
+        if (cli_parse_int(arg, 1, MAX_STEPS, &a->race.snapshot_every)) {
+            cli_error("--snapshots takes a positive whole number, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_SNAPSHOT_PREFIX:
+        a->prefix = arg;
+        return 0;
+    case OPT_RACE_PATCHES:
+        a->race.patches = 1;
+        return 0;
+    default:
+        return cli_common_option(&a->common, opt, arg);
+    }
+}
+
+/* ---- snapshots ------------------------------------------------------------ */
+
+typedef struct snap_ctx {
+    const rad_mesh *mesh;
+    const char *prefix;
+    rad_render_options ropt;
+    double *Bv;
+    rad_error err;
+    int failed;
+} snap_ctx;
+
+static int snapshot(void *user, int method, int step, const double *B)
+{
+    snap_ctx *c = user;
+    rad_render_model model;
+    rad_image img;
+    char path[4096];
+    snprintf(path, sizeof path, "%s-%s-%06d.png", c->prefix, rad_race_name(method), step);
+    rad_smooth_vertices(c->mesh, B, c->Bv);
+    if (rad_render_model_from_mesh(&model, c->mesh, B, c->Bv, &c->err) != RAD_OK) {
+        c->failed = 1;
+        return 1;
+    }
+    if (rad_render(&model, &c->ropt, &img, &c->err) == RAD_OK) {
+        if (rad_image_write_png(&img, path, &c->err) != RAD_OK)
+            c->failed = 1;
+        rad_image_free(&img);
+    } else {
+        c->failed = 1;
+    }
+    rad_render_model_free(&model);
+    return c->failed;
+}
+
+/* ---- outputs --------------------------------------------------------------- */
+
+static int write_table(const char *path, const double *rms, int steps)
+{
+    rad_afile f;
+    rad_error err;
+    const size_t rows = (size_t)steps + 1;
+    if (rad_afile_open(&f, path, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    fprintf(f.fp, "step");
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        fprintf(f.fp, "\t%s", rad_race_name(m));
+    fputc('\n', f.fp);
+    for (size_t k = 0; k < rows; k++) {
+        fprintf(f.fp, "%zu", k);
+        for (int m = 0; m < RAD_RACE_METHODS; m++)
+            fprintf(f.fp, "\t%.17g", rms[k + (size_t)m * rows]);
+        fputc('\n', f.fp);
+    }
+    if (ferror(f.fp)) {
+        rad_afile_abort(&f);
+        cli_error("%s: write error", path);
+        return 1;
+    }
+    if (rad_afile_commit(&f, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+/* Shooters that emit: elements, or surfaces with --patches. */
+static int light_sources(const rad_mesh *m, int patches)
+{
+    int count = 0;
+    for (int s = 0; s < (patches ? m->nsurfaces : m->nelements); s++) {
+        int lo = patches ? m->surface_first[s] : s, hi = patches ? m->surface_first[s + 1] : s + 1;
+        int lit = 0;
+        for (int i = lo; i < hi; i++)
+            for (int b = 0; b < RAD_BANDS; b++)
+                lit |= m->elements[i].emit[b] > 0;
+        count += lit;
+    }
+    return count;
+}
+
+static void summary(const rad_mesh *m, const rad_race_options *o, const double *rms,
+                    const int *reached)
+{
+    static const char *const label[RAD_RACE_METHODS] = {"gathering", "shooting", "sorted",
+                                                        "sorted+ambient"};
+    const size_t rows = (size_t)o->steps + 1;
+    const int lights = light_sources(m, o->patches);
+    const int k = lights < 1 ? 1 : lights > o->steps ? o->steps : lights;
+    fprintf(stderr, "radiosity: %d elements, %d light source %s, %d steps per method\n",
+            m->nelements, lights, o->patches ? "patches" : "elements", o->steps);
+    fprintf(stderr, "radiosity: RMS error after %d steps:", k);
+    for (int j = 0; j < RAD_RACE_METHODS; j++)
+        fprintf(stderr, "%s %s %.6g", j ? "," : "", label[j], rms[(size_t)k + (size_t)j * rows]);
+    fprintf(stderr, "\nradiosity: first step within %g of the gauss solution:", o->reach);
+    for (int j = 0; j < RAD_RACE_METHODS; j++) {
+        if (reached[j] >= 0)
+            fprintf(stderr, "%s %s %d", j ? "," : "", label[j], reached[j]);
+        else
+            fprintf(stderr, "%s %s > %d", j ? "," : "", label[j], o->steps);
+    }
+    fputc('\n', stderr);
+}
+
+/* ---- the run ------------------------------------------------------------- */
+
+typedef struct pipeline {
+    rad_scene scene;
+    rad_mesh mesh;
+    double *F, *Bref, *rms, *Bv;
+    int reached[RAD_RACE_METHODS];
+} pipeline;
+
+static void pipeline_free(pipeline *p)
+{
+    free(p->F);
+    free(p->Bref);
+    free(p->rms);
+    free(p->Bv);
+    rad_mesh_free(&p->mesh);
+    rad_scene_free(&p->scene);
+}
+
+/* Mesh, form factors and the gauss solution. */
+static int prepare(progress_args *a, pipeline *p)
+{
+    rad_error err;
+    rad_solve_options g;
+    if (rad_mesh_build(&p->mesh, &p->scene, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    const int n = p->mesh.nelements;
+    const double need = rad_solve_bytes(n, 0), have = rad_memory_available();
+    if (have > 0 && need > have) {
+        cli_error("%d elements need %.0f MiB for the matrices, but only %.0f MiB are "
+                  "available; use a coarser --mesh",
+                  n, need / 1048576.0, have / 1048576.0);
+        return 1;
+    }
+    const size_t nn = (size_t)n * (size_t)n;
+    p->F = malloc(sizeof *p->F * (nn ? nn : 1));
+    p->Bref = malloc(sizeof *p->Bref * (size_t)(n ? n : 1) * RAD_BANDS);
+    if (!p->F || !p->Bref) {
+        cli_error("out of memory for %d elements", n);
+        return 1;
+    }
+    cli_progress_attach(&a->common);
+    if (rad_ff_matrix(&p->mesh, &a->common.ff, p->F, NULL, NULL, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    rad_solve_options_init(&g);
+    g.progress = a->common.ff.progress;
+    g.progress_user = a->common.ff.progress_user;
+    if (rad_solve(&p->mesh, p->F, &g, p->Bref, NULL, &err) != RAD_OK) {
+        cli_error("the converged (gauss) solution: %s", err.message);
+        return 1;
+    }
+    return 0;
+}
+
+static int race(progress_args *a, pipeline *p)
+{
+    rad_error err;
+    snap_ctx sc;
+    const int n = p->mesh.nelements;
+    if (a->race.steps == 0)
+        a->race.steps = 2 * n < 1 ? 1 : 2 * n > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : 2 * n;
+    p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
+    if (!p->rms) {
+        cli_error("out of memory for %d steps", a->race.steps);
+        return 1;
+    }
+    memset(&sc, 0, sizeof sc);
+    if (a->race.snapshot_every > 0) {
+        sc.mesh = &p->mesh;
+        sc.prefix = a->prefix ? a->prefix : "progress";
+        rad_render_options_init(&sc.ropt);
+        sc.ropt.camera = p->scene.camera;
+        double top = 0;
+        for (size_t k = 0; k < (size_t)n * RAD_BANDS; k++)
+            top = fmax(top, p->Bref[k]);
+        sc.ropt.exposure = top > 0 ? 1 / top : 1;
+        p->Bv = malloc(sizeof *p->Bv * (size_t)(p->mesh.nvertices ? p->mesh.nvertices : 1) *
+                       RAD_BANDS);
+        if (!p->Bv) {
+            cli_error("out of memory");
+            return 1;
+        }
+        sc.Bv = p->Bv;
+        a->race.snapshot = snapshot;
+        a->race.snapshot_user = &sc;
+    }
+    a->race.progress = a->common.ff.progress;
+    a->race.progress_user = a->common.ff.progress_user;
+    if (rad_race_run(&p->mesh, p->F, p->Bref, &a->race, p->rms, p->reached, &err) != RAD_OK) {
+        cli_error_rec(sc.failed ? &sc.err : &err);
+        return 1;
+    }
+    return 0;
+}
+
+static int outputs(const progress_args *a, const pipeline *p)
+{
+    rad_error err;
+    char title[512];
+    if (write_table(a->output ? a->output : "-", p->rms, a->race.steps))
+        return 1;
+    if (a->plot) {
+        const char *name = strrchr(p->scene.filename, '/');
+        snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
+                 name ? name + 1 : p->scene.filename);
+        if (rad_race_plot(p->rms, a->race.steps, title, PLOT_WIDTH, PLOT_HEIGHT, a->plot,
+                          &err) != RAD_OK) {
+            cli_error_rec(&err);
+            return 1;
+        }
+    }
+    if (!a->common.quiet)
+        summary(&p->mesh, &a->race, p->rms, p->reached);
+    return 0;
+}
+
+static int run(progress_args *a, const char *path)
+{
+    pipeline p;
+    rad_error err;
+    int status = 1;
+    memset(&p, 0, sizeof p);
+    if (cli_load_scene(path, &a->common, &p.scene))
+        return 1;
+    if (a->race.snapshot_every > 0 &&
+        (!p.scene.camera.defined || rad_camera_check(&p.scene.camera, &err) != RAD_OK)) {
+        if (p.scene.camera.defined)
+            cli_error("%s: --snapshots: %s", path, err.message);
+        else
+            cli_error("%s: --snapshots needs a camera line in the scene", path);
+        goto done;
+    }
+    if (prepare(a, &p) || race(a, &p) || outputs(a, &p))
+        goto done;
+    status = 0;
+done:
+    pipeline_free(&p);
+    return status;
+}
+
 int cmd_progress(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("progress is not built yet");
-    return 1;
+    static const struct option longopts[] = {
+        {"steps", required_argument, NULL, OPT_STEPS},
+        {"output", required_argument, NULL, 'o'},
+        {"plot", required_argument, NULL, OPT_PLOT},
+        {"reach", required_argument, NULL, OPT_REACH},
+        {"patches", no_argument, NULL, OPT_RACE_PATCHES},
+        {"snapshots", required_argument, NULL, OPT_SNAPSHOTS},
+        {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
+        CLI_COMMON_LONGOPTS,
+        {NULL, 0, NULL, 0}};
+    progress_args a;
+    int opt;
+    memset(&a, 0, sizeof a);
+    cli_common_init(&a.common);
+    rad_race_options_init(&a.race);
+    a.race.steps = 0; /* the default depends on the mesh */
+    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP) {
+            help();
+            return 0;
+        }
+        if (parse_option(&a, opt, optarg) != 0)
+            return cli_usage_hint("progress");
+    }
+    if (a.prefix && a.race.snapshot_every == 0) {
+        cli_error("--snapshot-prefix needs --snapshots K");
+        return cli_usage_hint("progress");
+    }
+    if (optind != argc - 1) {
+        cli_error(optind >= argc ? "progress needs a SCENE" : "progress takes one SCENE");
+        return cli_usage_hint("progress");
+    }
+    return run(&a, argv[optind]);
 }
