@@ -28,7 +28,9 @@
  *   classic    K-point Gauss-Legendre in each variable (K = 3: the paper's
  *              nine-point rule) and the closed form for colinear edges;
  *   default,   a pair small against its separation (sum of the bounding
- *   reference  diagonals below the centroid distance) is integrated over
+ *   reference  diagonals below the centroid distance, or below 1/4 of it
+ *              in default, whose looser tolerance affords the contour's
+ *              cancellation longer) is integrated over
  *              the areas instead (ffarea.c), where nothing cancels; the
  *              others by the contour with the closed form for every
  *              parallel edge pair (colinear included) and, for skew pairs,
@@ -317,7 +319,18 @@ static int scratch_reserve(rad_ff_scratch *w, int na, int nb)
     return 0;
 }
 
-/* The contour double sum S for two polygons known to face each other. */
+/* Is any edge pair neither parallel nor perpendicular? */
+static int has_skew(const ff_edge *ea, int na, const ff_edge *eb, int nb)
+{
+    for (int p = 0; p < na; p++)
+        for (int q = 0; q < nb; q++) {
+            rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
+            if (fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14 && v3_dot(cr, cr) >= 1e-26)
+                return 1;
+        }
+    return 0;
+}
+
 /* The contour double sum S for two polygons known to face each other.
  * classic: the paper's rule.  Otherwise closed forms for parallel edges and
  * the semi-analytic rule for skew ones, with absolute tolerance `tol` on S
@@ -426,18 +439,26 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
          * margin of 100 for the estimates */
         const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-11 : 1e-8;
         const double r = v3_norm(sep);
+        /* The contour's closed forms lose about eps (r/L)^4 to cancellation:
+         * default (1e-8 internally) can afford r/L up to ~10, reference
+         * (1e-11) moves to the area form as soon as the pair is apart. */
+        const double far = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1 : 4;
         int area = 1;
-        if ((a->size + b->size) < r) /* distant: the area form does not cancel */
+        if (far * (a->size + b->size) < r) /* distant: the area form does not cancel */
             area = rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &s, &e);
         if (area < 0)
             return NAN;
         if (area != 0) {
-            /* near: the contour; a first pass with the classic rule sets
-             * the scale of S for the absolute tolerance */
-            rad_ff_options c = *opt;
-            c.accuracy = RAD_ACCURACY_CLASSIC;
-            c.quadrature = 3;
-            double s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL));
+            /* near: the contour.  With skew edges, a first pass with the
+             * classic rule sets the scale of S for the absolute tolerance
+             * of their adaptive quadrature; parallel edges need none. */
+            double s0 = 0;
+            if (has_skew(ea, mea, eb, meb)) {
+                rad_ff_options c = *opt;
+                c.accuracy = RAD_ACCURACY_CLASSIC;
+                c.quadrature = 3;
+                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL));
+            }
             s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
                 s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), &e);

@@ -7,9 +7,17 @@
 
 #include "radiosity.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Fill err (if not NULL) with status and a printf-style message; return
  * status, so callers can write `return rad_fail(err, RAD_ERR_IO, ...)`. */
 rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RAD_STATUS_H */
