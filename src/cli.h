@@ -120,8 +120,10 @@ typedef struct cli_solve {
     "      --trace FILE        progressive: one TSV row per shooting step\n"       \
     "      --patches           progressive: each surface shoots as one patch\n"    \
     "      --tolerance T       iterative solvers: stop when the relative change\n"\
-    "                          of B between sweeps is below T (default 1e-12)\n"  \
-    "      --max-iterations N  iterative solvers: give up after N sweeps\n"        \
+    "                          of B between sweeps is below T (default 1e-12;\n"  \
+    "                          progressive: unshot power / emitted power)\n"      \
+    "      --max-iterations N  iterative solvers: give up after N sweeps (or\n"     \
+    "                          shooting steps)\n"                                 \
     "                          (default 100000)\n"                                \
     "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\
     "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\

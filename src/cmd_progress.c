@@ -208,9 +208,11 @@ static void summary(const rad_mesh *m, const rad_race_options *o, const double *
     const size_t rows = (size_t)o->steps + 1;
     const int lights = light_sources(m, o->patches);
     const int k = lights < 1 ? 1 : lights > o->steps ? o->steps : lights;
-    fprintf(stderr, "radiosity: %d elements, %d light source %s, %d steps per method\n",
-            m->nelements, lights, o->patches ? "patches" : "elements", o->steps);
-    fprintf(stderr, "radiosity: RMS error after %d steps:", k);
+    fprintf(stderr, "radiosity: %d elements, %d emitting %s, %d steps per method\n",
+            m->nelements, lights,
+            o->patches ? (lights == 1 ? "patch" : "patches") : (lights == 1 ? "element" : "elements"),
+            o->steps);
+    fprintf(stderr, "radiosity: RMS error after %d step%s:", k, k == 1 ? "" : "s");
     for (int j = 0; j < RAD_RACE_METHODS; j++)
         fprintf(stderr, "%s %s %.6g", j ? "," : "", label[j], rms[(size_t)k + (size_t)j * rows]);
     fprintf(stderr, "\nradiosity: first step within %g of the gauss solution:", o->reach);

@@ -164,6 +164,8 @@ static void summary(const rad_run_info *in)
     else if (s->solver == RAD_SOLVER_GAUSS)
         fprintf(stderr, "radiosity: gauss, %d factorisation%s, rcond %.3g", s->systems,
                 s->systems == 1 ? "" : "s", s->rcond);
+    else if (s->solver == RAD_SOLVER_PROGRESSIVE)
+        fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
     else
         fprintf(stderr, "radiosity: %s, %d sweeps, convergence factor %.6g", solvers[s->solver],
                 s->sweeps, s->spectral_radius);

@@ -8,14 +8,17 @@
  *
  *   start  B = E, dB = E.
  *   step   pick the shooter i with the largest unshot power A_i dB_i,
- *          summed over the bands (sorting), or the next one in file order,
- *          cycling (opt->sort = 0); for every element j
+ *          summed over the bands (sorting; ties to round-off go to the
+ *          first in file order), or the next one in file order, cycling
+ *          (opt->sort = 0); for every element j
  *              dRad_j = rho_j dB_i F_ij A_i / A_j,   B_j += dRad_j,
  *              dB_j += dRad_j;
  *          then dB_i = 0.  By reciprocity (A_i F_ij = A_j F_ji) the factor
  *          F_ij A_i / A_j is F_ji, and column i of the column-major F holds
- *          F_ji for all j contiguously: a shot streams one column.  An F
- *          that is not reciprocal to round-off is read along row i instead.
+ *          F_ji for all j contiguously: a shot streams one column.  F_ji is
+ *          also what the system (I - diag(rho) F) B = E asks for when F is
+ *          reciprocal only to round-off (or not at all): B_j gathers
+ *          rho_j F_ji B_i from every i, so shooting uses F_ji as it is.
  *   stop   when the unshot power sum_i A_i |dB_i| is at most tolerance
  *          times the emitted power sum_i A_i E_i, in every band.  (|dB|:
  *          the negative form factors the classic rule may produce must not
@@ -60,11 +63,11 @@
  * The race of figure 7 (progressive.h) runs the gathering method of
  * Gauss-Seidel, one element row per step, B_i <- E_i + rho_i sum_j F_ij B_j
  * for i = step mod n, beside shooting in file order, sorted shooting, and
- * sorted shooting shown with the ambient term.
+ * sorted shooting shown with the ambient term; rad_race_plot draws the
+ * four error curves on a log axis (cairo, written through plot.c).
  */
 #include <config.h>
 
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -81,19 +84,6 @@
 #define NB RAD_BANDS
 
 /* ---- small helpers ------------------------------------------------------- */
-
-/* Does F obey A_i F_ij = A_j F_ji to round-off? */
-static int reciprocal(int n, const double *F, const double *area)
-{
-    for (int j = 0; j < n; j++)
-        for (int i = j + 1; i < n; i++) {
-            double a = area[i] * F[(size_t)i + (size_t)j * n];
-            double b = area[j] * F[(size_t)j + (size_t)i * n];
-            if (fabs(a - b) > 1e-12 * fmax(fabs(a), fabs(b)))
-                return 0;
-        }
-    return 1;
-}
 
 static double *element_areas(const rad_mesh *m)
 {
@@ -136,7 +126,6 @@ typedef struct shooter {
     const int *first;           /* patches: shooter s owns elements
                                    [first[s], first[s+1]); NULL: s is element s */
     const double *F, *rho, *area;
-    int recip;                  /* F is reciprocal: shoot down column i */
     int sort;                   /* largest unshot power first */
     int next;                   /* file order: the next shooter */
     double *B;                  /* n x NB, the caller's */
@@ -160,7 +149,7 @@ static void shooter_free(shooter *sh)
 /* B = E, dB = E. */
 static rad_status shooter_init(shooter *sh, const rad_mesh *m, const double *F,
                                const double *rho, const double *E, const double *area,
-                               int recip, int patches, int sort, double *B, rad_error *err)
+                               int patches, int sort, double *B, rad_error *err)
 {
     const int n = m->nelements;
     const size_t n3 = (size_t)n * NB;
@@ -172,7 +161,6 @@ static rad_status shooter_init(shooter *sh, const rad_mesh *m, const double *F,
     sh->F = F;
     sh->rho = rho;
     sh->area = area;
-    sh->recip = recip;
     sh->sort = sort;
     sh->B = B;
     for (int s = 0; s < sh->nshooters; s++) {
@@ -203,7 +191,12 @@ static double shooter_power(const shooter *sh, int s)
     return p;
 }
 
-/* The next shooter: the largest unshot power (first on ties), or file order. */
+/* The next shooter: the largest unshot power, or file order.  Powers within
+ * PICK_TIE of each other are ties (equal elements of one light differ only
+ * by round-off in their areas) and go to the first in file order, so that
+ * the order does not depend on the last bits of the areas. */
+#define PICK_TIE 1e-12
+
 static int shooter_pick(shooter *sh)
 {
     if (!sh->sort) {
@@ -215,7 +208,7 @@ static int shooter_pick(shooter *sh)
     double most = -1;
     for (int s = 0; s < sh->nshooters; s++) {
         double p = shooter_power(sh, s);
-        if (p > most) {
+        if (p > most * (1 + PICK_TIE)) {
             most = p;
             best = s;
         }
@@ -223,26 +216,16 @@ static int shooter_pick(shooter *sh)
     return best;
 }
 
-/* Element i shoots d (band b): dRad_j = rho_j d F_ij A_i / A_j to every j. */
+/* Element i shoots d (band b): dRad_j = rho_j d F_ji, column i of F. */
 static void shoot_element(shooter *sh, int i, int b, double d)
 {
     const size_t n = (size_t)sh->n;
     double *B = sh->B + b * n, *dB = sh->dB + b * n;
-    const double *rho = sh->rho + b * n;
-    if (sh->recip) { /* F_ij A_i / A_j = F_ji: column i */
-        const double *col = sh->F + (size_t)i * n;
-        for (size_t j = 0; j < n; j++) {
-            double r = rho[j] * d * col[j];
-            B[j] += r;
-            dB[j] += r;
-        }
-    } else { /* row i, strided */
-        const double p = d * sh->area[i];
-        for (size_t j = 0; j < n; j++) {
-            double r = rho[j] * p * sh->F[(size_t)i + j * n] / sh->area[j];
-            B[j] += r;
-            dB[j] += r;
-        }
+    const double *rho = sh->rho + b * n, *col = sh->F + (size_t)i * n;
+    for (size_t j = 0; j < n; j++) {
+        double r = rho[j] * d * col[j];
+        B[j] += r;
+        dB[j] += r;
     }
 }
 
@@ -502,8 +485,7 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
         for (int i = 0; i < n; i++)
             r.emitted[b] += r.area[i] * fabs(E[(size_t)i + (size_t)b * n]);
     }
-    st = shooter_init(&r.sh, m, F, rho, E, r.area, reciprocal(n, F, r.area), opt->patches != 0,
-                      opt->sort != 0, B, err);
+    st = shooter_init(&r.sh, m, F, rho, E, r.area, opt->patches != 0, opt->sort != 0, B, err);
     if (st) {
         free(r.area);
         return st;
@@ -660,11 +642,10 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
     for (int m = 0; m < RAD_RACE_METHODS; m++)
         reached[m] = -1;
     race rc = {opt, n, rho, area, Bref, sum(area, n), max_abs(Bref, (size_t)n * NB), rms, reached};
-    const int recip = reciprocal(n, F, area);
     int stop = race_gather(&rc, F, E, B);
     for (int sort = 0; sort <= 1 && !stop && st == RAD_OK; sort++) {
         shooter sh;
-        st = shooter_init(&sh, mesh, F, rho, E, area, recip, opt->patches, sort, B, err);
+        st = shooter_init(&sh, mesh, F, rho, E, area, opt->patches, sort, B, err);
         if (st == RAD_OK)
             stop = race_shoot(&rc, &sh, (1 + sort) * opt->steps, disp);
         shooter_free(&sh);
