@@ -14,6 +14,7 @@
 #include <time.h>
 
 #include "lapack.h"
+#include "lu.h"
 
 static double now(void)
 {
@@ -41,7 +42,7 @@ int main(int argc, char **argv)
         for (int k = 1; k < argc && ns < 8; k++)
             sizes[ns++] = atoi(argv[k]);
     }
-    printf("N\tdgemm_gflops\tdgetrf_gflops\tratio\n");
+    printf("N\tdgemm_gflops\tdgetrf_gflops\tratio\tblocked_lu_gflops\tratio\n");
     for (int s = 0; s < ns; s++) {
         const int n = sizes[s];
         double *A = malloc(sizeof *A * (size_t)n * n), *B = malloc(sizeof *B * (size_t)n * n);
@@ -50,7 +51,7 @@ int main(int argc, char **argv)
         if (!A || !B || !C || !ipiv)
             return 1;
         const double one = 1, zero = 0;
-        double best_mm = 1e300, best_lu = 1e300;
+        double best_mm = 1e300, best_lu = 1e300, best_bl = 1e300;
         fill(A, n, 1);
         fill(B, n, 2);
         for (int r = 0; r < 3; r++) {
@@ -63,10 +64,17 @@ int main(int argc, char **argv)
             dgetrf_(&n, &n, C, &n, ipiv, &info);
             t1 = now();
             best_lu = t1 - t0 < best_lu ? t1 - t0 : best_lu;
+            fill(C, n, 3);
+            int stopped;
+            t0 = now();
+            rad_lu_factor(n, C, ipiv, NULL, NULL, "lu", &stopped);
+            t1 = now();
+            best_bl = t1 - t0 < best_bl ? t1 - t0 : best_bl;
         }
         double mm = 2.0 * n * n * (double)n / best_mm / 1e9;
         double lu = 2.0 / 3.0 * n * n * (double)n / best_lu / 1e9;
-        printf("%d\t%.1f\t%.1f\t%.2f\n", n, mm, lu, lu / mm);
+        double bl = 2.0 / 3.0 * n * n * (double)n / best_bl / 1e9;
+        printf("%d\t%.1f\t%.1f\t%.2f\t%.1f\t%.2f\n", n, mm, lu, lu / mm, bl, bl / mm);
         fflush(stdout);
         free(A);
         free(B);

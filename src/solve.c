@@ -11,8 +11,9 @@
  * band b in column b (B[i + b*n]).
  *
  * Solvers:
- *   gauss         LU with partial pivoting (LAPACK dgetrf/dgetrs, as the
- *                 paper's Gaussian elimination), reciprocal condition from
+ *   gauss         LU with partial pivoting (blocked as LAPACK's dgetrf, in
+ *                 lu.c, so progress shows; dgetrs solves; as the paper's
+ *                 Gaussian elimination), reciprocal condition from
  *                 dgecon; or dgesvx with forward and backward error bounds.
  *                 Bands whose reflectances agree on every element share one
  *                 factorisation with several right-hand sides, and only one
@@ -38,6 +39,7 @@
 #include <string.h>
 
 #include "lapack.h"
+#include "lu.h"
 #include "radiosity.h"
 #include "status.h"
 
@@ -129,7 +131,13 @@ static rad_status solve_lu(int n, const double *F, const double *rho, const doub
         if (info > 0 && info <= n)
             rcond = 0;
     } else {
-        dgetrf_(&n, &n, A, &n, ipiv, &info);
+        int stopped;
+        info = rad_lu_factor(n, A, ipiv, opt->progress, opt->progress_user, "factorise",
+                             &stopped);
+        if (stopped) {
+            st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
+            goto done;
+        }
         if (info == 0) {
             dgecon_("1", &n, A, &n, &anorm, &rcond, work, iwork, &info, 1);
             dgetrs_("N", &n, &nb, A, &n, ipiv, rhs, &n, &info, 1);

@@ -21,6 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lapack.h"
+#include "lu.h"
 #include "radiosity.h"
 #include "tap.h"
 
@@ -427,8 +429,41 @@ static void test_furnace_and_singular(void)
     rad_scene_free(&s);
 }
 
+/* The blocked LU (lu.c) against LAPACK's dgetrf on a matrix large enough
+ * to take the blocked path: the same algorithm, so the same pivots, and
+ * factors equal to round-off (1e-12 relative to the largest entry: the
+ * blocked update sums in another order, n * eps * growth). */
+static void test_blocked_lu(void)
+{
+    const int n = 2100;
+    double *A = malloc(sizeof *A * (size_t)n * n), *C = malloc(sizeof *C * (size_t)n * n);
+    int *p1 = malloc(sizeof *p1 * n), *p2 = malloc(sizeof *p2 * n), info, stopped;
+    unsigned seed = 7;
+    for (size_t k = 0; k < (size_t)n * n; k++) {
+        seed = seed * 1103515245u + 12345u;
+        A[k] = ((seed >> 8) & 0xffff) / 65536.0 - 0.5;
+    }
+    memcpy(C, A, sizeof *A * (size_t)n * n);
+    dgetrf_(&n, &n, A, &n, p1, &info);
+    int info2 = rad_lu_factor(n, C, p2, NULL, NULL, "lu", &stopped);
+    double worst = 0, big = 0;
+    int same = info == info2 && !stopped;
+    for (int i = 0; i < n; i++)
+        same &= p1[i] == p2[i];
+    for (size_t k = 0; k < (size_t)n * n; k++) {
+        worst = fmax(worst, fabs(A[k] - C[k]));
+        big = fmax(big, fabs(A[k]));
+    }
+    tap_ok(same && worst <= 1e-12 * big, "blocked LU equals dgetrf: same pivots, factors to %.3g", worst / big);
+    free(A);
+    free(C);
+    free(p1);
+    free(p2);
+}
+
 int main(void)
 {
+    test_blocked_lu();
     for (int nm = 1; nm <= 7; nm++)
         test_cube_exact(nm);
     test_solvers_and_bounces();
