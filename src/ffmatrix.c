@@ -23,6 +23,7 @@
 #endif
 
 #include "formfactor.h"
+#include "occlusion.h"
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
@@ -51,6 +52,7 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->size = v3_norm(v3_sub(hi, lo));
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
+    poly->gauss3 = NULL;
 }
 
 double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
@@ -79,7 +81,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 
 /* Element polygons with contiguous vertices, as the kernel wants them. */
 static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
-                             rad_ff_edge **edges)
+                             rad_ff_edge **edges, rad_vec3 **gauss3)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
     for (int e = 0; e < m->nelements; e++)
@@ -87,7 +89,8 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     *polys = malloc(sizeof **polys * ne);
     *pts = malloc(sizeof **pts * (total ? total : 1));
     *edges = malloc(sizeof **edges * (total ? total : 1));
-    if (!*polys || !*pts || !*edges)
+    *gauss3 = malloc(sizeof **gauss3 * 3 * (total ? total : 1));
+    if (!*polys || !*pts || !*edges || !*gauss3)
         return RAD_ERR_NOMEM;
     size_t at = 0;
     for (int e = 0; e < m->nelements; e++) {
@@ -101,6 +104,9 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         p->centroid = el->centroid;
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
+        p->gauss3 = *gauss3 + 3 * at; /* the nine-point rule's points, once */
+        for (int k = 0; k < p->nedges; k++)
+            rad_ff_gauss3_points(&p->edges[k], p->gauss3 + 3 * k);
         at += (size_t)el->nverts;
     }
     return RAD_OK;
@@ -111,8 +117,8 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
  * lines); mirror() fills F_ij afterwards.  Tracks the largest estimated
  * absolute and relative errors.  Returns 0, or -1 when scratch ran out. */
 static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
-                       rad_ff_scratch *w, double *F, double *errest, double *maxerr,
-                       double *maxrel)
+                       rad_ff_scratch *w, rad_occ_work *ow, double *F, double *errest,
+                       double *maxerr, double *maxrel)
 {
     const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
     double *col = F + (size_t)i * n, *ecol = errest ? errest + (size_t)i * n : NULL;
@@ -120,6 +126,9 @@ static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_opti
         double s, e = 0;
         double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
         if (isnan(fij))
+            return -1;
+        /* hidden surfaces (occlusion.c): S stays symmetric, or unchanged */
+        if (ow && rad_occ_pair(ow, polys, i, j, &s, want ? &e : NULL) != 0)
             return -1;
         const double tj = 2 * RAD_PI * polys[j].area;
         col[j] = s / tj;
@@ -173,34 +182,61 @@ static void fill_stats(const double *F, int n, rad_ff_stats *st)
 rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F,
                          double *errest, rad_ff_stats *stats, rad_error *err)
 {
+    return rad_ff_matrix_occ(m, opt, RAD_OCC_AUTO, F, errest, stats, NULL, err);
+}
+
+rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_occ_mode mode,
+                             double *F, double *errest, rad_ff_stats *stats,
+                             rad_occ_stats *vstats, rad_error *err)
+{
     const int n = m->nelements;
     rad_ff_poly *polys = NULL;
     rad_vec3 *pts = NULL;
     rad_ff_edge *edges = NULL;
+    rad_vec3 *gauss3 = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
-    if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
+    if (mesh_polys(m, &polys, &pts, &edges, &gauss3) != RAD_OK) {
         free(polys);
         free(pts);
         free(edges);
+        free(gauss3);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
+    }
+    rad_occ *occ = NULL;
+    rad_occ_stats vst;
+    rad_status vs = rad_occ_create(&occ, m, mode, opt->accuracy, &vst, err);
+    if (vs != RAD_OK) {
+        free(polys);
+        free(pts);
+        free(edges);
+        free(gauss3);
+        return vs;
     }
     const double total = 0.5 * (double)n * (n - 1);
     const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
-    const int block = n / 200 > 1 ? n / 200 : 1;
+    /* blocks of rows between progress calls: few parallel regions (each
+     * ends in a barrier, costly when the cores are shared) */
+    const int block = n / 50 > 64 ? n / 50 : 64;
     for (int i0 = 0; i0 < n && !failed && !stop; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
 #pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel)
         {
             rad_ff_scratch w;
+            rad_occ_work ow;
             rad_ff_scratch_init(&w);
+            rad_occ_work_init(&ow, occ);
 #pragma omp for schedule(dynamic, 1)
             for (int i = i0; i < i1; i++)
-                if (fill_column(polys, n, i, opt, &w, F, errest, &maxerr, &maxrel) != 0)
+                if (fill_column(polys, n, i, opt, &w, occ ? &ow : NULL, F, errest, &maxerr,
+                                &maxrel) != 0)
                     failed = 1;
+#pragma omp critical(rad_occ_stats)
+            rad_occ_stats_add(&vst, &ow.stats);
+            rad_occ_work_free(&ow);
             rad_ff_scratch_free(&w);
         }
         if (opt->progress) {
@@ -216,6 +252,10 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     free(polys);
     free(pts);
     free(edges);
+    free(gauss3);
+    rad_occ_free(occ);
+    if (vstats)
+        *vstats = vst;
     if (failed)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
     if (stop)

@@ -65,7 +65,7 @@ void rad_ff_options_init(rad_ff_options *opt)
 
 /* ---- closed forms of the log integrals ---------------------------------- */
 
-/* H(u) with H''(u) = ln sqrt(u^2 + d^2):
+/* H(u) with H''(u) = ln sqrt(u^2 + d^2), up to an affine function of u:
  *   H(u) = (u^2 - d^2)/4 ln(u^2 + d^2) - 3u^2/4 + d u atan(u/d),
  * and for d = 0, H(u) = u^2/2 ln|u| - 3u^2/4 (H(0) = 0).  Derived by
  * integrating ln sqrt(u^2 + d^2) twice (Gradshteyn & Ryzhik 2.733.1 and
@@ -74,8 +74,13 @@ static double h_parallel(double u, double d)
 {
     if (d == 0)
         return u == 0 ? 0.0 : u * u * (0.5 * log(fabs(u)) - 0.75);
+    /* minus the constant -d^2/4 ln d^2, which the second difference in
+     * rad_ln_parallel annihilates: this form has no d^2 ln d term, so lines
+     * far apart against the edges (d >> u) do not cancel catastrophically:
+     * H~(u) = u^2/4 ln(u^2 + d^2) - d^2/4 log1p(u^2/d^2) - 3u^2/4 + d u atan(u/d) */
     double u2 = u * u, d2 = d * d;
-    return 0.25 * (u2 - d2) * log(u2 + d2) - 0.75 * u2 + d * u * atan2(u, d);
+    return 0.25 * u2 * log(u2 + d2) - 0.25 * d2 * log1p(u2 / d2) - 0.75 * u2 +
+           d * u * atan2(u, d);
 }
 
 double rad_ln_parallel(double a1, double a2, double b1, double b2, double d)
@@ -110,7 +115,7 @@ static double ln_point_segment(rad_vec3 x, rad_vec3 q0, rad_vec3 e, double len)
 typedef rad_ff_edge ff_edge;
 
 /* K x K Gauss-Legendre product rule for I_pq. */
-static double ln_gauss(const ff_edge *p, const ff_edge *q, int k)
+static double ln_gauss(const ff_edge *p, const ff_edge *q, int k, double inv_s2)
 {
     const double *x = rad_gauss_nodes(k), *w = rad_gauss_weights(k);
     double sum = 0;
@@ -120,39 +125,54 @@ static double ln_gauss(const ff_edge *p, const ff_edge *q, int k)
         for (int b = 0; b < k; b++) {
             rad_vec3 qb = v3_add(q->p0, v3_scale(q->d, 0.5 * (1 + x[b])));
             rad_vec3 r = v3_sub(pa, qb);
-            inner += w[b] * log(v3_dot(r, r));
+            inner += w[b] * log(v3_dot(r, r) * inv_s2);
         }
         sum += w[a] * inner;
     }
-    /* 0.5 ln r^2 = ln r; (len/2)^2 maps [-1, 1]^2 to the edges. */
+    /* 0.5 ln (r^2/s2) = ln (r/s); (len/2)^2 maps [-1, 1]^2 to the edges. */
     return 0.125 * p->len * q->len * sum;
 }
 
 /* The nine-point rule with the logs grouped by weight: the 3-point weights
  * are 5/9, 8/9, 5/9, so the nine products take three values and
  * sum w_a w_b ln r_ab^2 = (25 ln prod(corner r^2) + 40 ln prod(edge r^2)
- * + 64 ln r_centre^2) / 81: three logs instead of nine.  Distances are
- * scaled by s2 (a typical r^2) so the products stay far from overflow. */
-static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
+ * + 64 ln r_centre^2) / 81: three logs instead of nine.  pa[0..2] and
+ * qb[0..2] are the edges' Gauss points (qb shifted by `shift`); distances
+ * are scaled by 1/s2, which keeps the products far from overflow and
+ * integrates ln(r/s) instead of ln r: S does not change, since every
+ * closed contour sums its edge vectors to zero (see the file header), as
+ * long as every edge pair of the sum uses the same s (ln_scaled below). */
+static double ln_gauss3_pts(const rad_vec3 *pa, const rad_vec3 *qb, rad_vec3 shift,
+                            double lp, double lq, double inv_s2)
 {
-    static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
     double r2[3][3];
-    for (int a = 0; a < 3; a++) {
-        double ta = 0.5 * (1 + (a - 1) * x3);
-        rad_vec3 pa = v3_add(p->p0, v3_scale(p->d, ta));
-        for (int b = 0; b < 3; b++) {
-            double tb = 0.5 * (1 + (b - 1) * x3);
-            rad_vec3 r = v3_sub(pa, v3_add(q->p0, v3_scale(q->d, tb)));
+    for (int b = 0; b < 3; b++) {
+        rad_vec3 q = v3_add(qb[b], shift);
+        for (int a = 0; a < 3; a++) {
+            rad_vec3 r = v3_sub(pa[a], q);
             r2[a][b] = v3_dot(r, r) * inv_s2;
         }
     }
     double corner = r2[0][0] * r2[0][2] * r2[2][0] * r2[2][2];
     double edge = r2[0][1] * r2[1][0] * r2[1][2] * r2[2][1];
     double sum = (25.0 * log(corner) + 40.0 * log(edge) + 64.0 * log(r2[1][1])) / 81.0;
-    /* sum approximates sum w_a w_b (ln r^2 - ln s2); add back the constant
-     * (the weights sum to 4). */
-    sum -= 4.0 * log(inv_s2);
-    return 0.125 * p->len * q->len * sum;
+    return 0.125 * lp * lq * sum;
+}
+
+/* The 3 Gauss points of an edge (A&S 25.4.29, x = 0, +-sqrt(3/5)). */
+void rad_ff_gauss3_points(const ff_edge *e, rad_vec3 out[3])
+{
+    static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
+    for (int a = 0; a < 3; a++)
+        out[a] = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + (a - 1) * x3)));
+}
+
+static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
+{
+    rad_vec3 pa[3], qb[3];
+    rad_ff_gauss3_points(p, pa);
+    rad_ff_gauss3_points(q, qb);
+    return ln_gauss3_pts(pa, qb, v3(0, 0, 0), p->len, q->len, inv_s2);
 }
 
 /* Parallel edges (e_p = +-e_q): the closed form, in p's coordinate.
@@ -222,18 +242,43 @@ static double gk15(const ff_edge *p, const ff_edge *q, double a, double b, doubl
     return rk * h;
 }
 
-static double ln_adaptive(const ff_edge *p, const ff_edge *q, double a, double b,
-                          double tol, int depth, double *err)
+/* Adaptive bisection until the Gauss-Kronrod estimate meets the panel's
+ * share of tol.  A panel also stops when its estimate is down to round-off
+ * (64 eps times the size of what it integrates: below that bisection only
+ * chases noise), and the whole integral stops splitting after
+ * ADAPT_MAX_PANELS panels; the estimate that is returned says what was
+ * reached, so a caller never waits forever and never gets a false claim. */
+#define ADAPT_MAX_PANELS 2000
+
+typedef struct adapt_state {
+    double err;
+    int panels;
+} adapt_state;
+
+static double ln_adaptive_panel(const ff_edge *p, const ff_edge *q, double a, double b,
+                                double tol, int depth, adapt_state *st)
 {
     double e;
     double r = gk15(p, q, a, b, &e);
-    if (e <= tol || depth >= 40 || b - a <= 1e-15 * p->len) {
-        *err += e;
+    double noise = 64 * DBL_EPSILON * (fabs(r) + (b - a) * q->len);
+    st->panels++;
+    if (e <= tol || e <= noise || depth >= 40 || st->panels >= ADAPT_MAX_PANELS ||
+        b - a <= 1e-15 * p->len) {
+        st->err += fmax(e, noise);
         return r;
     }
     double m = 0.5 * (a + b);
-    return ln_adaptive(p, q, a, m, 0.5 * tol, depth + 1, err) +
-           ln_adaptive(p, q, m, b, 0.5 * tol, depth + 1, err);
+    return ln_adaptive_panel(p, q, a, m, 0.5 * tol, depth + 1, st) +
+           ln_adaptive_panel(p, q, m, b, 0.5 * tol, depth + 1, st);
+}
+
+static double ln_adaptive(const ff_edge *p, const ff_edge *q, double a, double b,
+                          double tol, int depth, double *err)
+{
+    adapt_state st = {0, 0};
+    double r = ln_adaptive_panel(p, q, a, b, tol, depth, &st);
+    *err += st.err;
+    return r;
 }
 
 /* ---- one polygon pair ---------------------------------------------------- */
@@ -338,16 +383,19 @@ static int has_skew(const ff_edge *ea, int na, const ff_edge *eb, int nb)
  * plus a round-off bound (16 eps times the size of the terms summed). */
 static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
                           const rad_ff_options *opt, double scale2, double tol,
+                          const rad_vec3 *ga, const rad_vec3 *gb, rad_vec3 shift,
                           double *errest)
 {
     const int k = opt->quadrature;
-    const double inv_s2 = 1.0 / scale2;
+    const double inv_s2 = 1.0 / scale2, ln_s = 0.5 * log(scale2);
     const int classic = opt->accuracy == RAD_ACCURACY_CLASSIC;
     double s = 0, err = 0, mag = 0;
     int pairs = 0;
     for (int p = 0; p < na; p++)
         for (int q = 0; q < nb; q++)
             pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
+    /* Every I_pq is the integral of ln(r/s), s = sqrt(scale2): the same
+     * constant for all edge pairs, so S is unchanged and its terms small. */
     for (int p = 0; p < na; p++)
         for (int q = 0; q < nb; q++) {
             double dot = v3_dot(ea[p].e, eb[q].e), m = 0;
@@ -355,16 +403,20 @@ static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
                 continue; /* perpendicular: no contribution */
             rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
             int parallel = v3_dot(cr, cr) < 1e-26;
+            const double lplq = ea[p].len * eb[q].len;
             double I;
             if (parallel && (!classic || ln_colinear(&ea[p], &eb[q]))) {
-                I = ln_parallel_edges(&ea[p], &eb[q], &m);
+                I = ln_parallel_edges(&ea[p], &eb[q], &m) - lplq * ln_s;
+            } else if (classic && k == 3 && ga && gb) { /* precomputed points */
+                I = ln_gauss3_pts(ga + 3 * p, gb + 3 * q, shift, ea[p].len, eb[q].len, inv_s2);
             } else if (classic) {
-                I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2) : ln_gauss(&ea[p], &eb[q], k);
+                I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2) : ln_gauss(&ea[p], &eb[q], k, inv_s2);
             } else {
                 double e = 0;
                 I = ln_adaptive(&ea[p], &eb[q], 0, ea[p].len, tol / (pairs * fabs(dot)), 0, &e);
                 err += fabs(dot) * e;
-                m = 8 * fabs(I) + ea[p].len * eb[q].len * fabs(log(scale2));
+                m = 8 * fabs(I) + lplq * fabs(ln_s);
+                I -= lplq * ln_s;
             }
             mag += fabs(dot) * m;
             s += dot * I;
@@ -433,7 +485,9 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
     double s, e = 0;
     if (opt->accuracy == RAD_ACCURACY_CLASSIC) {
-        s = contour_sum(ea, mea, eb, meb, opt, scale2, 0, errest);
+        /* the precomputed Gauss points hold only for unclipped polygons */
+        s = contour_sum(ea, mea, eb, meb, opt, scale2, 0, nega ? NULL : a->gauss3,
+                        negb ? NULL : b->gauss3, v3_sub(b->centroid, a->centroid), errest);
     } else {
         /* target relative error of S: 1e-9 (reference), 1e-6 (default), with a
          * margin of 100 for the estimates */
@@ -457,11 +511,21 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
                 rad_ff_options c = *opt;
                 c.accuracy = RAD_ACCURACY_CLASSIC;
                 c.quadrature = 3;
-                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL));
+                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL, NULL, sep, NULL));
             }
-            s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, &e);
+            s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, NULL, NULL, sep, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
-                s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), &e);
+                s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), NULL, NULL, sep, &e);
+            /* still short of the tolerance (long thin pairs cancel in the
+             * contour): the area form, if it does better */
+            double sa, ea_;
+            if (e > rel * fabs(s) && area == 1 &&
+                rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &sa,
+                            &ea_) == 0 &&
+                ea_ < e) {
+                s = sa;
+                e = ea_;
+            }
         }
         if (s < 0) { /* a form factor is never negative: clamp within its error */
             e = fmax(e, -s);

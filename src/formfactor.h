@@ -21,6 +21,8 @@ typedef struct rad_ff_poly {
     int n;
     rad_ff_edge *edges;     /* its non-degenerate edges (n of room) */
     int nedges;
+    rad_vec3 *gauss3;       /* 3 Gauss points per edge, relative to the
+                               centroid (3 n of room), or NULL */
     rad_vec3 normal;        /* unit front normal */
     rad_vec3 centroid;
     double area;
@@ -48,6 +50,9 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
  * absolute error of S.  NaN only when scratch memory runs out. */
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest);
+
+/* The three Gauss-Legendre points of an edge (nine-point rule). */
+void rad_ff_gauss3_points(const rad_ff_edge *e, rad_vec3 out[3]);
 
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to

@@ -1,2 +1,1306 @@
-/* occlusion.c -- (being written) */
+/* occlusion.c -- hidden surfaces in the form factors: which element pairs
+ * can be blocked at all, and how much of each such pair is hidden.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * 1. Which pairs can be blocked (shaft culling; Haines & Wallace, "Shaft
+ *    culling for efficient ray-cast radiosity", Eurographics Workshop on
+ *    Rendering 1991).  The shaft of a pair is the convex hull H of the two
+ *    elements, each first clipped to the front of the other's plane (only
+ *    those parts exchange light).  For convex A and B, conv(A u B) is the
+ *    union of the segments from A to B (Rockafellar, Convex Analysis, 1970,
+ *    Thm. 3.3), so a surface can block the pair only if it meets the
+ *    interior of H.  A surface polygon P is ruled out by a separating
+ *    plane: either P's own plane with H on one closed side, or a face plane
+ *    of H with P on its outer closed side.  The face planes of the hull of
+ *    two convex polygons pass through an edge of one and a vertex of the
+ *    other; they are those candidates with every vertex on one side.  The
+ *    test is conservative: a pair it cannot clear goes on to step 3, which
+ *    then finds nothing hidden and keeps S unchanged.  Touching (within
+ *    1e-9 of the scene's size) counts as separated: what a surface hides
+ *    through a contact of zero thickness has zero measure.
+ *    Blockers are the scene's surfaces, not elements: a planar surface
+ *    cannot block a segment that starts on it, so the surfaces of i and j
+ *    are left out, and the rest is tested whole.  The test runs twice:
+ *    once per pair of surfaces at setup (a CGAL AABB tree, visibility.cc,
+ *    gives the surfaces that meet the bounding box of the surfaces' shaft),
+ *    and per pair of elements only against that short list.  When no pair
+ *    of surfaces has a candidate (a convex room seen from inside), the
+ *    scene needs no visibility work and rad_occ_create says so.
+ *
+ * 2. Fully hidden by one blocker: if P's plane strictly separates the two
+ *    elements and the 16 (or so) segments between their vertices all pass
+ *    through P's interior, every segment does (the crossing points of the
+ *    segments from A to B form the convex hull of those of the vertex
+ *    pairs), and F = 0.
+ *
+ * 3. The hidden part.  With A_o the outer and A_t the inner element,
+ *        A_o F_ot = A_t F_to = integral over x in A_o of F(x -> visible part of A_t),
+ *    and the integrand is computed exactly: the part of A_t hidden from x
+ *    by a blocker polygon P is A_t intersected with the cone from x over P
+ *    (P clipped to the front of A_t's plane; the cone is bounded by the
+ *    planes through x and each edge of P, the shadow volume of Crow 1977).
+ *    Subtracting a convex cone from a convex piece leaves convex pieces
+ *    (one cut per cone plane; Sutherland & Hodgman 1974 clipping), so the
+ *    visible part stays a list of convex pieces, and each hidden piece
+ *    adds its point-to-polygon form factor (Lambert 1760; as written in
+ *    Baum, Rushmeier & Winget, SIGGRAPH 1989, eq. 6):
+ *        F(x -> Q) = -1/(2 pi) sum_k gamma_k n_x . (R_k x R_k+1)/|R_k x R_k+1|,
+ *    R_k = q_k - x, gamma_k the angle between R_k and R_k+1 (the sign is
+ *    for Q counter-clockwise about a normal that faces x).  So
+ *        S_occluded = S - 2 pi * integral over A_o of hidden(x) dx,
+ *    where S is the unoccluded contour sum of the kernel: the quadrature
+ *    error only touches the hidden part, never the (possibly singular)
+ *    unoccluded one.  hidden(x) is continuous; its derivative jumps where
+ *    the penumbra begins and ends.  It is integrated over a fan of
+ *    triangles of A_o by the 3-point degree-2 rule (Strang & Fix 1973) on
+ *    each triangle and on its four midpoint children; |parent - children|
+ *    estimates the error, and the triangle with the largest estimate is
+ *    split until the sum of estimates is below the pair's tolerance
+ *    (global adaptive subdivision as in QUADPACK's QAG, Piessens et al.
+ *    1983).  The outer element is the one that looks smaller from the
+ *    nearest blocker (size / distance): from there the blocker's shadow
+ *    moves least over the inner element, so hidden(x) is smoothest.
+ *    If no evaluation point sees anything hidden, S is kept as it is (bit
+ *    for bit); if none sees anything visible, F = 0.
+ *
+ * Accuracy modes: classic evaluates one level (two levels of points on
+ * each fan triangle) and stops; default refines until the estimated error
+ * of A_o F_ot is below 3e-4 of its unoccluded value (so a row of F gains
+ * at most ~3e-4 times the sum of its partly hidden unoccluded entries);
+ * reference until 1e-7.  Each unordered pair is done once: the result is
+ * the symmetric A_i F_ij, and reciprocity stays exact.
+ */
 #include <config.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "formfactor.h"
+#include "occlusion.h"
+#include "radiosity.h"
+#include "status.h"
+#include "vec.h"
+#include "visibility.h"
+
+#define RAD_PI 3.14159265358979323846
+
+/* Tolerances, relative to the scene's bounding-box diagonal L. */
+#define OCC_SNAP 1e-11      /* a point this close to a plane is on it */
+#define OCC_TOUCH 1e-9      /* a blocker this far into a shaft only touches it */
+#define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
+                               are dropped (round-off slivers of the cuts) */
+
+/* Per-pair error targets (relative to the unoccluded A_i F_ij) and the
+ * largest number of triangles the adaptive rule may use. */
+#define OCC_TOL_DEFAULT 3e-4
+#define OCC_TOL_REFERENCE 1e-7
+#define OCC_LEAVES_DEFAULT 256
+#define OCC_LEAVES_REFERENCE 16384
+
+struct rad_occ {
+    rad_occ_mode mode;
+    rad_accuracy accuracy;
+    int nsurf;
+    rad_vec3 *sv;               /* surface polygons: sv[sfirst[s] .. sfirst[s+1]) */
+    int *sfirst;
+    rad_vec3 *snormal, *slo, *shi;
+    const int *esurf;           /* surface of each element (points into esurf_own) */
+    int *esurf_own;
+    size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
+    int *cand;
+    double snap, touch;         /* absolute tolerances */
+};
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* Index of the unordered surface pair a < b among ns(ns-1)/2. */
+static size_t pair_index(int a, int b, int ns)
+{
+    return (size_t)a * (size_t)(2 * ns - a - 1) / 2 + (size_t)(b - a - 1);
+}
+
+/* ---- growable buffers ------------------------------------------------------ */
+
+/* One triangle of the adaptive rule: its own 3-point value and those of its
+ * four midpoint children. */
+typedef struct tri_node {
+    rad_vec3 p[3];
+    double area;
+    double q;                   /* the rule on the triangle */
+    double qc[4];               /* the rule on each child */
+    double err;                 /* |q - sum qc| */
+} tri_node;
+
+/* The capacity to grow to for `need` elements. */
+static int new_cap(int cap, int need)
+{
+    int c = cap > 16 ? cap : 16;
+    while (c < need)
+        c *= 2;
+    return c;
+}
+
+/* Make room for `need` elements in *p (capacity *cap); 0, or -1 when
+ * memory ran out (then *p is untouched).  One per element type, so that
+ * no pointer is accessed through a pointer of another type. */
+static int grow_v3(rad_vec3 **p, int *cap, int need)
+{
+    if (need <= *cap)
+        return 0;
+    int c = new_cap(*cap, need);
+    rad_vec3 *q = realloc(*p, sizeof *q * (size_t)c);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+static int grow_d(double **p, int *cap, int need)
+{
+    if (need <= *cap)
+        return 0;
+    int c = new_cap(*cap, need);
+    double *q = realloc(*p, sizeof *q * (size_t)c);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+static int grow_node(tri_node **p, int *cap, int need)
+{
+    if (need <= *cap)
+        return 0;
+    int c = new_cap(*cap, need);
+    tri_node *q = realloc(*p, sizeof *q * (size_t)c);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+static int grow_i(int **p, int *cap, int need)
+{
+    if (need <= *cap)
+        return 0;
+    int c = new_cap(*cap, need);
+    int *q = realloc(*p, sizeof *q * (size_t)c);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+/* A list of polygons sharing one vertex array. */
+typedef struct polyset {
+    rad_vec3 *v;
+    int nv, capv;
+    int *first;                 /* np + 1 entries */
+    int np, capp;
+} polyset;
+
+static void ps_clear(polyset *s)
+{
+    s->nv = s->np = 0;
+}
+
+/* Room for one more polygon of up to n vertices at s->v + s->nv. */
+static int ps_reserve(polyset *s, int n)
+{
+    if (grow_v3(&s->v, &s->capv, s->nv + n) ||
+        grow_i(&s->first, &s->capp, s->np + 2))
+        return -1;
+    s->first[s->np] = s->nv;
+    return 0;
+}
+
+/* Close the polygon written at s->v + s->nv with n vertices. */
+static void ps_commit(polyset *s, int n)
+{
+    s->nv += n;
+    s->np++;
+    s->first[s->np] = s->nv;
+}
+
+static int ps_push(polyset *s, const rad_vec3 *p, int n)
+{
+    if (ps_reserve(s, n))
+        return -1;
+    memcpy(s->v + s->nv, p, sizeof *p * (size_t)n);
+    ps_commit(s, n);
+    return 0;
+}
+
+static void ps_free(polyset *s)
+{
+    free(s->v);
+    free(s->first);
+    memset(s, 0, sizeof *s);
+}
+
+/* Per-thread space. */
+typedef struct occ_space {
+    polyset elem;               /* the two clipped elements: 0 = i, 1 = j */
+    polyset blk;                /* the pair's blockers, whole */
+    polyset blkc;               /* the same, clipped to the front of the inner plane */
+    int *bid;                   /* surface of each blocker of the pair */
+    int capb;
+    rad_vec3 *bn, *bc;          /* clipped blockers: normal, centroid */
+    int capbn, capbc;
+    polyset cur, next;          /* visible pieces before / after a blocker */
+    rad_vec3 *rem, *tmp;        /* the piece being cut, and the cut's output */
+    int caprem, captmp;
+    double *d;                  /* signed distances */
+    int capd;
+    rad_vec3 *cone, *conep;     /* cone planes: inward normal, point */
+    int capcone, capconep;
+    rad_vec3 *sn, *sa;          /* support planes of all blockers: normal, point */
+    int capsn, capsa;
+    int *sfirst;                /* blocker b's support planes: [sfirst[b], sfirst[b+1]) */
+    int capsf;
+    polyset da, db;             /* the support domain while it is built */
+    polyset dom;                /* the support domain: disjoint convex pieces */
+    rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
+    int caphn, capha;
+    tri_node *node;
+    int capnode;
+    int any_hidden, any_visible;/* over the pair's evaluations */
+    double evals;
+} occ_space;
+
+/* ---- small geometry -------------------------------------------------------- */
+
+static double poly_area(const rad_vec3 *p, int n)
+{
+    return 0.5 * v3_norm(v3_newell(p, n));
+}
+
+static rad_vec3 poly_mean(const rad_vec3 *p, int n)
+{
+    rad_vec3 c = v3(0, 0, 0);
+    for (int k = 0; k < n; k++)
+        c = v3_add(c, p[k]);
+    return v3_scale(c, 1.0 / n);
+}
+
+/* Signed distances d[k] = nrm . (p[k] - a), snapped to 0 within tol; the
+ * smallest and largest go to *lo, *hi. */
+static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double tol,
+                      double *d, double *lo, double *hi)
+{
+    double mn = HUGE_VAL, mx = -HUGE_VAL;
+    for (int k = 0; k < n; k++) {
+        double s = v3_dot(nrm, v3_sub(p[k], a));
+        if (fabs(s) <= tol)
+            s = 0;
+        d[k] = s;
+        mn = fmin(mn, s);
+        mx = fmax(mx, s);
+    }
+    *lo = mn;
+    *hi = mx;
+}
+
+/* The part of p where sign * d >= 0 (Sutherland & Hodgman 1974), into out
+ * (room for n + 1); returns its vertex count. */
+static int clip_side(const rad_vec3 *p, const double *d, int n, double sign, rad_vec3 *out)
+{
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        int k1 = k + 1 < n ? k + 1 : 0;
+        double a = sign * d[k], b = sign * d[k1];
+        if (a >= 0)
+            out[m++] = p[k];
+        if ((a > 0 && b < 0) || (a < 0 && b > 0))
+            out[m++] = v3_lerp(p[k], p[k1], a / (a - b));
+    }
+    return m;
+}
+
+/* Clip p to the front (nrm . (q - a) >= 0) of a plane into set s; returns
+ * the vertex count kept (0 when nothing or too little is left), -1 when
+ * memory ran out. */
+static int clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_vec3 nrm,
+                     rad_vec3 a, double tol)
+{
+    double lo, hi;
+    if (grow_d(&sp->d, &sp->capd, n) || ps_reserve(s, n + 1))
+        return -1;
+    distances(p, n, nrm, a, tol, sp->d, &lo, &hi);
+    if (hi <= 0)
+        return 0;
+    int m = clip_side(p, sp->d, n, 1.0, s->v + s->nv);
+    if (m < 3)
+        return 0;
+    ps_commit(s, m);
+    return m;
+}
+
+/* Distance from point c to convex polygon p (n vertices, unit normal nrm). */
+static double point_polygon_distance(rad_vec3 c, const rad_vec3 *p, int n, rad_vec3 nrm)
+{
+    double h = v3_dot(nrm, v3_sub(c, p[0]));
+    rad_vec3 f = v3_sub(c, v3_scale(nrm, h));
+    int inside = 1;
+    double best = HUGE_VAL;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 a = p[k], b = p[(k + 1) % n], e = v3_sub(b, a);
+        if (v3_dot(v3_cross(e, v3_sub(f, a)), nrm) < 0)
+            inside = 0;
+        double ee = v3_dot(e, e);
+        double t = ee > 0 ? fmin(1.0, fmax(0.0, v3_dot(v3_sub(c, a), e) / ee)) : 0.0;
+        best = fmin(best, v3_norm(v3_sub(c, v3_add(a, v3_scale(e, t)))));
+    }
+    return inside ? fabs(h) : best;
+}
+
+/* Point-to-polygon form factor from a differential area at x with unit
+ * normal nrm to polygon q (Lambert 1760; Baum et al. 1989, eq. 6). */
+static double ff_point_polygon(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
+{
+    double sum = 0;
+    rad_vec3 r0 = v3_sub(q[m - 1], x);
+    for (int k = 0; k < m; k++) {
+        rad_vec3 r1 = v3_sub(q[k], x);
+        rad_vec3 c = v3_cross(r0, r1);
+        double cn = v3_norm(c);
+        if (cn > 0)
+            sum += atan2(cn, v3_dot(r0, r1)) * v3_dot(nrm, c) / cn;
+        r0 = r1;
+    }
+    return -sum / (2 * RAD_PI);
+}
+
+/* ---- the shaft ------------------------------------------------------------- */
+
+/* Planes through an edge of p and a vertex of q with all of p and q on one
+ * closed side: face planes of conv(p u q), appended with their outward
+ * normals to sp->hn / sp->ha starting at *nh. */
+static int side_planes(occ_space *sp, const rad_vec3 *p, int np, const rad_vec3 *q, int nq,
+                       const rad_vec3 *all, int nall, double tol, int *nh)
+{
+    for (int k = 0; k < np; k++) {
+        rad_vec3 a = p[k], e = v3_sub(p[(k + 1) % np], a);
+        for (int l = 0; l < nq; l++) {
+            rad_vec3 w = v3_sub(q[l], a), nrm = v3_cross(e, w);
+            double len = v3_norm(nrm);
+            if (!(len > 1e-12 * v3_norm(e) * v3_norm(w)))
+                continue;
+            nrm = v3_scale(nrm, 1.0 / len);
+            double lo, hi;
+            if (grow_d(&sp->d, &sp->capd, nall))
+                return -1;
+            distances(all, nall, nrm, a, tol, sp->d, &lo, &hi);
+            if (hi > 0 && lo < 0)
+                continue;
+            if (grow_v3(&sp->hn, &sp->caphn, *nh + 1) ||
+                grow_v3(&sp->ha, &sp->capha, *nh + 1))
+                return -1;
+            sp->hn[*nh] = hi > 0 ? v3_scale(nrm, -1.0) : nrm;
+            sp->ha[*nh] = a;
+            ++*nh;
+        }
+    }
+    return 0;
+}
+
+/* The face planes of the shaft conv(p u q): both polygons' own planes
+ * (outward = away from the other polygon) and the side planes.  The
+ * points of p and q follow each other in `all`.  Returns the count or -1. */
+static int hull_planes(occ_space *sp, const rad_vec3 *all, int np, rad_vec3 pn, int nq,
+                       rad_vec3 qn, double tol)
+{
+    const rad_vec3 *p = all, *q = all + np;
+    int nh = 2;
+    if (grow_v3(&sp->hn, &sp->caphn, 2) ||
+        grow_v3(&sp->ha, &sp->capha, 2))
+        return -1;
+    sp->hn[0] = v3_scale(pn, -1.0);
+    sp->ha[0] = p[0];
+    sp->hn[1] = v3_scale(qn, -1.0);
+    sp->ha[1] = q[0];
+    if (side_planes(sp, p, np, q, nq, all, np + nq, tol, &nh) ||
+        side_planes(sp, q, nq, p, np, all, np + nq, tol, &nh))
+        return -1;
+    return nh;
+}
+
+/* Is blocker b (nb vertices, unit normal bn) clear of the shaft with
+ * points `all` and face planes sp->hn/ha (nh of them)? */
+static int clear_of_shaft(const occ_space *sp, int nh, const rad_vec3 *all, int nall,
+                          const rad_vec3 *b, int nb, rad_vec3 bn, double tol)
+{
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int k = 0; k < nall; k++) {
+        double s = v3_dot(bn, v3_sub(all[k], b[0]));
+        lo = fmin(lo, s);
+        hi = fmax(hi, s);
+    }
+    if (lo >= -tol || hi <= tol)
+        return 1; /* the shaft lies on one side of the blocker's plane */
+    for (int h = 0; h < nh; h++) {
+        int out = 1;
+        for (int k = 0; k < nb && out; k++)
+            out = v3_dot(sp->hn[h], v3_sub(b[k], sp->ha[h])) >= -tol;
+        if (out)
+            return 1; /* the blocker lies outside a face of the shaft */
+    }
+    return 0;
+}
+
+static void bounds(const rad_vec3 *p, int n, rad_vec3 *lo, rad_vec3 *hi)
+{
+    *lo = *hi = p[0];
+    for (int k = 1; k < n; k++) {
+        *lo = v3(fmin(lo->x, p[k].x), fmin(lo->y, p[k].y), fmin(lo->z, p[k].z));
+        *hi = v3(fmax(hi->x, p[k].x), fmax(hi->y, p[k].y), fmax(hi->z, p[k].z));
+    }
+}
+
+static int boxes_meet(rad_vec3 alo, rad_vec3 ahi, rad_vec3 blo, rad_vec3 bhi, double tol)
+{
+    return alo.x <= bhi.x + tol && blo.x <= ahi.x + tol && alo.y <= bhi.y + tol &&
+           blo.y <= ahi.y + tol && alo.z <= bhi.z + tol && blo.z <= ahi.z + tol;
+}
+
+/* Clip p and q (unit normals pn, qn) each to the front of the other's plane
+ * into sp->elem (polygon 0 from p, 1 from q).  Returns 1 if both keep an
+ * area, 0 if not, -1 when memory ran out. */
+static int clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const rad_vec3 *q,
+                     int nq, rad_vec3 qn, double tol)
+{
+    ps_clear(&sp->elem);
+    int a = clip_into(sp, &sp->elem, p, np, qn, q[0], tol);
+    if (a <= 0)
+        return a;
+    int b = clip_into(sp, &sp->elem, q, nq, pn, p[0], tol);
+    return b < 0 ? -1 : b > 0;
+}
+
+/* ---- setup: surfaces, tree, candidate blockers per surface pair ------------ */
+
+/* The outline of surface s: a quad's grid corners, or its one element. */
+static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
+{
+    int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
+    if (ne == 1) {
+        int n = m->elements[e0].nverts;
+        for (int k = 0; k < n; k++)
+            out[k] = rad_mesh_vertex(m, e0, k);
+        return n;
+    }
+    const int N = m->surface_n[s], M = m->surface_m[s], v0 = m->surface_vfirst[s];
+    out[0] = m->vertices[v0];
+    out[1] = m->vertices[v0 + N];
+    out[2] = m->vertices[v0 + M * (N + 1) + N];
+    out[3] = m->vertices[v0 + M * (N + 1)];
+    return 4;
+}
+
+static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
+{
+    const int ns = m->nsurfaces;
+    int total = 0;
+    for (int s = 0; s < ns; s++) {
+        int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
+        total += ne == 1 ? m->elements[e0].nverts : ne > 1 ? 4 : 0;
+    }
+    o->nsurf = ns;
+    o->sv = malloc(sizeof *o->sv * (size_t)(total > 0 ? total : 1));
+    o->sfirst = malloc(sizeof *o->sfirst * (size_t)(ns + 1));
+    o->snormal = malloc(sizeof *o->snormal * (size_t)(ns > 0 ? ns : 1));
+    o->slo = malloc(sizeof *o->slo * (size_t)(ns > 0 ? ns : 1));
+    o->shi = malloc(sizeof *o->shi * (size_t)(ns > 0 ? ns : 1));
+    o->esurf_own = malloc(sizeof *o->esurf_own * (size_t)m->nelements);
+    if (!o->sv || !o->sfirst || !o->snormal || !o->slo || !o->shi || !o->esurf_own)
+        return RAD_ERR_NOMEM;
+    int at = 0;
+    for (int s = 0; s < ns; s++) {
+        int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
+        o->sfirst[s] = at;
+        if (ne > 0) {
+            int n = surface_outline(m, s, o->sv + at);
+            o->snormal[s] = m->elements[e0].normal;
+            bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
+            at += n;
+        } else {
+            o->snormal[s] = o->slo[s] = o->shi[s] = v3(0, 0, 0);
+        }
+    }
+    o->sfirst[ns] = at;
+    for (int e = 0; e < m->nelements; e++)
+        o->esurf_own[e] = m->elements[e].surface;
+    o->esurf = o->esurf_own;
+    return RAD_OK;
+}
+
+/* Append to the candidate list the surfaces that may block surfaces a and
+ * b.  Returns the number appended, or -1. */
+static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp, int a, int b,
+                                   int *owners, int **cand, int *ncand, int *capcand)
+{
+    const rad_vec3 *pa = o->sv + o->sfirst[a], *pb = o->sv + o->sfirst[b];
+    int na = o->sfirst[a + 1] - o->sfirst[a], nb = o->sfirst[b + 1] - o->sfirst[b];
+    if (na < 3 || nb < 3)
+        return 0;
+    int r = clip_pair(sp, pa, na, o->snormal[a], pb, nb, o->snormal[b], o->snap);
+    if (r <= 0)
+        return r; /* they see nothing of each other */
+    const rad_vec3 *all = sp->elem.v;
+    int nca = sp->elem.first[1], nall = sp->elem.nv;
+    int nc;
+    if (o->mode == RAD_OCC_ALL) {
+        nc = 0;
+        for (int c = 0; c < o->nsurf; c++)
+            owners[nc++] = c;
+    } else {
+        rad_vec3 lo, hi, pad = v3(o->touch, o->touch, o->touch);
+        bounds(all, nall, &lo, &hi);
+        nc = rad_vis_box_polygons(vis, v3_sub(lo, pad), v3_add(hi, pad), owners);
+        if (nc < 0)
+            return -1;
+    }
+    int nh = o->mode == RAD_OCC_ALL
+                 ? 0
+                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], o->snap);
+    if (nh < 0)
+        return -1;
+    int added = 0;
+    for (int k = 0; k < nc; k++) {
+        int c = owners[k], n = o->sfirst[c + 1] - o->sfirst[c];
+        if (c == a || c == b || n < 3)
+            continue;
+        if (o->mode != RAD_OCC_ALL &&
+            clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c], o->touch))
+            continue;
+        if (grow_i(cand, capcand, *ncand + 1))
+            return -1;
+        (*cand)[(*ncand)++] = c;
+        added++;
+    }
+    return added;
+}
+
+static void space_free(occ_space *sp);
+
+static rad_status candidates(rad_occ *o, const rad_vis *vis, double *blockable_pairs)
+{
+    const int ns = o->nsurf;
+    size_t npairs = ns > 1 ? (size_t)ns * (size_t)(ns - 1) / 2 : 0;
+    int *owners = malloc(sizeof *owners * (size_t)(ns > 0 ? ns : 1));
+    occ_space sp;
+    int ncand = 0, capcand = 0;
+    rad_status st = RAD_OK;
+    memset(&sp, 0, sizeof sp);
+    o->cand_off = malloc(sizeof *o->cand_off * (npairs + 1));
+    o->cand = NULL;
+    if (!owners || !o->cand_off)
+        st = RAD_ERR_NOMEM;
+    *blockable_pairs = 0;
+    for (int a = 0; a < ns && st == RAD_OK; a++)
+        for (int b = a + 1; b < ns && st == RAD_OK; b++) {
+            size_t p = pair_index(a, b, ns);
+            o->cand_off[p] = (size_t)ncand;
+            int r = surface_pair_candidates(o, vis, &sp, a, b, owners, &o->cand, &ncand,
+                                            &capcand);
+            if (r < 0)
+                st = RAD_ERR_NOMEM;
+            *blockable_pairs += r > 0;
+        }
+    if (st == RAD_OK)
+        o->cand_off[npairs] = (size_t)ncand;
+    free(owners);
+    space_free(&sp);
+    return st;
+}
+
+void rad_occ_free(rad_occ *o)
+{
+    if (!o)
+        return;
+    free(o->sv);
+    free(o->sfirst);
+    free(o->snormal);
+    free(o->slo);
+    free(o->shi);
+    free(o->esurf_own);
+    free(o->cand_off);
+    free(o->cand);
+    free(o);
+}
+
+static double scene_size(const rad_mesh *m)
+{
+    if (m->nvertices < 1)
+        return 1.0;
+    rad_vec3 lo, hi;
+    bounds(m->vertices, m->nvertices, &lo, &hi);
+    double L = v3_norm(v3_sub(hi, lo));
+    return L > 0 ? L : 1.0;
+}
+
+rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
+                          rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err)
+{
+    double t0 = now(), blockable = 0;
+    rad_occ_stats st;
+    rad_vis *vis = NULL;
+    memset(&st, 0, sizeof st);
+    *out = NULL;
+    if (mode == RAD_OCC_OFF || m->nelements < 2 || m->nsurfaces < 3) {
+        if (stats)
+            *stats = st;
+        return RAD_OK;
+    }
+    rad_occ *o = calloc(1, sizeof *o);
+    if (!o)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
+    o->mode = mode;
+    o->accuracy = accuracy;
+    double L = scene_size(m);
+    o->snap = OCC_SNAP * L;
+    o->touch = OCC_TOUCH * L;
+    rad_status s = load_surfaces(o, m);
+    if (s == RAD_OK)
+        s = rad_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
+    else
+        rad_fail(err, s, "out of memory for the visibility data");
+    if (s == RAD_OK) {
+        st.surfaces = o->nsurf;
+        st.triangles = rad_vis_triangles(vis);
+        s = candidates(o, vis, &blockable);
+        if (s != RAD_OK)
+            rad_fail(err, s, "out of memory for the visibility data");
+    }
+    rad_vis_free(vis);
+    if (s != RAD_OK || blockable == 0) {
+        rad_occ_free(o);
+        o = NULL;
+    }
+    st.needed = o != NULL;
+    st.seconds = now() - t0;
+    if (stats)
+        *stats = st;
+    *out = o;
+    return s;
+}
+
+/* ---- per-thread space -------------------------------------------------------- */
+
+static void space_free(occ_space *sp)
+{
+    ps_free(&sp->elem);
+    ps_free(&sp->blk);
+    ps_free(&sp->blkc);
+    ps_free(&sp->cur);
+    ps_free(&sp->next);
+    free(sp->bid);
+    free(sp->bn);
+    free(sp->bc);
+    free(sp->rem);
+    free(sp->tmp);
+    free(sp->d);
+    free(sp->cone);
+    free(sp->conep);
+    free(sp->sn);
+    free(sp->sa);
+    free(sp->sfirst);
+    ps_free(&sp->da);
+    ps_free(&sp->db);
+    ps_free(&sp->dom);
+    free(sp->hn);
+    free(sp->ha);
+    free(sp->node);
+    memset(sp, 0, sizeof *sp);
+}
+
+void rad_occ_work_init(rad_occ_work *w, const rad_occ *occ)
+{
+    memset(w, 0, sizeof *w);
+    w->occ = occ;
+}
+
+void rad_occ_work_free(rad_occ_work *w)
+{
+    if (w->space) {
+        space_free(w->space);
+        free(w->space);
+    }
+    w->space = NULL;
+}
+
+void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
+{
+    into->needed |= from->needed;
+    into->pairs_tested += from->pairs_tested;
+    into->pairs_blockable += from->pairs_blockable;
+    into->pairs_blocked += from->pairs_blocked;
+    into->pairs_partial += from->pairs_partial;
+    into->evaluations += from->evaluations;
+    into->max_errest = fmax(into->max_errest, from->max_errest);
+    into->seconds += from->seconds;
+}
+
+/* ---- the hidden part seen from one point ------------------------------------ */
+
+/* What an evaluation needs: the outer element's normal, the inner element
+ * (clipped) and the blockers (clipped to the front of the inner plane). */
+typedef struct pair_ctx {
+    rad_vec3 nx;                /* outer normal */
+    const rad_vec3 *t;          /* inner element */
+    int nt;
+    int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
+    double snap, sliver;        /* distance and area tolerances */
+} pair_ctx;
+
+/* Cut the polygon in sp->rem (*n vertices) by the planes through pt[k]
+ * with inward unit normals nrm[k]: the parts outside some plane go to
+ * `out` (slivers below `sliver` dropped); returns 1 when a part inside all
+ * planes is left in sp->rem (*n vertices), 0 when not, -1 on memory. */
+static int cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int np, double snap,
+                     double sliver, polyset *out, int *n)
+{
+    for (int k = 0; k < np; k++) {
+        double lo, hi;
+        if (grow_d(&sp->d, &sp->capd, *n) || grow_v3(&sp->tmp, &sp->captmp, *n + 1))
+            return -1;
+        distances(sp->rem, *n, nrm[k], pt[k], snap, sp->d, &lo, &hi);
+        if (hi <= 0)
+            return ps_push(out, sp->rem, *n) ? -1 : 0; /* wholly outside */
+        if (lo >= 0)
+            continue; /* wholly inside this plane */
+        int m = clip_side(sp->rem, sp->d, *n, -1.0, sp->tmp);
+        if (m >= 3 && poly_area(sp->tmp, m) > sliver && ps_push(out, sp->tmp, m))
+            return -1;
+        m = clip_side(sp->rem, sp->d, *n, 1.0, sp->tmp);
+        if (m < 3 || !(poly_area(sp->tmp, m) > sliver))
+            return 0;
+        rad_vec3 *t = sp->rem;
+        int tc = sp->caprem;
+        sp->rem = sp->tmp;
+        sp->caprem = sp->captmp;
+        sp->tmp = t;
+        sp->captmp = tc;
+        *n = m;
+    }
+    return 1;
+}
+
+/* Copy polygon k of set s into sp->rem; returns its vertex count or -1. */
+static int load_rem(occ_space *sp, const polyset *s, int k)
+{
+    int n = s->first[k + 1] - s->first[k];
+    if (grow_v3(&sp->rem, &sp->caprem, n))
+        return -1;
+    memcpy(sp->rem, s->v + s->first[k], sizeof *sp->rem * (size_t)n);
+    return n;
+}
+
+/* The cone planes through x and each edge of blocker b, unit normals
+ * pointing inside; returns their count (0 when x is on b's plane), -1. */
+static int cone_planes(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int n = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    if (fabs(v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]))) <= c->snap)
+        return 0;
+    if (grow_v3(&sp->cone, &sp->capcone, n) || grow_v3(&sp->conep, &sp->capconep, n))
+        return -1;
+    int m = 0;
+    rad_vec3 inner = v3_sub(sp->bc[b], x);
+    for (int k = 0; k < n; k++) {
+        rad_vec3 nrm = v3_cross(v3_sub(p[k], x), v3_sub(p[(k + 1) % n], x));
+        double len = v3_norm(nrm);
+        if (!(len > 0))
+            continue;
+        nrm = v3_scale(nrm, 1.0 / len);
+        sp->conep[m] = x;
+        sp->cone[m++] = v3_dot(nrm, inner) < 0 ? v3_scale(nrm, -1.0) : nrm;
+    }
+    return m;
+}
+
+/* hidden(x): the form factor from x to the part of the inner element that
+ * the blockers hide.  Sets sp->any_hidden / any_visible. */
+static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
+{
+    double h = 0;
+    ps_clear(&sp->cur);
+    if (ps_push(&sp->cur, c->t, c->nt))
+        return -1;
+    sp->evals++;
+    for (int b = 0; b < c->nb && sp->cur.np > 0; b++) {
+        int ncone = cone_planes(sp, c, b, x);
+        if (ncone < 0)
+            return -1;
+        if (ncone < 3)
+            continue;
+        ps_clear(&sp->next);
+        for (int k = 0; k < sp->cur.np; k++) {
+            int n = load_rem(sp, &sp->cur, k);
+            int r = n < 0 ? -1
+                          : cut_piece(sp, sp->cone, sp->conep, ncone, c->snap, c->sliver,
+                                      &sp->next, &n);
+            if (r < 0)
+                return -1;
+            if (r > 0) {
+                h += ff_point_polygon(x, c->nx, sp->rem, n);
+                sp->any_hidden = 1;
+            }
+        }
+        polyset t = sp->cur;
+        sp->cur = sp->next;
+        sp->next = t;
+    }
+    if (sp->cur.np > 0)
+        sp->any_visible = 1;
+    *out = h;
+    return 0;
+}
+
+/* ---- where anything can be hidden: the support of hidden(x) ------------------ */
+
+/* The penumbra region of a convex blocker P lit by a convex polygon T, the
+ * points z with a segment from z to T through P, is
+ *     W = union over s >= 1 of (s P - (s - 1) T),
+ * a union of Minkowski sums that is convex (the midpoint of points of
+ * W(s1) and W(s2) lies in W((s1 + s2)/2)).  Its support function gives
+ * its faces: the planes that touch P and separate it from T (through an
+ * edge of one and a vertex of the other, or P's own plane), with W on P's
+ * side.  hidden(x) vanishes outside the union of the blockers' W, so the
+ * integral runs over (the outer element) n (that union) only: no
+ * evaluation point is wasted where nothing is hidden, and a thin penumbra
+ * is never missed between points. */
+
+/* Append plane (nrm, a) with the region on the side where nrm . (q - a)
+ * >= 0 if it separates p (that side) from t (the other side). */
+static int add_if_separating(occ_space *sp, rad_vec3 nrm, rad_vec3 a, const rad_vec3 *p, int np,
+                             const rad_vec3 *t, int nt, double tol, int *ns)
+{
+    double plo, phi, tlo, thi;
+    if (grow_d(&sp->d, &sp->capd, np > nt ? np : nt))
+        return -1;
+    distances(p, np, nrm, a, tol, sp->d, &plo, &phi);
+    distances(t, nt, nrm, a, tol, sp->d, &tlo, &thi);
+    int up = plo >= 0 && thi <= 0, down = phi <= 0 && tlo >= 0;
+    if (!(up || down) || (phi - plo == 0 && thi - tlo == 0 && phi == thi))
+        return 0;
+    if (grow_v3(&sp->sn, &sp->capsn, *ns + 1) || grow_v3(&sp->sa, &sp->capsa, *ns + 1))
+        return -1;
+    sp->sn[*ns] = up ? nrm : v3_scale(nrm, -1.0);
+    sp->sa[*ns] = a;
+    ++*ns;
+    return 0;
+}
+
+/* Planes through an edge of e and a vertex of f that separate p from t. */
+static int edge_vertex_planes(occ_space *sp, const rad_vec3 *e, int ne, const rad_vec3 *f, int nf,
+                              const rad_vec3 *p, int np, const rad_vec3 *t, int nt, double tol,
+                              int *ns)
+{
+    for (int k = 0; k < ne; k++) {
+        rad_vec3 a = e[k], ed = v3_sub(e[(k + 1) % ne], a);
+        for (int l = 0; l < nf; l++) {
+            rad_vec3 w = v3_sub(f[l], a), nrm = v3_cross(ed, w);
+            double len = v3_norm(nrm);
+            if (!(len > 1e-12 * v3_norm(ed) * v3_norm(w)))
+                continue;
+            if (add_if_separating(sp, v3_scale(nrm, 1.0 / len), a, p, np, t, nt, tol, ns))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+/* The faces of W for blocker b, appended to sp->sn / sp->sa. */
+static int support_planes(occ_space *sp, const pair_ctx *c, int b, int *ns)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    if (add_if_separating(sp, sp->bn[b], p[0], p, np, c->t, c->nt, c->snap, ns) ||
+        add_if_separating(sp, v3_scale(sp->bn[b], -1.0), p[0], p, np, c->t, c->nt, c->snap,
+                          ns) ||
+        edge_vertex_planes(sp, p, np, c->t, c->nt, p, np, c->t, c->nt, c->snap, ns) ||
+        edge_vertex_planes(sp, c->t, c->nt, p, np, p, np, c->t, c->nt, c->snap, ns))
+        return -1;
+    return 0;
+}
+
+/* The domain of integration: the outer polygon o cut to the union of the
+ * blockers' W, as disjoint convex pieces in sp->dom (W_b minus the earlier
+ * W's, piece by piece).  Returns 0 or -1. */
+static int support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
+{
+    int ns = 0;
+    if (grow_i(&sp->sfirst, &sp->capsf, c->nb + 1))
+        return -1;
+    for (int b = 0; b < c->nb; b++) {
+        sp->sfirst[b] = ns;
+        if (support_planes(sp, c, b, &ns))
+            return -1;
+    }
+    sp->sfirst[c->nb] = ns;
+    ps_clear(&sp->dom);
+    for (int b = 0; b < c->nb; b++) {
+        ps_clear(&sp->da);
+        ps_clear(&sp->db);
+        if (grow_v3(&sp->rem, &sp->caprem, no))
+            return -1;
+        memcpy(sp->rem, o, sizeof *o * (size_t)no);
+        int n = no, f = sp->sfirst[b], nf = sp->sfirst[b + 1] - f;
+        int r = cut_piece(sp, sp->sn + f, sp->sa + f, nf, c->snap, c->sliver, &sp->db, &n);
+        if (r < 0 || (r > 0 && ps_push(&sp->da, sp->rem, n)))
+            return -1;
+        for (int e = 0; e < b && sp->da.np > 0; e++) {
+            int g = sp->sfirst[e], ng = sp->sfirst[e + 1] - g;
+            ps_clear(&sp->db);
+            for (int k = 0; k < sp->da.np; k++) {
+                n = load_rem(sp, &sp->da, k);
+                if (n < 0 ||
+                    cut_piece(sp, sp->sn + g, sp->sa + g, ng, c->snap, c->sliver, &sp->db, &n) < 0)
+                    return -1;
+            }
+            polyset t = sp->da;
+            sp->da = sp->db;
+            sp->db = t;
+        }
+        for (int k = 0; k < sp->da.np; k++)
+            if (ps_push(&sp->dom, sp->da.v + sp->da.first[k], sp->da.first[k + 1] - sp->da.first[k]))
+                return -1;
+    }
+    return 0;
+}
+
+/* ---- the adaptive rule --------------------------------------------------------- */
+
+/* The 3-point degree-2 rule on triangle p (Strang & Fix 1973): points at
+ * barycentric (2/3, 1/6, 1/6) and its permutations, weights area / 3. */
+static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)
+{
+    double sum = 0;
+    for (int k = 0; k < 3; k++) {
+        rad_vec3 x = v3_add(v3_scale(p[k], 2.0 / 3.0),
+                            v3_scale(v3_add(p[(k + 1) % 3], p[(k + 2) % 3]), 1.0 / 6.0));
+        double h;
+        if (hidden_at(sp, c, x, &h))
+            return -1;
+        sum += h;
+    }
+    *q = area / 3.0 * sum;
+    return 0;
+}
+
+/* The four midpoint children of triangle p. */
+static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
+{
+    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
+             m20 = v3_lerp(p[2], p[0], 0.5);
+    rad_vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m12, m20, m01}};
+    memcpy(ch, t, sizeof t);
+}
+
+/* Fill in a node's children values and error; its q must be set. */
+static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
+{
+    rad_vec3 ch[4][3];
+    children(t->p, ch);
+    double sum = 0;
+    for (int k = 0; k < 4; k++) {
+        if (rule3(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
+            return -1;
+        sum += t->qc[k];
+    }
+    t->err = fabs(t->q - sum);
+    return 0;
+}
+
+/* Replace leaf k by its four children (appended at the end). */
+static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
+{
+    if (grow_node(&sp->node, &sp->capnode, *nleaf + 3))
+        return -1;
+    tri_node parent = sp->node[k];
+    rad_vec3 ch[4][3];
+    children(parent.p, ch);
+    for (int l = 0; l < 4; l++) {
+        tri_node *t = l == 0 ? &sp->node[k] : &sp->node[(*nleaf)++];
+        memcpy(t->p, ch[l], sizeof t->p);
+        t->area = 0.25 * parent.area;
+        t->q = parent.qc[l];
+        if (node_eval(sp, c, t))
+            return -1;
+    }
+    return 0;
+}
+
+static double leaf_value(const tri_node *t)
+{
+    return t->qc[0] + t->qc[1] + t->qc[2] + t->qc[3];
+}
+
+/* Integral of hidden(x) over the pieces of sp->dom: *value and its
+ * estimated error *error; refined while the error exceeds tau (when
+ * `adaptive`) and fewer than max_leaves triangles are in use. */
+static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau, int max_leaves,
+                     double *value, double *error)
+{
+    int nleaf = 0;
+    const polyset *d = &sp->dom;
+    if (grow_node(&sp->node, &sp->capnode, d->nv))
+        return -1;
+    for (int k = 0; k < d->np; k++) {
+        const rad_vec3 *o = d->v + d->first[k];
+        int no = d->first[k + 1] - d->first[k];
+        for (int l = 1; l + 1 < no; l++) {
+            tri_node *t = &sp->node[nleaf];
+            t->p[0] = o[0];
+            t->p[1] = o[l];
+            t->p[2] = o[l + 1];
+            t->area = 0.5 * v3_norm(v3_cross(v3_sub(o[l], o[0]), v3_sub(o[l + 1], o[0])));
+            if (!(t->area > 0))
+                continue;
+            if (rule3(sp, c, t->p, t->area, &t->q) || node_eval(sp, c, t))
+                return -1;
+            nleaf++;
+        }
+    }
+    double err = 0;
+    for (int k = 0; k < nleaf; k++)
+        err += sp->node[k].err;
+    while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
+           nleaf + 3 <= max_leaves) {
+        int worst = 0;
+        for (int k = 1; k < nleaf; k++)
+            if (sp->node[k].err > sp->node[worst].err)
+                worst = k;
+        if (node_split(sp, c, worst, &nleaf))
+            return -1;
+        err = 0;
+        for (int k = 0; k < nleaf; k++)
+            err += sp->node[k].err;
+    }
+    double v = 0;
+    for (int k = 0; k < nleaf; k++)
+        v += leaf_value(&sp->node[k]);
+    *value = v;
+    *error = err;
+    return 0;
+}
+
+/* ---- one pair ------------------------------------------------------------------ */
+
+/* Collect the blockers of the pair: the surface pair's candidates that the
+ * element shaft does not clear.  Returns their count, or -1. */
+static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                         const rad_ff_poly *pj)
+{
+    int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
+    size_t p = pair_index(a, b, o->nsurf);
+    const int *cand = o->cand + o->cand_off[p];
+    int ncand = (int)(o->cand_off[p + 1] - o->cand_off[p]);
+    const rad_vec3 *all = sp->elem.v;
+    int ni = sp->elem.first[1], nall = sp->elem.nv;
+    int nh = 0;
+    if (o->mode != RAD_OCC_ALL) {
+        nh = hull_planes(sp, all, ni, pi->normal, nall - ni, pj->normal, o->snap);
+        if (nh < 0)
+            return -1;
+    }
+    rad_vec3 lo, hi;
+    bounds(all, nall, &lo, &hi);
+    ps_clear(&sp->blk);
+    int nb = 0;
+    for (int k = 0; k < ncand; k++) {
+        int c = cand[k], n = o->sfirst[c + 1] - o->sfirst[c];
+        const rad_vec3 *v = o->sv + o->sfirst[c];
+        if (o->mode != RAD_OCC_ALL &&
+            (!boxes_meet(lo, hi, o->slo[c], o->shi[c], o->touch) ||
+             clear_of_shaft(sp, nh, all, nall, v, n, o->snormal[c], o->touch)))
+            continue;
+        if (grow_i(&sp->bid, &sp->capb, nb + 1) || ps_push(&sp->blk, v, n))
+            return -1;
+        sp->bid[nb++] = c;
+    }
+    return nb;
+}
+
+/* Does blocker b alone hide all of p from all of q?  (Step 2 above.) */
+static int hides_all(const rad_vec3 *p, int np, const rad_vec3 *q, int nq, const rad_vec3 *b,
+                     int nb, rad_vec3 bn, double tol)
+{
+    double plo = HUGE_VAL, phi = -HUGE_VAL, qlo = HUGE_VAL, qhi = -HUGE_VAL;
+    for (int k = 0; k < np; k++) {
+        double s = v3_dot(bn, v3_sub(p[k], b[0]));
+        plo = fmin(plo, s);
+        phi = fmax(phi, s);
+    }
+    for (int k = 0; k < nq; k++) {
+        double s = v3_dot(bn, v3_sub(q[k], b[0]));
+        qlo = fmin(qlo, s);
+        qhi = fmax(qhi, s);
+    }
+    if (!((plo > tol && qhi < -tol) || (phi < -tol && qlo > tol)))
+        return 0;
+    for (int k = 0; k < np; k++)
+        for (int l = 0; l < nq; l++) {
+            double dp = v3_dot(bn, v3_sub(p[k], b[0])), dq = v3_dot(bn, v3_sub(q[l], b[0]));
+            rad_vec3 z = v3_lerp(p[k], q[l], dp / (dp - dq));
+            for (int e = 0; e < nb; e++) {
+                rad_vec3 a = b[e], ed = v3_sub(b[(e + 1) % nb], a);
+                if (v3_dot(v3_cross(ed, v3_sub(z, a)), bn) < tol * v3_norm(ed))
+                    return 0;
+            }
+        }
+    return 1;
+}
+
+/* Clip the pair's blockers to the front of the inner plane (normal tn
+ * through tp), dropping those with nothing in front; fill normals and
+ * centroids.  Returns the number kept, or -1. */
+static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp)
+{
+    if (grow_v3(&sp->bn, &sp->capbn, nb) || grow_v3(&sp->bc, &sp->capbc, nb))
+        return -1;
+    ps_clear(&sp->blkc);
+    int kept = 0;
+    for (int b = 0; b < nb; b++) {
+        int n = sp->blk.first[b + 1] - sp->blk.first[b];
+        int m = clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, o->snap);
+        if (m < 0)
+            return -1;
+        if (m == 0)
+            continue;
+        sp->bn[kept] = o->snormal[sp->bid[b]];
+        sp->bc[kept] = poly_mean(sp->blkc.v + sp->blkc.first[kept], m);
+        kept++;
+    }
+    return kept;
+}
+
+/* size / distance to the nearest blocker, for the choice of outer element. */
+static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const rad_ff_poly *e)
+{
+    double d = HUGE_VAL;
+    for (int b = 0; b < nb; b++) {
+        int c = sp->bid[b];
+        d = fmin(d, point_polygon_distance(e->centroid, o->sv + o->sfirst[c],
+                                           o->sfirst[c + 1] - o->sfirst[c], o->snormal[c]));
+    }
+    return e->size / fmax(d, 1e-300);
+}
+
+/* Steps 2 and 3 for a pair with nb blockers in sp->blk; returns the new S. */
+static int occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
+                        const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
+                        double *errest)
+{
+    const rad_vec3 *ci = sp->elem.v, *cj = sp->elem.v + sp->elem.first[1];
+    int ni = sp->elem.first[1], nj = sp->elem.nv - ni;
+    for (int b = 0; b < nb; b++) {
+        const rad_vec3 *v = sp->blk.v + sp->blk.first[b];
+        int n = sp->blk.first[b + 1] - sp->blk.first[b];
+        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], o->touch)) {
+            st->pairs_blocked++;
+            *snew = 0;
+            return 0;
+        }
+    }
+    /* outer: the element that looks smaller from the nearest blocker */
+    int outer_i = apparent_size(o, sp, nb, pi) <= apparent_size(o, sp, nb, pj);
+    const rad_ff_poly *po = outer_i ? pi : pj, *pt = outer_i ? pj : pi;
+    const rad_vec3 *co = outer_i ? ci : cj, *ct = outer_i ? cj : ci;
+    int no = outer_i ? ni : nj, nt = outer_i ? nj : ni;
+    int kept = clip_blockers(o, sp, nb, pt->normal, ct[0]);
+    if (kept < 0)
+        return -1;
+    pair_ctx c;
+    c.nx = po->normal;
+    c.t = ct;
+    c.nt = nt;
+    c.nb = kept;
+    c.snap = o->snap;
+    c.sliver = OCC_SLIVER * poly_area(ct, nt);
+    sp->any_hidden = sp->any_visible = 0;
+    sp->evals = 0;
+    if (support_domain(sp, &c, co, no))
+        return -1;
+    if (sp->dom.np == 0) {
+        *snew = s; /* no point of the outer element sees anything hidden */
+        return 0;
+    }
+    double dom_area = 0;
+    for (int k = 0; k < sp->dom.np; k++)
+        dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
+    if (dom_area < (1 - 1e-9) * poly_area(co, no))
+        sp->any_visible = 1; /* points outside the domain see all of the inner one */
+    const int adaptive = o->accuracy != RAD_ACCURACY_CLASSIC;
+    double rel = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_TOL_REFERENCE : OCC_TOL_DEFAULT;
+    int leaves = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE
+                                                              : OCC_LEAVES_DEFAULT;
+    if (getenv("OCC_TOL")) rel = atof(getenv("OCC_TOL")); /* XXX experiment */
+    if (getenv("OCC_LEAVES")) leaves = atoi(getenv("OCC_LEAVES")); /* XXX experiment */
+    double value = 0, error = 0;
+    if (integrate(sp, &c, adaptive, rel * s / (2 * RAD_PI), leaves, &value, &error))
+        return -1;
+    st->evaluations += sp->evals;
+    if (!sp->any_hidden) {
+        *snew = s; /* nothing hidden anywhere: the kernel's value, bit for bit */
+        return 0;
+    }
+    if (!sp->any_visible) {
+        st->pairs_blocked++;
+        *snew = 0;
+        return 0;
+    }
+    st->pairs_partial++;
+    double v = s - 2 * RAD_PI * value;
+    *snew = v < 0 ? 0 : v > s ? s : v;
+    if (errest)
+        *errest += 2 * RAD_PI * error;
+    st->max_errest = fmax(st->max_errest, error / fmin(pi->area, pj->area));
+    return 0;
+}
+
+int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
+                 double *errest)
+{
+    const rad_occ *o = w->occ;
+    if (!o || !(*s > 0))
+        return 0;
+    int sa = o->esurf[i], sb = o->esurf[j];
+    w->stats.pairs_tested++;
+    if (sa == sb)
+        return 0;
+    int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
+    size_t p = pair_index(a, b, o->nsurf);
+    if (o->cand_off[p + 1] == o->cand_off[p])
+        return 0;
+    double t0 = now();
+    if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
+        return -1;
+    occ_space *sp = w->space;
+    const rad_ff_poly *pi = &polys[i], *pj = &polys[j];
+    int r = clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, o->snap);
+    int nb = r > 0 ? pair_blockers(o, sp, sa, sb, pi, pj) : r;
+    double snew = *s;
+    if (nb > 0) {
+        w->stats.pairs_blockable++;
+        if (occluded_sum(o, sp, &w->stats, nb, pi, pj, *s, &snew, errest))
+            nb = -1;
+    }
+    *s = snew;
+    w->stats.seconds += now() - t0;
+    return nb < 0 ? -1 : 0;
+}

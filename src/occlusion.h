@@ -1,4 +1,83 @@
-/* occlusion.h -- (being written) */
+/* occlusion.h -- hidden surfaces in the form factors (internal).
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The matrix fill (ffmatrix.c) computes the unoccluded contour sum S of
+ * each unordered pair {i, j} (S = 2 pi A_i F_ij = 2 pi A_j F_ji) and hands
+ * it to rad_occ_pair, which returns it unchanged when nothing can stand
+ * between the two elements, 0 when they are fully hidden from each other,
+ * and S minus 2 pi times the hidden part otherwise.  The value stays one
+ * symmetric number per pair, so reciprocity A_i F_ij = A_j F_ji survives
+ * occlusion exactly.  The method is described in occlusion.c.
+ */
 #ifndef RAD_OCCLUSION_H
 #define RAD_OCCLUSION_H
-#endif
+
+#include "formfactor.h"
+#include "radiosity.h"
+
+typedef enum rad_occ_mode {
+    RAD_OCC_AUTO = 0,   /* shaft culling decides which pairs need visibility */
+    RAD_OCC_OFF,        /* no hidden surfaces (Goral et al. 1984) */
+    RAD_OCC_ALL         /* no culling: every other surface is a possible blocker
+                           of every pair (slow; for tests of the culling) */
+} rad_occ_mode;
+
+/* What the visibility work found and cost.  Counts are doubles like those
+ * of rad_ff_stats (n^2/2 overflows an int for large meshes). */
+typedef struct rad_occ_stats {
+    int needed;                 /* 0: no pair of surfaces can be blocked, and
+                                   no visibility work was done at all */
+    double surfaces;            /* surfaces (blocker polygons) in the scene */
+    double triangles;           /* their triangles in the CGAL AABB tree */
+    double pairs_tested;        /* element pairs with S != 0 looked at */
+    double pairs_blockable;     /* ... whose shaft meets another surface */
+    double pairs_blocked;       /* ... found fully hidden: F = 0 */
+    double pairs_partial;       /* ... found partly hidden */
+    double evaluations;         /* point evaluations of the hidden part */
+    double max_errest;          /* largest estimated absolute error of an
+                                   occluded F_ij (either direction) */
+    double seconds;             /* setup (wall) plus time inside the pair hook,
+                                   summed over threads */
+} rad_occ_stats;
+
+/* Per-scene data, read-only once built (shared by the fill's threads). */
+typedef struct rad_occ rad_occ;
+
+/* Build the culling data of a mesh.  *occ is NULL on return when the mode
+ * is RAD_OCC_OFF or when no pair of surfaces can be blocked: then no
+ * visibility work is needed.  stats (may be NULL) is cleared and receives
+ * the setup's share. */
+rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, rad_occ_mode mode,
+                          rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err);
+void rad_occ_free(rad_occ *occ);
+
+/* Per-thread work space and counters. */
+typedef struct rad_occ_work {
+    const rad_occ *occ;
+    rad_occ_stats stats;        /* this thread's counts */
+    void *space;                /* growable buffers (occlusion.c) */
+} rad_occ_work;
+
+void rad_occ_work_init(rad_occ_work *w, const rad_occ *occ);
+void rad_occ_work_free(rad_occ_work *w);
+
+/* Apply occlusion to the pair (i, j) of the element polygons `polys` (as
+ * made by the fill: the mesh's normals, centroids and areas): *s is the
+ * unoccluded contour sum on entry and the occluded one on return; *errest
+ * (may be NULL) is increased by the estimated absolute error of the
+ * change, in the units of s.  Returns 0, or -1 when memory ran out. */
+int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
+                 double *errest);
+
+/* into += from (counts and times add, maxima combine). */
+void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from);
+
+/* rad_ff_matrix with a choice of visibility mode and its statistics
+ * (vstats may be NULL); rad_ff_matrix is this with RAD_OCC_AUTO.
+ * Defined in ffmatrix.c. */
+rad_status rad_ff_matrix_occ(const rad_mesh *mesh, const rad_ff_options *opt,
+                             rad_occ_mode mode, double *F, double *errest,
+                             rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err);
+
+#endif /* RAD_OCCLUSION_H */
