@@ -9,6 +9,7 @@
 #define RAD_CLI_H
 
 #include <getopt.h>
+#include <stdio.h>
 
 #include "radiosity.h"
 
@@ -67,6 +68,11 @@ int cli_parse_int(const char *arg, long lo, long hi, int *out);
 int cli_parse_double(const char *arg, double *out);
 /* Parse "X,Y,Z". */
 int cli_parse_vec3(const char *arg, rad_vec3 *out);
+
+/* Write an output through fn, atomically (atomicfile.h): 0, or 1 with the
+ * error printed.  fn returns 0, or -1 on a write error. */
+typedef int (*cli_writer_fn)(FILE *out, const void *ctx);
+int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx);
 
 /* Load the scene and apply --mesh; prints the error and returns 1 on
  * failure. */

@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "atomicfile.h"
 #include "cli.h"
 #include "mesh.h"
 
@@ -29,8 +28,16 @@ static void help(void)
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
-static int write_table(FILE *out, const double *F, const double *E, int n)
+typedef struct table_ctx {
+    const double *F, *E;
+    int n;
+} table_ctx;
+
+static int write_table(FILE *out, const void *ctx)
 {
+    const table_ctx *t = ctx;
+    const double *F = t->F, *E = t->E;
+    const int n = t->n;
     fprintf(out, "i\tj\tF\terror\n");
     for (int i = 0; i < n; i++)
         for (int j = 0; j < n; j++) {
@@ -86,7 +93,6 @@ int cmd_formfactor(int argc, char **argv)
     double *E = want_err ? malloc(sizeof *E * nn) : NULL;
     int status = 1;
     rad_ff_stats st;
-    rad_afile out;
     if (!F || (want_err && !E)) {
         cli_error("out of memory for %zu x %zu form factors", n, n);
         goto done;
@@ -101,19 +107,9 @@ int cmd_formfactor(int argc, char **argv)
                   "the %s rule is unreliable for this geometry; try --accuracy default",
                   st.negative, st.above_one, st.min_value, st.max_value,
                   c.ff.accuracy == RAD_ACCURACY_CLASSIC ? "classic" : "chosen");
-    if (rad_afile_open(&out, output, &err) != RAD_OK) {
-        cli_error_rec(&err);
+    table_ctx t = {F, E, (int)n};
+    if (cli_write_atomic(output, write_table, &t))
         goto done;
-    }
-    if (write_table(out.fp, F, E, (int)n) != 0) {
-        rad_afile_abort(&out);
-        cli_error("%s: write error", output);
-        goto done;
-    }
-    if (rad_afile_commit(&out, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        goto done;
-    }
     status = 0;
 done:
     free(F);

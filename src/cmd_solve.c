@@ -99,29 +99,6 @@ void cli_result_free(cli_result *r)
     memset(r, 0, sizeof *r);
 }
 
-/* Write one output atomically with the given writer. */
-typedef int (*writer_fn)(FILE *out, const void *ctx);
-
-static int write_atomic(const char *path, writer_fn fn, const void *ctx)
-{
-    rad_afile f;
-    rad_error err;
-    if (rad_afile_open(&f, path, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    if (fn(f.fp, ctx) != 0) {
-        rad_afile_abort(&f);
-        cli_error("%s: write error", path);
-        return 1;
-    }
-    if (rad_afile_commit(&f, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    return 0;
-}
-
 typedef struct out_ctx {
     const cli_result *r;
     const double *F;
@@ -252,17 +229,17 @@ int cli_solve_run(cli_solve *s, const char *path, cli_result *r)
         cli_error_rec(&err);
         info.status = st == RAD_ERR_SINGULAR ? "singular" : st == RAD_ERR_NOCONV ? "not converged" : "error";
         if (s->report) /* the report says why; no solution file is written */
-            write_atomic(s->report, w_report, &ctx);
+            cli_write_atomic(s->report, w_report, &ctx);
         goto fail;
     }
     rad_smooth_vertices(&r->mesh, r->B, r->Bv);
     double t5 = seconds();
     info.t_smooth = t5 - t4;
-    if ((s->elements && write_atomic(s->elements, w_elements, &ctx)) ||
-        (s->form_factors && write_atomic(s->form_factors, w_matrix, &ctx)))
+    if ((s->elements && cli_write_atomic(s->elements, w_elements, &ctx)) ||
+        (s->form_factors && cli_write_atomic(s->form_factors, w_matrix, &ctx)))
         goto fail;
     info.t_output = seconds() - t5;
-    if (s->report && write_atomic(s->report, w_report, &ctx))
+    if (s->report && cli_write_atomic(s->report, w_report, &ctx))
         goto fail;
     if (!s->common.quiet)
         summary(&info);
@@ -331,7 +308,7 @@ int cmd_solve(int argc, char **argv)
     if (cli_solve_run(&s, argv[optind], &r))
         return 1;
     ply_ctx p = {&r};
-    int status = output ? write_atomic(output, w_ply, &p) : 0;
+    int status = output ? cli_write_atomic(output, w_ply, &p) : 0;
     cli_result_free(&r);
     return status;
 }

@@ -29,6 +29,7 @@
 #include "radiosity.h"
 #include "render.h"
 #include "scene.h"
+#include "readfile.h"
 #include "status.h"
 
 #define MAX_ELEMENTS 16
@@ -754,39 +755,14 @@ rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char
 rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
                         rad_error *err)
 {
-    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-    char *text = NULL;
-    size_t len = 0, cap = 0;
     memset(model, 0, sizeof *model);
     if (camera)
         memset(camera, 0, sizeof *camera);
-    if (!f)
-        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(errno));
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 65536;
-            char *g = realloc(text, cap);
-            if (!g) {
-                free(text);
-                if (f != stdin)
-                    fclose(f);
-                return rad_fail(err, RAD_ERR_NOMEM, "%s: out of memory", path);
-            }
-            text = g;
-        }
-        size_t got = fread(text + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    int bad = ferror(f);
-    int saved = errno;
-    if (f != stdin)
-        fclose(f);
-    if (bad) {
-        free(text);
-        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(saved));
-    }
+    char *text;
+    size_t len;
+    rad_status rs = rad_read_file(path, &text, &len, err);
+    if (rs != RAD_OK)
+        return rs;
     rad_status st = rad_ply_parse(model, camera, text, len, path, err);
     free(text);
     return st;

@@ -26,6 +26,7 @@
 
 #include "radiosity.h"
 #include "scene.h"
+#include "readfile.h"
 #include "status.h"
 #include "vec.h"
 
@@ -604,37 +605,12 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
 
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
-    FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-    char *text = NULL;
-    size_t len = 0, cap = 0;
     memset(scene, 0, sizeof *scene);
-    if (!f)
-        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(errno));
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 65536;
-            char *g = realloc(text, cap);
-            if (!g) {
-                free(text);
-                if (f != stdin)
-                    fclose(f);
-                return rad_fail(err, RAD_ERR_NOMEM, "%s: out of memory", path);
-            }
-            text = g;
-        }
-        size_t got = fread(text + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    int bad = ferror(f);
-    int saved = errno;
-    if (f != stdin)
-        fclose(f);
-    if (bad) {
-        free(text);
-        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(saved));
-    }
+    char *text;
+    size_t len;
+    rad_status rs = rad_read_file(path, &text, &len, err);
+    if (rs != RAD_OK)
+        return rs;
     rad_status st = rad_scene_parse(scene, text, len, path, err);
     free(text);
     return st;

@@ -30,7 +30,7 @@ cp "$here"/corpus/*.scene "$work/corpus/"
 echo "run-fuzz.sh: building $work/fuzz_scene"
 "$cc" -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
     -I"$work" -I"$top/src" \
-    "$here/fuzz_scene.c" "$top/src/scene.c" "$top/src/mesh.c" "$top/src/status.c" \
+    "$here/fuzz_scene.c" "$top/src/scene.c" "$top/src/mesh.c" "$top/src/status.c" "$top/src/readfile.c" \
     -lm -o "$work/fuzz_scene"
 
 echo "run-fuzz.sh: fuzzing for $secs s; log in $work/fuzz.log"
