@@ -390,8 +390,8 @@ static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
     const double inv_s2 = 1.0 / scale2, ln_s = 0.5 * log(scale2);
     const int classic = opt->accuracy == RAD_ACCURACY_CLASSIC;
     double s = 0, err = 0, mag = 0;
-    int pairs = 0;
-    for (int p = 0; p < na; p++)
+    int pairs = 0; /* contributing edge pairs share the adaptive tolerance */
+    for (int p = 0; !classic && p < na; p++)
         for (int q = 0; q < nb; q++)
             pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
     /* Every I_pq is the integral of ln(r/s), s = sqrt(scale2): the same
