@@ -52,6 +52,20 @@ rad_status rad_png_write_surface(cairo_surface_t *surface, const char *path, rad
     return rad_afile_commit(&out, err);
 }
 
+rad_status rad_plot_finish(cairo_t *cr, cairo_surface_t *s, const char *path, rad_error *err)
+{
+    rad_status st;
+    cairo_status_t cs = cairo_status(cr);
+    if (cs != CAIRO_STATUS_SUCCESS)
+        st = rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_INVALID,
+                      "%s: %s", path, cairo_status_to_string(cs));
+    else
+        st = rad_png_write_surface(s, path, err);
+    cairo_destroy(cr);
+    cairo_surface_destroy(s);
+    return st;
+}
+
 /* ---- the plot ------------------------------------------------------------ */
 
 #define MARGIN_LEFT 78.0
@@ -250,14 +264,5 @@ rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int wi
     draw_curves(cr, &fr, rgb, n);
     draw_legend(cr, &fr);
     draw_labels(cr, &fr, width, title);
-    rad_status st;
-    cairo_status_t cs = cairo_status(cr);
-    if (cs != CAIRO_STATUS_SUCCESS)
-        st = rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_INVALID,
-                      "%s: %s", path, cairo_status_to_string(cs));
-    else
-        st = rad_png_write_surface(s, path, err);
-    cairo_destroy(cr);
-    cairo_surface_destroy(s);
-    return st;
+    return rad_plot_finish(cr, s, path, err);
 }

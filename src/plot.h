@@ -14,6 +14,7 @@
  * program, built without cairo's include path) need not include cairo.h;
  * it is the struct behind cairo_surface_t. */
 struct _cairo_surface;
+struct _cairo;
 
 #define RAD_PLOT_WIDTH 720      /* default plot size, pixels */
 #define RAD_PLOT_HEIGHT 405
@@ -31,5 +32,10 @@ rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int wi
  * never leaves a truncated file. */
 rad_status rad_png_write_surface(struct _cairo_surface *surface, const char *path,
                                  rad_error *err);
+
+/* Finish a drawing: check cairo's status, write the surface as a PNG
+ * (rad_png_write_surface), and destroy the context and the surface. */
+rad_status rad_plot_finish(struct _cairo *cr, struct _cairo_surface *surface, const char *path,
+                           rad_error *err);
 
 #endif /* RAD_PLOT_H */

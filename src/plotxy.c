@@ -179,8 +179,5 @@ rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
         cairo_move_to(cr, ML + pw + 34, ly - 2);
         cairo_show_text(cr, s[k].label ? s[k].label : "");
     }
-    cairo_destroy(cr);
-    rad_status st = rad_png_write_surface(surf, path, err);
-    cairo_surface_destroy(surf);
-    return st;
+    return rad_plot_finish(cr, surf, path, err);
 }

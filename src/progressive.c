@@ -864,14 +864,5 @@ rad_status rad_race_plot(const double *rms, int steps, const char *title, int wi
     race_curves(cr, &fr, rms, steps);
     race_legend(cr, &fr);
     race_labels(cr, &fr, width, title);
-    rad_status st;
-    cairo_status_t cs = cairo_status(cr);
-    if (cs != CAIRO_STATUS_SUCCESS)
-        st = rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_INVALID,
-                      "%s: %s", path, cairo_status_to_string(cs));
-    else
-        st = rad_png_write_surface(s, path, err);
-    cairo_destroy(cr);
-    cairo_surface_destroy(s);
-    return st;
+    return rad_plot_finish(cr, s, path, err);
 }
