@@ -134,6 +134,13 @@ static void summary(const rad_run_info *in)
                     "(%.3g pairs/s, %s), solve %.3g s\n",
             in->nelements, in->memory_bytes / 1048576.0, in->t_formfactor,
             in->ff_pairs_per_second, in->accuracy, in->t_solve);
+    if (in->ff && in->ff->vis_needed)
+        fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
+                        "%.0f partly; %.3g s\n",
+                in->ff->vis_pairs_blockable, in->ff->vis_pairs_tested, in->ff->vis_pairs_blocked,
+                in->ff->vis_pairs_partial, in->ff->vis_seconds);
+    else if (in->ff)
+        fprintf(stderr, "radiosity: visibility: no pair can be blocked, none computed\n");
     if (!s)
         return;
     if (s->bounces >= 0)

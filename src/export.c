@@ -168,6 +168,12 @@ int rad_export_report(FILE *out, const rad_run_info *in)
                 f->negative, f->above_one);
         jnum(out, "form_factor_max_error_estimate", f->max_errest, 1);
         jnum(out, "form_factor_max_relative_error_estimate", f->max_relerr, 1);
+        fprintf(out,
+                "  \"visibility\": {\"needed\": %s, \"pairs_tested\": %.0f, "
+                "\"pairs_blockable\": %.0f, \"pairs_blocked\": %.0f, \"pairs_partial\": %.0f, "
+                "\"seconds\": %.6g},\n",
+                f->vis_needed ? "true" : "false", f->vis_pairs_tested, f->vis_pairs_blockable,
+                f->vis_pairs_blocked, f->vis_pairs_partial, f->vis_seconds);
     }
     if (s) {
         jstr(out, "solver", solvers[s->solver]);

@@ -265,6 +265,12 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
         fill_stats(F, n, stats);
         stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
         stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
+        stats->vis_needed = vst.needed;
+        stats->vis_pairs_tested = vst.pairs_tested;
+        stats->vis_pairs_blockable = vst.pairs_blockable;
+        stats->vis_pairs_blocked = vst.pairs_blocked;
+        stats->vis_pairs_partial = vst.pairs_partial;
+        stats->vis_seconds = vst.seconds;
     }
     return RAD_OK;
 }

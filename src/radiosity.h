@@ -188,6 +188,9 @@ typedef struct rad_ff_stats {
     double min_value, max_value;
     double max_errest;          /* largest estimated absolute error */
     double max_relerr;          /* largest estimated relative error */
+    int vis_needed;             /* 0: nothing can be blocked, no visibility work */
+    double vis_pairs_tested, vis_pairs_blockable, vis_pairs_blocked, vis_pairs_partial;
+    double vis_seconds;         /* visibility setup + thread time (occlusion.h) */
 } rad_ff_stats;
 
 /* All form factors of a mesh: F is n x n column-major, F[i + j*n] = F_ij,

@@ -167,34 +167,42 @@ extern "C" int rad_vis_triangles(const rad_vis *vis)
     return static_cast<int>(vis->tris.size());
 }
 
-extern "C" int rad_vis_segment_blocked(const rad_vis *vis, rad_vec3 p, rad_vec3 q, int skip_a,
-                                       int skip_b)
+// A query object for the segment pq: the segment, or the point when p = q
+// (CGAL's Segment_3 must have distinct ends).
+template <class Fn> static int with_query(rad_vec3 p, rad_vec3 q, Fn fn)
 {
     try {
-        bool hit = false;
-        Segment s(point(p), point(q));
-        vis->tree.all_intersected_primitives(
-            s, Unskipped_hit(vis->tris, vis->owner, skip_a, skip_b, &hit));
-        return hit ? 1 : 0;
+        Point a = point(p), b = point(q);
+        if (a == b)
+            return fn(a) ? 1 : 0;
+        return fn(Segment(a, b)) ? 1 : 0;
     } catch (...) {
         return -1;
     }
 }
 
+extern "C" int rad_vis_segment_blocked(const rad_vis *vis, rad_vec3 p, rad_vec3 q, int skip_a,
+                                       int skip_b)
+{
+    return with_query(p, q, [&](const auto &query) {
+        bool hit = false;
+        vis->tree.all_intersected_primitives(
+            query, Unskipped_hit(vis->tris, vis->owner, skip_a, skip_b, &hit));
+        return hit;
+    });
+}
+
 extern "C" int rad_vis_segment_blocked_brute(const rad_vis *vis, rad_vec3 p, rad_vec3 q,
                                              int skip_a, int skip_b)
 {
-    try {
-        Segment s(point(p), point(q));
+    return with_query(p, q, [&](const auto &query) {
         for (std::size_t k = 0; k < vis->tris.size(); k++) {
             int o = vis->owner[k];
-            if (o != skip_a && o != skip_b && CGAL::do_intersect(s, vis->tris[k]))
-                return 1;
+            if (o != skip_a && o != skip_b && CGAL::do_intersect(query, vis->tris[k]))
+                return true;
         }
-        return 0;
-    } catch (...) {
-        return -1;
-    }
+        return false;
+    });
 }
 
 extern "C" int rad_vis_box_polygons(const rad_vis *vis, rad_vec3 lo, rad_vec3 hi, int *owners)

@@ -44,9 +44,9 @@ void rad_vis_free(rad_vis *vis);
 /* The number of triangles in the tree. */
 int rad_vis_triangles(const rad_vis *vis);
 
-/* Does the closed segment pq meet a triangle whose owner is neither
- * skip_a nor skip_b (pass -1 to skip nothing)?  1 yes, 0 no, -1 on an
- * error inside CGAL. */
+/* Does the closed segment pq (the point p when q = p) meet a triangle
+ * whose owner is neither skip_a nor skip_b (pass -1 to skip nothing)?
+ * 1 yes, 0 no, -1 on an error inside CGAL. */
 int rad_vis_segment_blocked(const rad_vis *vis, rad_vec3 p, rad_vec3 q, int skip_a, int skip_b);
 
 /* The same answer by a loop over every triangle, with the same exact
