@@ -18,7 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "atomicfile.h"
 #include "cli.h"
 #include "progressive.h"
 #include "render.h"
@@ -154,35 +153,32 @@ static int snapshot(void *user, int method, int step, const double *B)
 
 /* ---- outputs --------------------------------------------------------------- */
 
+typedef struct table_ctx {
+    const double *rms;
+    int steps;
+} table_ctx;
+
+static int write_table_to(FILE *out, const void *ctx)
+{
+    const table_ctx *t = ctx;
+    const size_t rows = (size_t)t->steps + 1;
+    fprintf(out, "step");
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        fprintf(out, "\t%s", rad_race_name(m));
+    fputc('\n', out);
+    for (size_t k = 0; k < rows; k++) {
+        fprintf(out, "%zu", k);
+        for (int m = 0; m < RAD_RACE_METHODS; m++)
+            fprintf(out, "\t%.17g", t->rms[k + (size_t)m * rows]);
+        fputc('\n', out);
+    }
+    return ferror(out) ? -1 : 0;
+}
+
 static int write_table(const char *path, const double *rms, int steps)
 {
-    rad_afile f;
-    rad_error err;
-    const size_t rows = (size_t)steps + 1;
-    if (rad_afile_open(&f, path, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    fprintf(f.fp, "step");
-    for (int m = 0; m < RAD_RACE_METHODS; m++)
-        fprintf(f.fp, "\t%s", rad_race_name(m));
-    fputc('\n', f.fp);
-    for (size_t k = 0; k < rows; k++) {
-        fprintf(f.fp, "%zu", k);
-        for (int m = 0; m < RAD_RACE_METHODS; m++)
-            fprintf(f.fp, "\t%.17g", rms[k + (size_t)m * rows]);
-        fputc('\n', f.fp);
-    }
-    if (ferror(f.fp)) {
-        rad_afile_abort(&f);
-        cli_error("%s: write error", path);
-        return 1;
-    }
-    if (rad_afile_commit(&f, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    return 0;
+    table_ctx t = {rms, steps};
+    return cli_write_atomic(path, write_table_to, &t);
 }
 
 /* Shooters that emit: elements, or surfaces with --patches. */

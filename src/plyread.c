@@ -93,12 +93,11 @@ static rad_status fail_at(const reader *r, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 static rad_status fail_at(const reader *r, const char *fmt, ...)
 {
-    char what[RAD_ERRMSG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
+    rad_status st = rad_fail_vat(r->err, r->name, r->line, fmt, ap);
     va_end(ap);
-    return rad_fail(r->err, RAD_ERR_PARSE, "%s:%d: %s", r->name, r->line, what);
+    return st;
 }
 
 /* ---- lines and tokens ----------------------------------------------------- */
@@ -217,6 +216,21 @@ static rad_status get_value(const reader *r, int k, ptype t, const char *prop,
         return fail_at(r, "'%s' is not a whole number from %.0f to %.0f (property '%s' of %s)",
                        r->tok[k], lo, hi, prop, elem);
     *out = v;
+    return RAD_OK;
+}
+
+/* Step over a list property this reader does not use: its count, then its
+ * items. */
+static rad_status skip_list(const reader *r, int *k, const ply_prop *p, const char *what)
+{
+    double count;
+    rad_status st = get_value(r, (*k)++, p->count_type, p->name, what, &count);
+    if (st)
+        return st;
+    if (count < 0 || count > r->ntok - *k)
+        return fail_at(r, "list '%s' of %s has %.0f items, the line fewer", p->name, what,
+                       count);
+    *k += (int)count;
     return RAD_OK;
 }
 
@@ -519,15 +533,11 @@ static rad_status read_vertex(reader *r, ply_state *s, const ply_element *e, siz
     snprintf(what, sizeof what, "vertex %zu", i);
     for (int j = 0; j < e->nprops; j++) {
         const ply_prop *p = &e->props[j];
-        double v, count = 0;
+        double v;
         rad_status st;
         if (p->count_type != T_NONE) { /* a list we do not use */
-            if ((st = get_value(r, k++, p->count_type, p->name, what, &count)))
+            if ((st = skip_list(r, &k, p, what)))
                 return st;
-            if (count < 0 || count > r->ntok - k)
-                return fail_at(r, "list '%s' of %s has %.0f items, the line fewer", p->name,
-                               what, count);
-            k += (int)count;
             continue;
         }
         if ((st = get_value(r, k++, p->type, p->name, what, &v)))
@@ -595,7 +605,7 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
     s->face_line[i] = r->line;
     for (int j = 0; j < e->nprops; j++) {
         const ply_prop *p = &e->props[j];
-        double v, count;
+        double v;
         rad_status st;
         if (p->role == R_INDICES && !have_indices) {
             if ((st = read_indices(r, s, p, &k, what)))
@@ -604,12 +614,8 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
             continue;
         }
         if (p->count_type != T_NONE) {
-            if ((st = get_value(r, k++, p->count_type, p->name, what, &count)))
+            if ((st = skip_list(r, &k, p, what)))
                 return st;
-            if (count < 0 || count > r->ntok - k)
-                return fail_at(r, "list '%s' of %s has %.0f items, the line fewer", p->name,
-                               what, count);
-            k += (int)count;
             continue;
         }
         if ((st = get_value(r, k++, p->type, p->name, what, &v)))

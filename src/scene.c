@@ -49,12 +49,11 @@ static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
 {
-    char what[RAD_ERRMSG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
+    rad_status st = rad_fail_vat(c->err, c->file, c->line, fmt, ap);
     va_end(ap);
-    return rad_fail(c->err, RAD_ERR_PARSE, "%s:%d: %s", c->file, c->line, what);
+    return st;
 }
 
 /* ---- numbers ------------------------------------------------------------ */

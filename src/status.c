@@ -36,3 +36,11 @@ rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
     }
     return status;
 }
+
+rad_status rad_fail_vat(rad_error *err, const char *file, int line, const char *fmt,
+                        va_list ap)
+{
+    char what[RAD_ERRMSG_MAX];
+    vsnprintf(what, sizeof what, fmt, ap);
+    return rad_fail(err, RAD_ERR_PARSE, "%s:%d: %s", file, line, what);
+}

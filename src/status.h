@@ -5,6 +5,8 @@
 #ifndef RAD_STATUS_H
 #define RAD_STATUS_H
 
+#include <stdarg.h>
+
 #include "radiosity.h"
 
 #ifdef __cplusplus
@@ -15,6 +17,10 @@ extern "C" {
  * status, so callers can write `return rad_fail(err, RAD_ERR_IO, ...)`. */
 rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* RAD_ERR_PARSE with the message "FILE:LINE: what" (input errors). */
+rad_status rad_fail_vat(rad_error *err, const char *file, int line, const char *fmt,
+                        va_list ap) __attribute__((format(printf, 4, 0)));
 
 #ifdef __cplusplus
 }
