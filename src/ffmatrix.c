@@ -81,7 +81,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 
 /* Element polygons with contiguous vertices, as the kernel wants them. */
 static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
-                             rad_ff_edge **edges, rad_vec3 **gauss3)
+                             rad_ff_edge **edges, double **gauss3)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
     for (int e = 0; e < m->nelements; e++)
@@ -89,7 +89,7 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     *polys = malloc(sizeof **polys * ne);
     *pts = malloc(sizeof **pts * (total ? total : 1));
     *edges = malloc(sizeof **edges * (total ? total : 1));
-    *gauss3 = malloc(sizeof **gauss3 * 3 * (total ? total : 1));
+    *gauss3 = malloc(sizeof **gauss3 * 12 * (total ? total : 1));
     if (!*polys || !*pts || !*edges || !*gauss3)
         return RAD_ERR_NOMEM;
     size_t at = 0;
@@ -104,9 +104,9 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         p->centroid = el->centroid;
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
-        p->gauss3 = *gauss3 + 3 * at; /* the nine-point rule's points, once */
+        p->gauss3 = *gauss3 + 12 * at; /* the nine-point rule's points, once */
         for (int k = 0; k < p->nedges; k++)
-            rad_ff_gauss3_points(&p->edges[k], p->gauss3 + 3 * k);
+            rad_ff_gauss3_soa(&p->edges[k], p->gauss3 + 12 * k);
         at += (size_t)el->nverts;
     }
     return RAD_OK;
@@ -193,7 +193,7 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
     rad_ff_poly *polys = NULL;
     rad_vec3 *pts = NULL;
     rad_ff_edge *edges = NULL;
-    rad_vec3 *gauss3 = NULL;
+    double *gauss3 = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)

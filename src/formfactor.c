@@ -53,6 +53,7 @@
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
+#include "veclog.h"
 
 #define RAD_PI 3.14159265358979323846
 
@@ -167,6 +168,18 @@ void rad_ff_gauss3_points(const ff_edge *e, rad_vec3 out[3])
         out[a] = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + (a - 1) * x3)));
 }
 
+void rad_ff_gauss3_soa(const ff_edge *e, double out[12])
+{
+    rad_vec3 g[3];
+    rad_ff_gauss3_points(e, g);
+    for (int a = 0; a < 4; a++) {
+        const rad_vec3 v = g[a < 3 ? a : 1];
+        out[a] = v.x;
+        out[4 + a] = v.y;
+        out[8 + a] = v.z;
+    }
+}
+
 static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
 {
     rad_vec3 pa[3], qb[3];
@@ -201,11 +214,122 @@ static double ln_parallel_edges(const ff_edge *p, const ff_edge *q, double *mag)
 /* Colinear: parallel edges on one line (distance between the lines below
  * 1e-12 of the longer edge).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */
-static int ln_colinear(const ff_edge *p, const ff_edge *q)
+static inline int ln_colinear(const ff_edge *p, const ff_edge *q)
 {
     rad_vec3 w = v3_sub(q->p0, p->p0);
     rad_vec3 perp = v3_sub(w, v3_scale(p->e, v3_dot(w, p->e)));
-    return v3_norm(perp) <= 1e-12 * fmax(p->len, q->len);
+    double lmax = p->len > q->len ? p->len : q->len;
+    return v3_dot(perp, perp) <= 1e-24 * lmax * lmax;
+}
+
+/* The nine-point rule over all edge pairs of two unclipped polygons,
+ * arranged for SIMD: the polygons' Gauss points are stored per edge as
+ * x[4], y[4], z[4] (rad_ff_poly.gauss3), so one 4-lane operation gives an
+ * A point's squared distances to the three points of a B edge; the three
+ * grouped products of ln_gauss3_pts are formed per edge pair and their logs
+ * taken LOG_BATCH edge pairs at a time by rad_log_batch (veclog.c).  gb and
+ * eb are relative to b's centroid, moved by `shift`.  Colinear edge pairs
+ * take the closed form, as in contour_sum; `touch` says whether any can
+ * exist (each polygon has at least two vertices on the other's plane:
+ * a colinear edge lies on both planes).  With target_clones the compiler
+ * also emits an AVX2/FMA clone, chosen at load time. */
+#define LOG_BATCH 64
+
+#if defined(__GNUC__)
+typedef double lane4 __attribute__((vector_size(32)));
+#else
+typedef struct lane4 { double v[4]; } lane4; /* unused: see below */
+#endif
+
+RAD_LOG_INLINE double classic9_flush(const double *arg, const double *coef, int m)
+{
+    double lg[3 * LOG_BATCH], s = 0;
+    rad_log_batch(lg, arg, 3 * m);
+    for (int k = 0; k < m; k++)
+        s += coef[k] * (25.0 * lg[3 * k] + 40.0 * lg[3 * k + 1] + 64.0 * lg[3 * k + 2]);
+    return s;
+}
+
+/* squared distances, over s^2, from A's Gauss point a of edge p to the
+ * three points of B's edge (lanes 0..2) */
+#if defined(__GNUC__)
+#define R2_LANES(r, ga, p, a, bx, by, bz)                                                   \
+    do {                                                                                 \
+        const lane4 dx_ = (ga)[12 * (p) + (a)] - (bx), dy_ = (ga)[12 * (p) + 4 + (a)] - (by), \
+                    dz_ = (ga)[12 * (p) + 8 + (a)] - (bz);                               \
+        (r) = (dx_ * dx_ + dy_ * dy_ + dz_ * dz_) * inv_s2;                              \
+    } while (0)
+#endif
+
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff_edge *eb,
+                           int nb, const double *gb, rad_vec3 shift, double scale2,
+                           int touch)
+{
+    const double inv_s2 = 1.0 / scale2;
+    double arg[3 * LOG_BATCH], coef[LOG_BATCH];
+    double s = 0, ln_s = NAN;
+    int m = 0;
+    for (int q = 0; q < nb; q++) {
+#if defined(__GNUC__)
+        lane4 bx, by, bz;
+        for (int l = 0; l < 4; l++) {
+            bx[l] = gb[12 * q + l] + shift.x;
+            by[l] = gb[12 * q + 4 + l] + shift.y;
+            bz[l] = gb[12 * q + 8 + l] + shift.z;
+        }
+#endif
+        for (int p = 0; p < na; p++) {
+            const double dot = v3_dot(ea[p].e, eb[q].e);
+            if (fabs(dot) < 1e-14)
+                continue; /* perpendicular: no contribution */
+            if (touch && fabs(dot) > 1 - 1e-12) { /* colinear ones in closed form */
+                rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
+                ff_edge qe = eb[q];
+                qe.p0 = v3_add(qe.p0, shift);
+                if (v3_dot(cr, cr) < 1e-26 && ln_colinear(&ea[p], &qe)) {
+                    double mag;
+                    if (isnan(ln_s))
+                        ln_s = 0.5 * log(scale2);
+                    s += dot * (ln_parallel_edges(&ea[p], &qe, &mag) - ea[p].len * qe.len * ln_s);
+                    continue;
+                }
+            }
+            /* weights 5/9, 8/9, 5/9: corner, edge and centre products */
+#if defined(__GNUC__)
+            lane4 r0, r1, r2;
+            R2_LANES(r0, ga, p, 0, bx, by, bz);
+            R2_LANES(r1, ga, p, 1, bx, by, bz);
+            R2_LANES(r2, ga, p, 2, bx, by, bz);
+            const lane4 r02 = r0 * r2;
+            arg[3 * m] = r02[0] * r02[2];
+            arg[3 * m + 1] = r02[1] * r1[0] * r1[2];
+            arg[3 * m + 2] = r1[1];
+#else
+            double r[3][3];
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    double dx = ga[12 * p + a] - (gb[12 * q + b] + shift.x);
+                    double dy = ga[12 * p + 4 + a] - (gb[12 * q + 4 + b] + shift.y);
+                    double dz = ga[12 * p + 8 + a] - (gb[12 * q + 8 + b] + shift.z);
+                    r[a][b] = (dx * dx + dy * dy + dz * dz) * inv_s2;
+                }
+            arg[3 * m] = r[0][0] * r[2][0] * r[0][2] * r[2][2];
+            arg[3 * m + 1] = r[0][1] * r[2][1] * r[1][0] * r[1][2];
+            arg[3 * m + 2] = r[1][1];
+#endif
+            coef[m++] = dot * (0.125 / 81.0) * ea[p].len * eb[q].len;
+            if (m == LOG_BATCH) {
+                s += classic9_flush(arg, coef, m);
+                m = 0;
+            }
+        }
+    }
+    if (m > 0)
+        s += classic9_flush(arg, coef, m);
+    return s;
 }
 
 /* Adaptive Gauss-Kronrod (7-15) over p of the closed-form inner integral
@@ -302,12 +426,14 @@ static int clip_front(const rad_vec3 *p, const double *dist, int n, rad_vec3 *ou
 }
 
 /* Signed distances of p's vertices from the plane (n, c), snapped to 0
- * within tol; returns 1 if any is positive, and sets *neg if any negative. */
+ * within tol; returns 1 if any is positive, sets *neg if any is negative
+ * and *zero to the number on the plane. */
 static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, double tol,
-                      double *dist, int *neg)
+                      double *dist, int *neg, int *zero)
 {
     int pos = 0;
     *neg = 0;
+    *zero = 0;
     for (int k = 0; k < np; k++) {
         double s = v3_dot(v3_sub(p[k], c), nrm);
         if (fabs(s) <= tol)
@@ -315,6 +441,7 @@ static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, doubl
         dist[k] = s;
         pos |= s > 0;
         *neg |= s < 0;
+        *zero += s == 0;
     }
     return pos;
 }
@@ -383,7 +510,6 @@ static int has_skew(const ff_edge *ea, int na, const ff_edge *eb, int nb)
  * plus a round-off bound (16 eps times the size of the terms summed). */
 static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
                           const rad_ff_options *opt, double scale2, double tol,
-                          const rad_vec3 *ga, const rad_vec3 *gb, rad_vec3 shift,
                           double *errest)
 {
     const int k = opt->quadrature;
@@ -407,8 +533,6 @@ static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
             double I;
             if (parallel && (!classic || ln_colinear(&ea[p], &eb[q]))) {
                 I = ln_parallel_edges(&ea[p], &eb[q], &m) - lplq * ln_s;
-            } else if (classic && k == 3 && ga && gb) { /* precomputed points */
-                I = ln_gauss3_pts(ga + 3 * p, gb + 3 * q, shift, ea[p].len, eb[q].len, inv_s2);
             } else if (classic) {
                 I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2) : ln_gauss(&ea[p], &eb[q], k, inv_s2);
             } else {
@@ -441,10 +565,11 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     ff_edge *eb = ea + a->n + 2;
     /* Tolerance for "on the plane": round-off of a dot product of
      * coordinates of this magnitude, scaled by the pair's size. */
-    double mag = fmax(v3_maxabs(a->centroid), v3_maxabs(b->centroid)) + a->size + b->size;
+    const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
+    double mag = (ca_max > cb_max ? ca_max : cb_max) + a->size + b->size;
     double tol = 1e-12 * mag;
-    int nega, negb;
-    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, dist, &negb))
+    int nega, negb, zeroa, zerob;
+    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, dist, &negb, &zerob))
         return 0.0; /* B wholly behind A's plane, or on it */
     const rad_vec3 *pb = b->v;
     int nb = b->n;
@@ -452,7 +577,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         nb = clip_front(b->v, dist, b->n, cb);
         pb = cb;
     }
-    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, dist, &nega))
+    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, dist, &nega, &zeroa))
         return 0.0;
     const rad_vec3 *pa = a->v;
     int na = a->n;
@@ -462,6 +587,18 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     }
     if (na < 3 || nb < 3)
         return 0.0;
+    const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
+    const double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
+    if (opt->accuracy == RAD_ACCURACY_CLASSIC && opt->quadrature == 3 && !nega && !negb &&
+        a->gauss3 && b->gauss3) {
+        /* the common case, batched; the precomputed Gauss points hold only
+         * for unclipped polygons */
+        *contour = classic9_sum(a->edges, a->nedges, a->gauss3, b->edges, b->nedges, b->gauss3,
+                                sep, scale2, zeroa >= 2 && zerob >= 2);
+        if (errest)
+            *errest = NAN;
+        return *contour / (2 * RAD_PI * a->area);
+    }
     /* edges in coordinates centred on A's centroid: precomputed unless
      * clipped */
     int mea, meb;
@@ -481,13 +618,9 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
             eb[k].p0 = v3_add(eb[k].p0, shift);
         }
     }
-    rad_vec3 sep = v3_sub(b->centroid, a->centroid);
-    double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
     double s, e = 0;
     if (opt->accuracy == RAD_ACCURACY_CLASSIC) {
-        /* the precomputed Gauss points hold only for unclipped polygons */
-        s = contour_sum(ea, mea, eb, meb, opt, scale2, 0, nega ? NULL : a->gauss3,
-                        negb ? NULL : b->gauss3, v3_sub(b->centroid, a->centroid), errest);
+        s = contour_sum(ea, mea, eb, meb, opt, scale2, 0, errest);
     } else {
         /* target relative error of S: 1e-9 (reference), 1e-6 (default), with a
          * margin of 100 for the estimates */
@@ -511,11 +644,11 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
                 rad_ff_options c = *opt;
                 c.accuracy = RAD_ACCURACY_CLASSIC;
                 c.quadrature = 3;
-                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL, NULL, sep, NULL));
+                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL));
             }
-            s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, NULL, NULL, sep, &e);
+            s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
-                s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), NULL, NULL, sep, &e);
+                s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), &e);
             /* still short of the tolerance (long thin pairs cancel in the
              * contour): the area form, if it does better */
             double sa, ea_;

@@ -21,8 +21,10 @@ typedef struct rad_ff_poly {
     int n;
     rad_ff_edge *edges;     /* its non-degenerate edges (n of room) */
     int nedges;
-    rad_vec3 *gauss3;       /* 3 Gauss points per edge, relative to the
-                               centroid (3 n of room), or NULL */
+    double *gauss3;         /* the nine-point rule's 3 Gauss points per
+                               edge, relative to the centroid, or NULL:
+                               edge k holds x[4], y[4], z[4] at 12 k (lane
+                               3 repeats lane 1), 12 n of room */
     rad_vec3 normal;        /* unit front normal */
     rad_vec3 centroid;
     double area;
@@ -53,6 +55,8 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
 
 /* The three Gauss-Legendre points of an edge (nine-point rule). */
 void rad_ff_gauss3_points(const rad_ff_edge *e, rad_vec3 out[3]);
+/* The same, in the padded layout of rad_ff_poly.gauss3 (12 doubles). */
+void rad_ff_gauss3_soa(const rad_ff_edge *e, double out[12]);
 
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to

@@ -25,7 +25,11 @@ static inline rad_vec3 v3_cross(rad_vec3 a, rad_vec3 b)
 static inline double v3_norm(rad_vec3 a) { return sqrt(v3_dot(a, a)); }
 static inline double v3_maxabs(rad_vec3 a)
 {
-    return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    /* comparisons, not fmax: this sits in the pair kernel's hot path and
+     * fmax is a libm call unless NaNs are excluded */
+    double x = fabs(a.x), y = fabs(a.y), z = fabs(a.z);
+    double m = x > y ? x : y;
+    return m > z ? m : z;
 }
 /* a + t (b - a) */
 static inline rad_vec3 v3_lerp(rad_vec3 a, rad_vec3 b, double t)
