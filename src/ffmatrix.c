@@ -30,6 +30,21 @@
 
 #define RAD_PI 3.14159265358979323846
 
+/* perimeter, longest edge and radius about the centroid, from the edges
+ * (their starts are relative to the centroid) */
+static void ff_poly_lengths(rad_ff_poly *p)
+{
+    p->perimeter = 0;
+    p->lmax = 0;
+    p->radius = 0;
+    for (int k = 0; k < p->nedges; k++) {
+        const double r = v3_norm(p->edges[k].p0);
+        p->perimeter += p->edges[k].len;
+        p->lmax = p->edges[k].len > p->lmax ? p->edges[k].len : p->lmax;
+        p->radius = r > p->radius ? r : p->radius;
+    }
+}
+
 void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges)
 {
     rad_vec3 nw = v3_newell(v, n), lo = v[0], hi = v[0], c = v3(0, 0, 0);
@@ -53,6 +68,20 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
     poly->gauss3 = NULL;
+    poly->gauss4 = poly->gauss8 = NULL;
+    ff_poly_lengths(poly);
+}
+
+void rad_ff_poly_gauss(rad_ff_poly *p, double *g)
+{
+    p->gauss3 = g;
+    p->gauss4 = g + 12 * p->n;
+    p->gauss8 = p->gauss4 + 12 * p->n;
+    for (int k = 0; k < p->nedges; k++) {
+        rad_ff_gauss3_soa(&p->edges[k], p->gauss3 + 12 * k);
+        rad_ff_gauss_soa(&p->edges[k], 4, p->gauss4 + 12 * k);
+        rad_ff_gauss_soa(&p->edges[k], 8, p->gauss8 + 24 * k);
+    }
 }
 
 double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
@@ -62,13 +91,18 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_scratch w;
     double s;
     rad_ff_edge *ea = malloc(sizeof *ea * (size_t)na), *eb = malloc(sizeof *eb * (size_t)nb);
-    if (!ea || !eb) {
+    double *ga = malloc(sizeof *ga * 48 * (size_t)na), *gb = malloc(sizeof *gb * 48 * (size_t)nb);
+    if (!ea || !eb || !ga || !gb) {
         free(ea);
         free(eb);
+        free(ga);
+        free(gb);
         return NAN;
     }
     rad_ff_poly_make(&pa, a, na, ea);
     rad_ff_poly_make(&pb, b, nb, eb);
+    rad_ff_poly_gauss(&pa, ga); /* the same routes as in a matrix */
+    rad_ff_poly_gauss(&pb, gb);
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
@@ -76,6 +110,8 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_scratch_free(&w);
     free(ea);
     free(eb);
+    free(ga);
+    free(gb);
     return f;
 }
 
@@ -89,7 +125,7 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     *polys = malloc(sizeof **polys * ne);
     *pts = malloc(sizeof **pts * (total ? total : 1));
     *edges = malloc(sizeof **edges * (total ? total : 1));
-    *gauss3 = malloc(sizeof **gauss3 * 12 * (total ? total : 1));
+    *gauss3 = malloc(sizeof **gauss3 * 48 * (total ? total : 1)); /* 3, 4, 8 points */
     if (!*polys || !*pts || !*edges || !*gauss3)
         return RAD_ERR_NOMEM;
     size_t at = 0;
@@ -104,9 +140,8 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         p->centroid = el->centroid;
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
-        p->gauss3 = *gauss3 + 12 * at; /* the nine-point rule's points, once */
-        for (int k = 0; k < p->nedges; k++)
-            rad_ff_gauss3_soa(&p->edges[k], p->gauss3 + 12 * k);
+        ff_poly_lengths(p);
+        rad_ff_poly_gauss(p, *gauss3 + 48 * at); /* once per element */
         at += (size_t)el->nverts;
     }
     return RAD_OK;
@@ -133,8 +168,10 @@ static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_opti
         const double tj = 2 * RAD_PI * polys[j].area;
         col[j] = s / tj;
         if (want && s != 0) {
-            *maxerr = fmax(*maxerr, e / fmin(tj, 2 * RAD_PI * polys[i].area));
-            *maxrel = fmax(*maxrel, e / fabs(s));
+            const double ti = 2 * RAD_PI * polys[i].area;
+            const double ea = e / (tj < ti ? tj : ti), er = e / fabs(s);
+            *maxerr = ea > *maxerr ? ea : *maxerr; /* not fmax: a libm call here */
+            *maxrel = er > *maxrel ? er : *maxrel;
         }
         if (ecol)
             ecol[j] = want ? e / tj : NAN;

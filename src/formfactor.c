@@ -27,6 +27,10 @@
  * How each I_pq is evaluated depends on the accuracy mode:
  *   classic    K-point Gauss-Legendre in each variable (K = 3: the paper's
  *              nine-point rule) and the closed form for colinear edges;
+ *   default    first, for a pair apart from each other, the K-point Gauss
+ *              rule in each variable, K = 3, 4 or 8, the first whose a
+ *              priori bound is met (ffgauss.c; gauss_tiers below); if none
+ *              is, as reference with its own tolerance:
  *   default,   a pair small against its separation (sum of the bounding
  *   reference  diagonals below the centroid distance, or below 1/4 of it
  *              in default, whose looser tolerance affords the contour's
@@ -231,7 +235,8 @@ static inline int ln_colinear(const ff_edge *p, const ff_edge *q)
  * eb are relative to b's centroid, moved by `shift`.  Colinear edge pairs
  * take the closed form, as in contour_sum; `touch` says whether any can
  * exist (each polygon has at least two vertices on the other's plane:
- * a colinear edge lies on both planes).  With target_clones the compiler
+ * a colinear edge lies on both planes).  *pp (if not NULL) gets the sum
+ * of |e_p . e_q| lp lq over the edge pairs integrated by the rule.  With target_clones the compiler
  * also emits an AVX2/FMA clone, chosen at load time. */
 #define LOG_BATCH 64
 
@@ -266,11 +271,11 @@ __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
 static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff_edge *eb,
                            int nb, const double *gb, rad_vec3 shift, double scale2,
-                           int touch)
+                           int touch, double *pp)
 {
     const double inv_s2 = 1.0 / scale2;
     double arg[3 * LOG_BATCH], coef[LOG_BATCH];
-    double s = 0, ln_s = NAN;
+    double s = 0, ln_s = NAN, sum_ll = 0;
     int m = 0;
     for (int q = 0; q < nb; q++) {
 #if defined(__GNUC__)
@@ -320,6 +325,7 @@ static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff
             arg[3 * m + 1] = r[0][1] * r[2][1] * r[1][0] * r[1][2];
             arg[3 * m + 2] = r[1][1];
 #endif
+            sum_ll += fabs(dot) * ea[p].len * eb[q].len;
             coef[m++] = dot * (0.125 / 81.0) * ea[p].len * eb[q].len;
             if (m == LOG_BATCH) {
                 s += classic9_flush(arg, coef, m);
@@ -329,6 +335,8 @@ static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff
     }
     if (m > 0)
         s += classic9_flush(arg, coef, m);
+    if (pp)
+        *pp = sum_ll;
     return s;
 }
 
@@ -550,6 +558,43 @@ static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
     return s;
 }
 
+/* Default mode's fast path for polygons apart (ffgauss.c): the 3 x 3
+ * (nine-point), 4 x 4 or 8 x 8 rule, the first whose a priori bound, round-
+ * off included, is within `rel` of its result.  The nine-point rule goes
+ * first (it also yields the edge-pair sum the bounds need); its result,
+ * accepted or not, then says which higher rule can succeed (S is s3 within
+ * its bound), so none is computed in vain.  Returns 1 with *s, *e set, or
+ * 0 (use the general path). */
+static int gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep,
+                       double scale2, double rel, double *s, double *e)
+{
+    rad_ff_gauss_bounds g;
+    double pp;
+    const double s3 = classic9_sum(a->edges, a->nedges, a->gauss3, b->edges, b->nedges,
+                                   b->gauss3, sep, scale2, 0, &pp);
+    if (!rad_ff_gauss_apart(a, b, v3_dot(sep, sep), scale2, pp, &g))
+        return 0;
+    double bound = rad_ff_gauss_bound(&g, 3);
+    if (s3 > 0 && bound <= rel * s3) {
+        *s = s3;
+        *e = bound;
+        return 1;
+    }
+    const double est = s3 - bound;
+    for (int k = 4; k <= 8; k += 4) {
+        bound = rad_ff_gauss_bound(&g, k);
+        if (!(bound <= rel * est))
+            continue;
+        const double sk = rad_ff_gauss_sum(a, b, k, scale2);
+        if (sk > 0 && bound <= rel * sk) {
+            *s = sk;
+            *e = bound;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest)
 {
@@ -594,10 +639,20 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         /* the common case, batched; the precomputed Gauss points hold only
          * for unclipped polygons */
         *contour = classic9_sum(a->edges, a->nedges, a->gauss3, b->edges, b->nedges, b->gauss3,
-                                sep, scale2, zeroa >= 2 && zerob >= 2);
+                                sep, scale2, zeroa >= 2 && zerob >= 2, NULL);
         if (errest)
             *errest = NAN;
         return *contour / (2 * RAD_PI * a->area);
+    }
+    if (opt->accuracy == RAD_ACCURACY_DEFAULT && !nega && !negb && a->gauss3 && b->gauss3 &&
+        a->gauss8 && b->gauss8) {
+        double s4, e4;
+        if (gauss_tiers(a, b, sep, scale2, 1e-8, &s4, &e4)) {
+            *contour = s4;
+            if (errest)
+                *errest = e4;
+            return s4 / (2 * RAD_PI * a->area);
+        }
     }
     /* edges in coordinates centred on A's centroid: precomputed unless
      * clipped */

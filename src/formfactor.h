@@ -25,6 +25,12 @@ typedef struct rad_ff_poly {
                                edge, relative to the centroid, or NULL:
                                edge k holds x[4], y[4], z[4] at 12 k (lane
                                3 repeats lane 1), 12 n of room */
+    double *gauss4;         /* 4 and 8 Gauss points per edge, as x[K],
+                               y[K], z[K] (default mode's fast path), */
+    double *gauss8;         /* or NULL */
+    double perimeter;       /* sum of the edge lengths */
+    double lmax;            /* longest edge */
+    double radius;          /* largest distance from the centroid to a vertex */
     rad_vec3 normal;        /* unit front normal */
     rad_vec3 centroid;
     double area;
@@ -43,6 +49,10 @@ void rad_ff_scratch_free(rad_ff_scratch *w);
 /* Fill poly from n vertices (normal, centroid, area, size and edges
  * computed); `edges` must have room for n. */
 void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges);
+/* Store the Gauss points of poly's edges (3, 4 and 8 per edge) in g (room
+ * for 48 doubles per vertex) and point poly's gauss3/4/8 at them: the
+ * kernel's fast paths need them. */
+void rad_ff_poly_gauss(rad_ff_poly *poly, double *g);
 /* Compute the edges of p[0..n) relative to `origin` into e; returns their
  * number (zero-length edges are dropped). */
 int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
@@ -57,6 +67,25 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
 void rad_ff_gauss3_points(const rad_ff_edge *e, rad_vec3 out[3]);
 /* The same, in the padded layout of rad_ff_poly.gauss3 (12 doubles). */
 void rad_ff_gauss3_soa(const rad_ff_edge *e, double out[12]);
+
+/* Default mode's fast path (ffgauss.c): Gauss product rules on all edge
+ * pairs of two unclipped polygons, K = 3 (the nine-point rule, formfactor.c),
+ * 4 or 8 points per edge, with a priori error bounds.  _apart: 1 when the
+ * polygons are apart, filling *g; sep2 is the squared centroid distance,
+ * pp the sum over edge pairs of |e_p . e_q| lp lq (perpendicular pairs,
+ * skipped exactly, left out).
+ * _bound: the bound on the K-point rule's error in S (K = 3, 4, 8),
+ * round-off included.
+ * _sum: the rule's S (K = 4, 8).  _soa: an edge's K points as x[K], y[K],
+ * z[K]. */
+typedef struct rad_ff_gauss_bounds {
+    double num, rho2, roundoff;
+} rad_ff_gauss_bounds;
+void rad_ff_gauss_soa(const rad_ff_edge *e, int k, double *out);
+int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
+                       double scale2, double pp, rad_ff_gauss_bounds *g);
+double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k);
+double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2);
 
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to
