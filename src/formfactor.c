@@ -68,53 +68,6 @@ void rad_ff_options_init(rad_ff_options *opt)
     opt->accuracy = RAD_ACCURACY_DEFAULT;
 }
 
-/* ---- closed forms of the log integrals ---------------------------------- */
-
-/* H(u) with H''(u) = ln sqrt(u^2 + d^2), up to an affine function of u:
- *   H(u) = (u^2 - d^2)/4 ln(u^2 + d^2) - 3u^2/4 + d u atan(u/d),
- * and for d = 0, H(u) = u^2/2 ln|u| - 3u^2/4 (H(0) = 0).  Derived by
- * integrating ln sqrt(u^2 + d^2) twice (Gradshteyn & Ryzhik 2.733.1 and
- * 2.822.1); the colinear case is the limit d -> 0. */
-static double h_parallel(double u, double d)
-{
-    if (d == 0)
-        return u == 0 ? 0.0 : u * u * (0.5 * log(fabs(u)) - 0.75);
-    /* minus the constant -d^2/4 ln d^2, which the second difference in
-     * rad_ln_parallel annihilates: this form has no d^2 ln d term, so lines
-     * far apart against the edges (d >> u) do not cancel catastrophically:
-     * H~(u) = u^2/4 ln(u^2 + d^2) - d^2/4 log1p(u^2/d^2) - 3u^2/4 + d u atan(u/d) */
-    double u2 = u * u, d2 = d * d;
-    return 0.25 * u2 * log(u2 + d2) - 0.25 * d2 * log1p(u2 / d2) - 0.75 * u2 +
-           d * u * atan2(u, d);
-}
-
-double rad_ln_parallel(double a1, double a2, double b1, double b2, double d)
-{
-    /* integral_a1^a2 integral_b1^b2 f(s - t) dt ds with f = H'' is
-     * H(a2-b1) + H(a1-b2) - H(a1-b1) - H(a2-b2). */
-    d = fabs(d);
-    return h_parallel(a2 - b1, d) + h_parallel(a1 - b2, d) - h_parallel(a1 - b1, d) -
-           h_parallel(a2 - b2, d);
-}
-
-/* G(v) = integral of ln sqrt(v^2 + h^2) dv
- *      = v ln sqrt(v^2 + h^2) - v + h atan(v/h)   (G&R 2.733.1). */
-static double g_point(double v, double h)
-{
-    if (h == 0)
-        return v == 0 ? 0.0 : v * (log(fabs(v)) - 1.0);
-    return 0.5 * v * log(v * v + h * h) - v + h * atan2(v, h);
-}
-
-/* integral_0^L ln |X - (Q0 + t e)| dt, e a unit vector. */
-static double ln_point_segment(rad_vec3 x, rad_vec3 q0, rad_vec3 e, double len)
-{
-    rad_vec3 w = v3_sub(x, q0);
-    double t0 = v3_dot(w, e);
-    double h = v3_norm(v3_sub(w, v3_scale(e, t0)));
-    return g_point(len - t0, h) - g_point(-t0, h);
-}
-
 /* ---- quadrature of one edge pair ---------------------------------------- */
 
 typedef rad_ff_edge ff_edge;
@@ -192,29 +145,6 @@ static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
     return ln_gauss3_pts(pa, qb, v3(0, 0, 0), p->len, q->len, inv_s2);
 }
 
-/* Parallel edges (e_p = +-e_q): the closed form, in p's coordinate.
- * *mag receives the size of the terms it adds (for the round-off bound). */
-static double ln_parallel_edges(const ff_edge *p, const ff_edge *q, double *mag)
-{
-    rad_vec3 w0 = v3_sub(q->p0, p->p0);
-    rad_vec3 w1 = v3_add(w0, q->d);
-    double b1 = v3_dot(w0, p->e), b2 = v3_dot(w1, p->e);
-    /* distance between the lines, from both ends of q (mean of two) */
-    double d0 = v3_norm(v3_sub(w0, v3_scale(p->e, b1)));
-    double d1 = v3_norm(v3_sub(w1, v3_scale(p->e, b2)));
-    double d = 0.5 * (d0 + d1);
-    if (b1 > b2) {
-        double t = b1;
-        b1 = b2;
-        b2 = t;
-    }
-    const double a2 = p->len;
-    double h1 = h_parallel(a2 - b1, d), h2 = h_parallel(-b2, d);
-    double h3 = h_parallel(-b1, d), h4 = h_parallel(a2 - b2, d);
-    *mag = fabs(h1) + fabs(h2) + fabs(h3) + fabs(h4);
-    return h1 + h2 - h3 - h4; /* rad_ln_parallel(0, len, b1, b2, d) */
-}
-
 /* Colinear: parallel edges on one line (distance between the lines below
  * 1e-12 of the longer edge).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */
@@ -242,8 +172,6 @@ static inline int ln_colinear(const ff_edge *p, const ff_edge *q)
 
 #if defined(__GNUC__)
 typedef double lane4 __attribute__((vector_size(32)));
-#else
-typedef struct lane4 { double v[4]; } lane4; /* unused: see below */
 #endif
 
 RAD_LOG_INLINE double classic9_flush(const double *arg, const double *coef, int m)
@@ -295,10 +223,9 @@ static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff
                 ff_edge qe = eb[q];
                 qe.p0 = v3_add(qe.p0, shift);
                 if (v3_dot(cr, cr) < 1e-26 && ln_colinear(&ea[p], &qe)) {
-                    double mag;
                     if (isnan(ln_s))
                         ln_s = 0.5 * log(scale2);
-                    s += dot * (ln_parallel_edges(&ea[p], &qe, &mag) - ea[p].len * qe.len * ln_s);
+                    s += dot * (rad_ff_ln_parallel_edges(&ea[p], &qe) - ea[p].len * qe.len * ln_s);
                     continue;
                 }
             }
@@ -338,79 +265,6 @@ static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff
     if (pp)
         *pp = sum_ll;
     return s;
-}
-
-/* Adaptive Gauss-Kronrod (7-15) over p of the closed-form inner integral
- * over q.  Kronrod nodes and weights: Piessens et al., QUADPACK (1983),
- * routine QK15. */
-static const double gk_x[8] = {
-    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-    0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
-static const double gk_wk[8] = {
-    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-static const double gk_wg[4] = {
-    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
-
-static double gk15(const ff_edge *p, const ff_edge *q, double a, double b, double *err)
-{
-    double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double fc = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c)), q->p0, q->e, q->len);
-    double rk = gk_wk[7] * fc, rg = gk_wg[3] * fc;
-    for (int k = 0; k < 7; k++) {
-        double dx = h * gk_x[k];
-        double f1 = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c - dx)), q->p0, q->e, q->len);
-        double f2 = ln_point_segment(v3_add(p->p0, v3_scale(p->e, c + dx)), q->p0, q->e, q->len);
-        rk += gk_wk[k] * (f1 + f2);
-        if (k % 2 == 1)
-            rg += gk_wg[k / 2] * (f1 + f2);
-    }
-    *err = fabs((rk - rg) * h);
-    return rk * h;
-}
-
-/* Adaptive bisection until the Gauss-Kronrod estimate meets the panel's
- * share of tol.  A panel also stops when its estimate is down to round-off
- * (64 eps times the size of what it integrates: below that bisection only
- * chases noise), and the whole integral stops splitting after
- * ADAPT_MAX_PANELS panels; the estimate that is returned says what was
- * reached, so a caller never waits forever and never gets a false claim. */
-#define ADAPT_MAX_PANELS 2000
-
-typedef struct adapt_state {
-    double err;
-    int panels;
-} adapt_state;
-
-static double ln_adaptive_panel(const ff_edge *p, const ff_edge *q, double a, double b,
-                                double tol, int depth, adapt_state *st)
-{
-    double e;
-    double r = gk15(p, q, a, b, &e);
-    double noise = 64 * DBL_EPSILON * (fabs(r) + (b - a) * q->len);
-    st->panels++;
-    if (e <= tol || e <= noise || depth >= 40 || st->panels >= ADAPT_MAX_PANELS ||
-        b - a <= 1e-15 * p->len) {
-        st->err += fmax(e, noise);
-        return r;
-    }
-    double m = 0.5 * (a + b);
-    return ln_adaptive_panel(p, q, a, m, 0.5 * tol, depth + 1, st) +
-           ln_adaptive_panel(p, q, m, b, 0.5 * tol, depth + 1, st);
-}
-
-static double ln_adaptive(const ff_edge *p, const ff_edge *q, double a, double b,
-                          double tol, int depth, double *err)
-{
-    adapt_state st = {0, 0};
-    double r = ln_adaptive_panel(p, q, a, b, tol, depth, &st);
-    *err += st.err;
-    return r;
 }
 
 /* ---- one polygon pair ---------------------------------------------------- */
@@ -511,50 +365,30 @@ static int has_skew(const ff_edge *ea, int na, const ff_edge *eb, int nb)
     return 0;
 }
 
-/* The contour double sum S for two polygons known to face each other.
- * classic: the paper's rule.  Otherwise closed forms for parallel edges and
- * the semi-analytic rule for skew ones, with absolute tolerance `tol` on S
- * shared among the edge pairs; *errest gets the quadrature error estimates
- * plus a round-off bound (16 eps times the size of the terms summed). */
-static double contour_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb,
-                          const rad_ff_options *opt, double scale2, double tol,
-                          double *errest)
+/* The contour sum S by the paper's rule for two polygons known to face each
+ * other (clipped ones, or K other than 3): K Gauss points per edge in each
+ * variable, the closed form for colinear edges (Goral et al. 1984). */
+static double classic_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb, int k,
+                          double scale2)
 {
-    const int k = opt->quadrature;
     const double inv_s2 = 1.0 / scale2, ln_s = 0.5 * log(scale2);
-    const int classic = opt->accuracy == RAD_ACCURACY_CLASSIC;
-    double s = 0, err = 0, mag = 0;
-    int pairs = 0; /* contributing edge pairs share the adaptive tolerance */
-    for (int p = 0; !classic && p < na; p++)
-        for (int q = 0; q < nb; q++)
-            pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
+    double s = 0;
     /* Every I_pq is the integral of ln(r/s), s = sqrt(scale2): the same
      * constant for all edge pairs, so S is unchanged and its terms small. */
     for (int p = 0; p < na; p++)
         for (int q = 0; q < nb; q++) {
-            double dot = v3_dot(ea[p].e, eb[q].e), m = 0;
+            const double dot = v3_dot(ea[p].e, eb[q].e);
             if (fabs(dot) < 1e-14)
                 continue; /* perpendicular: no contribution */
-            rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
-            int parallel = v3_dot(cr, cr) < 1e-26;
-            const double lplq = ea[p].len * eb[q].len;
+            const rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
             double I;
-            if (parallel && (!classic || ln_colinear(&ea[p], &eb[q]))) {
-                I = ln_parallel_edges(&ea[p], &eb[q], &m) - lplq * ln_s;
-            } else if (classic) {
-                I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2) : ln_gauss(&ea[p], &eb[q], k, inv_s2);
-            } else {
-                double e = 0;
-                I = ln_adaptive(&ea[p], &eb[q], 0, ea[p].len, tol / (pairs * fabs(dot)), 0, &e);
-                err += fabs(dot) * e;
-                m = 8 * fabs(I) + lplq * fabs(ln_s);
-                I -= lplq * ln_s;
-            }
-            mag += fabs(dot) * m;
+            if (v3_dot(cr, cr) < 1e-26 && ln_colinear(&ea[p], &eb[q]))
+                I = rad_ff_ln_parallel_edges(&ea[p], &eb[q]) - ea[p].len * eb[q].len * ln_s;
+            else
+                I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2)
+                           : ln_gauss(&ea[p], &eb[q], k, inv_s2);
             s += dot * I;
         }
-    if (errest)
-        *errest = classic ? NAN : err + 16 * DBL_EPSILON * mag;
     return s;
 }
 
@@ -644,14 +478,15 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
             *errest = NAN;
         return *contour / (2 * RAD_PI * a->area);
     }
-    if (opt->accuracy == RAD_ACCURACY_DEFAULT && !nega && !negb && a->gauss3 && b->gauss3 &&
+    if (opt->accuracy != RAD_ACCURACY_CLASSIC && !nega && !negb && a->gauss3 && b->gauss3 &&
         a->gauss8 && b->gauss8) {
-        double s4, e4;
-        if (gauss_tiers(a, b, sep, scale2, 1e-8, &s4, &e4)) {
-            *contour = s4;
+        double sg, eg;
+        const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-11 : 1e-8;
+        if (gauss_tiers(a, b, sep, scale2, rel, &sg, &eg)) {
+            *contour = sg;
             if (errest)
-                *errest = e4;
-            return s4 / (2 * RAD_PI * a->area);
+                *errest = eg;
+            return sg / (2 * RAD_PI * a->area);
         }
     }
     /* edges in coordinates centred on A's centroid: precomputed unless
@@ -675,7 +510,9 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     }
     double s, e = 0;
     if (opt->accuracy == RAD_ACCURACY_CLASSIC) {
-        s = contour_sum(ea, mea, eb, meb, opt, scale2, 0, errest);
+        s = classic_sum(ea, mea, eb, meb, opt->quadrature, scale2);
+        if (errest)
+            *errest = NAN;
     } else {
         /* target relative error of S: 1e-9 (reference), 1e-6 (default), with a
          * margin of 100 for the estimates */
@@ -695,17 +532,22 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
              * classic rule sets the scale of S for the absolute tolerance
              * of their adaptive quadrature; parallel edges need none. */
             double s0 = 0;
-            if (has_skew(ea, mea, eb, meb)) {
-                rad_ff_options c = *opt;
-                c.accuracy = RAD_ACCURACY_CLASSIC;
-                c.quadrature = 3;
-                s0 = fabs(contour_sum(ea, mea, eb, meb, &c, scale2, 0, NULL));
-            }
-            s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * s0, &e);
+            if (has_skew(ea, mea, eb, meb))
+                s0 = fabs(classic_sum(ea, mea, eb, meb, 3, scale2));
+            s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * s0, 0, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
-                s = contour_sum(ea, mea, eb, meb, opt, scale2, rel * fabs(s), &e);
-            /* still short of the tolerance (long thin pairs cancel in the
-             * contour): the area form, if it does better */
+                s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 0, &e);
+            /* still short of the tolerance: the terms cancel beyond double
+             * (long thin pairs); the same in long double, if it does better */
+            if (e > rel * fabs(s)) {
+                double sx, ex;
+                sx = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 1, &ex);
+                if (ex < e) {
+                    s = sx;
+                    e = ex;
+                }
+            }
+            /* and failing that, the area form, if it does better */
             double sa, ea_;
             if (e > rel * fabs(s) && area == 1 &&
                 rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &sa,

@@ -87,6 +87,15 @@ int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
 double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k);
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2);
 
+/* The contour sum S by closed forms (parallel edge pairs) and adaptive
+ * quadrature (skew ones) with absolute tolerance tol, every I_pq
+ * integrating ln(r/s) with s^2 = scale2; in long double if `extended`
+ * (ffcontour.c).  *errest gets its error estimate. */
+double rad_ff_contour(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
+                      double scale2, double tol, int extended, double *errest);
+/* The closed form of the integral of ln r over two parallel edges. */
+double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q);
+
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to
  * `origin`: orders rise until two agree to rel_tol.  Returns 0 with *s and

@@ -1,0 +1,115 @@
+/* ffcontour.c -- the contour integral by closed forms and adaptive
+ * quadrature, in double and, where double cancels, in long double.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The contour sum S = sum_pq (e_p . e_q) I_pq (formfactor.c) with
+ * I_pq = integral over edge p and edge q of ln(r/s):
+ *
+ *   parallel edges, d apart: the closed form
+ *     I = H(a2-b1) + H(a1-b2) - H(a1-b1) - H(a2-b2),  H'' = ln sqrt(u^2 + d^2),
+ *     H(u) = (u^2 - d^2)/4 ln(u^2 + d^2) - 3u^2/4 + d u atan(u/d)
+ *   (integrating ln sqrt(u^2 + d^2) twice: Gradshteyn & Ryzhik 2.733.1 and
+ *   2.822.1; d = 0, the colinear case, is the limit H(u) = u^2/2 ln|u| -
+ *   3u^2/4).  The code uses H~ = H + d^2/4 ln d^2, which the second
+ *   difference does not see and which has no d^2 ln d term:
+ *     H~(u) = u^2/4 ln(u^2 + d^2) - d^2/4 log1p(u^2/d^2) - 3u^2/4 + d u atan(u/d),
+ *   so lines far apart against the edges (d >> u) do not cancel;
+ *
+ *   skew edges: the inner integral over q in closed form,
+ *     G(v) = integral of ln sqrt(v^2 + h^2) dv = v ln sqrt(v^2 + h^2) - v + h atan(v/h)
+ *   (G&R 2.733.1), for the point of p at distance h from q's line, and the
+ *   outer one over p by globally adaptive Gauss-Kronrod 7-15 (Piessens et
+ *   al., QUADPACK, 1983, routines QK15 and QAG): the panel with the largest
+ *   error above its round-off floor is bisected until the errors sum to the
+ *   tolerance, or every panel is down to its floor (64 eps times the size
+ *   of the closed-form terms it sums: G of a far point and a short edge is
+ *   a small difference of large values), or ADAPT_MAX_PANELS panels are
+ *   used; the estimate returned (errors and floors summed) says what was
+ *   reached, so a caller never waits long and never gets a false claim.
+ *
+ * The error estimate of S is the quadrature's plus 16 eps times the sum of
+ * the magnitudes of the terms.  For long thin pairs (two slivers side by
+ * side, a long strip and a small patch) the terms exceed S by 1e8 and
+ * more, and double's 16 eps of them is more than the tolerance; the long
+ * double version (64-bit significand on x86-64, eps = 2^-63, 2048 times
+ * smaller) then gets below it.  Inputs are doubles and convert exactly.
+ */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+
+#include "formfactor.h"
+#include "vec.h"
+
+/* Kronrod 15-point nodes and weights and the embedded 7-point Gauss
+ * weights (QUADPACK QK15). */
+static const double gk_x[8] = {
+    0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+    0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+    0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+    0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+static const double gk_wk[8] = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+    0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+    0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+static const double gk_wg[4] = {
+    0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+    0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+
+#define ADAPT_MAX_PANELS 400
+
+/* double */
+#define R double
+#define SUF(name) name##_d
+#define R_LOG log
+#define R_LOG1P log1p
+#define R_ATAN2 atan2
+#define R_SQRT sqrt
+#define R_FABS fabs
+#define R_EPS DBL_EPSILON
+#include "ffcontour_tmpl.h"
+#undef R
+#undef SUF
+#undef R_LOG
+#undef R_LOG1P
+#undef R_ATAN2
+#undef R_SQRT
+#undef R_FABS
+#undef R_EPS
+
+/* long double */
+#define R long double
+#define SUF(name) name##_ld
+#define R_LOG logl
+#define R_LOG1P log1pl
+#define R_ATAN2 atan2l
+#define R_SQRT sqrtl
+#define R_FABS fabsl
+#define R_EPS LDBL_EPSILON
+#include "ffcontour_tmpl.h"
+
+double rad_ff_contour(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
+                      double scale2, double tol, int extended, double *errest)
+{
+    return extended ? contour_ld(ea, na, eb, nb, scale2, tol, errest)
+                    : contour_d(ea, na, eb, nb, scale2, tol, errest);
+}
+
+double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q)
+{
+    const edge_d ep = edge_of_d(p), eq = edge_of_d(q);
+    double mag;
+    return ln_parallel_edges_d(&ep, &eq, &mag);
+}
+
+double rad_ln_parallel(double a1, double a2, double b1, double b2, double d)
+{
+    /* integral_a1^a2 integral_b1^b2 f(s - t) dt ds with f = H'' is
+     * H(a2-b1) + H(a1-b2) - H(a1-b1) - H(a2-b2). */
+    d = fabs(d);
+    return h_parallel_d(a2 - b1, d) + h_parallel_d(a1 - b2, d) - h_parallel_d(a1 - b1, d) -
+           h_parallel_d(a2 - b2, d);
+}

@@ -1,0 +1,216 @@
+/* ffcontour_tmpl.h -- the contour's closed forms and adaptive quadrature,
+ * written once and compiled twice by ffcontour.c: in double and in long
+ * double (64-bit significand on x86), for pairs whose terms cancel beyond
+ * what double can carry.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Before including, ffcontour.c defines
+ *   R          the floating type,
+ *   SUF(name)  name with the type's suffix,
+ *   R_LOG, R_LOG1P, R_ATAN2, R_SQRT, R_FABS   its libm functions,
+ *   R_EPS      its machine epsilon.
+ * The formulas and their sources are in ffcontour.c.
+ */
+
+typedef struct SUF(vec) {
+    R x, y, z;
+} SUF(vec);
+
+static inline SUF(vec) SUF(vec_of)(rad_vec3 a)
+{
+    SUF(vec) r = {a.x, a.y, a.z};
+    return r;
+}
+static inline SUF(vec) SUF(vsub)(SUF(vec) a, SUF(vec) b)
+{
+    SUF(vec) r = {a.x - b.x, a.y - b.y, a.z - b.z};
+    return r;
+}
+static inline SUF(vec) SUF(vaxpy)(SUF(vec) a, R t, SUF(vec) e) /* a + t e */
+{
+    SUF(vec) r = {a.x + t * e.x, a.y + t * e.y, a.z + t * e.z};
+    return r;
+}
+static inline SUF(vec) SUF(vscale)(SUF(vec) a, R t)
+{
+    SUF(vec) r = {a.x * t, a.y * t, a.z * t};
+    return r;
+}
+static inline R SUF(vdot)(SUF(vec) a, SUF(vec) b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/* An edge in the working type. */
+typedef struct SUF(edge) {
+    SUF(vec) p0, d, e;
+    R len;
+} SUF(edge);
+
+static SUF(edge) SUF(edge_of)(const rad_ff_edge *x)
+{
+    SUF(edge) r;
+    r.p0 = SUF(vec_of)(x->p0);
+    r.d = SUF(vec_of)(x->d);
+    /* the unit direction again in this type, from d */
+    r.len = R_SQRT(SUF(vdot)(r.d, r.d));
+    r.e = SUF(vscale)(r.d, 1 / r.len);
+    return r;
+}
+
+/* H~(u) of ffcontour.c (parallel segments d apart). */
+static R SUF(h_parallel)(R u, R d)
+{
+    if (d == 0)
+        return u == 0 ? 0 : u * u * (R_LOG(R_FABS(u)) / 2 - (R)0.75);
+    R u2 = u * u, d2 = d * d;
+    return u2 / 4 * R_LOG(u2 + d2) - d2 / 4 * R_LOG1P(u2 / d2) - (R)0.75 * u2 +
+           d * u * R_ATAN2(u, d);
+}
+
+/* G(v) of ffcontour.c (a point h from a line). */
+static R SUF(g_point)(R v, R h)
+{
+    if (h == 0)
+        return v == 0 ? 0 : v * (R_LOG(R_FABS(v)) - 1);
+    return v / 2 * R_LOG(v * v + h * h) - v + h * R_ATAN2(v, h);
+}
+
+/* integral_0^L ln |X - (Q0 + t e)| dt, e a unit vector; *mag gets the
+ * size of the two terms it subtracts. */
+static R SUF(ln_point_segment)(SUF(vec) x, const SUF(edge) *q, R *mag)
+{
+    SUF(vec) w = SUF(vsub)(x, q->p0);
+    R t0 = SUF(vdot)(w, q->e);
+    SUF(vec) perp = SUF(vaxpy)(w, -t0, q->e);
+    R h = R_SQRT(SUF(vdot)(perp, perp));
+    R g1 = SUF(g_point)(q->len - t0, h), g0 = SUF(g_point)(-t0, h);
+    *mag = R_FABS(g1) + R_FABS(g0);
+    return g1 - g0;
+}
+
+/* Parallel edges: the closed form in p's coordinate; *mag gets the size of
+ * the terms added. */
+static R SUF(ln_parallel_edges)(const SUF(edge) *p, const SUF(edge) *q, R *mag)
+{
+    SUF(vec) w0 = SUF(vsub)(q->p0, p->p0);
+    SUF(vec) w1 = SUF(vaxpy)(w0, 1, q->d);
+    R b1 = SUF(vdot)(w0, p->e), b2 = SUF(vdot)(w1, p->e);
+    /* distance between the lines, from both ends of q (mean of two) */
+    SUF(vec) x0 = SUF(vaxpy)(w0, -b1, p->e), x1 = SUF(vaxpy)(w1, -b2, p->e);
+    R d = (R_SQRT(SUF(vdot)(x0, x0)) + R_SQRT(SUF(vdot)(x1, x1))) / 2;
+    if (b1 > b2) {
+        R t = b1;
+        b1 = b2;
+        b2 = t;
+    }
+    const R a2 = p->len;
+    R h1 = SUF(h_parallel)(a2 - b1, d), h2 = SUF(h_parallel)(-b2, d);
+    R h3 = SUF(h_parallel)(-b1, d), h4 = SUF(h_parallel)(a2 - b2, d);
+    *mag = R_FABS(h1) + R_FABS(h2) + R_FABS(h3) + R_FABS(h4);
+    return h1 + h2 - h3 - h4;
+}
+
+/* Gauss-Kronrod 7-15 on [a, b] of p's parameter: the integral; *err the
+ * Kronrod-Gauss difference, *floor 64 eps times the size of the terms. */
+static R SUF(gk15)(const SUF(edge) *p, const SUF(edge) *q, R a, R b, R *err, R *floor)
+{
+    R c = (a + b) / 2, h = (b - a) / 2, m, mk;
+    R fc = SUF(ln_point_segment)(SUF(vaxpy)(p->p0, c, p->e), q, &m);
+    R rk = (R)gk_wk[7] * fc, rg = (R)gk_wg[3] * fc;
+    mk = (R)gk_wk[7] * m;
+    for (int k = 0; k < 7; k++) {
+        R dx = h * (R)gk_x[k], m1, m2;
+        R f1 = SUF(ln_point_segment)(SUF(vaxpy)(p->p0, c - dx, p->e), q, &m1);
+        R f2 = SUF(ln_point_segment)(SUF(vaxpy)(p->p0, c + dx, p->e), q, &m2);
+        rk += (R)gk_wk[k] * (f1 + f2);
+        mk += (R)gk_wk[k] * (m1 + m2);
+        if (k % 2 == 1)
+            rg += (R)gk_wg[k / 2] * (f1 + f2);
+    }
+    *err = R_FABS((rk - rg) * h);
+    *floor = 64 * R_EPS * mk * R_FABS(h);
+    return rk * h;
+}
+
+typedef struct SUF(panel) {
+    R a, b, r, e, floor;
+} SUF(panel);
+
+/* Globally adaptive integral over p (QAG's strategy): returns it, adds its
+ * error estimate to *err. */
+static R SUF(adaptive)(const SUF(edge) *p, const SUF(edge) *q, R tol, R *err)
+{
+    SUF(panel) pan[ADAPT_MAX_PANELS];
+    int n = 1;
+    pan[0].a = 0;
+    pan[0].b = p->len;
+    pan[0].r = SUF(gk15)(p, q, 0, p->len, &pan[0].e, &pan[0].floor);
+    for (;;) {
+        R esum = 0;
+        int worst = -1;
+        for (int i = 0; i < n; i++) {
+            esum += pan[i].e;
+            if (pan[i].e > pan[i].floor && pan[i].b - pan[i].a > 1e-15 * p->len &&
+                (worst < 0 || pan[i].e - pan[i].floor > pan[worst].e - pan[worst].floor))
+                worst = i;
+        }
+        if (esum <= tol || worst < 0 || n == ADAPT_MAX_PANELS)
+            break;
+        const R a = pan[worst].a, b = pan[worst].b, m = (a + b) / 2;
+        pan[worst].b = m;
+        pan[worst].r = SUF(gk15)(p, q, a, m, &pan[worst].e, &pan[worst].floor);
+        pan[n].a = m;
+        pan[n].b = b;
+        pan[n].r = SUF(gk15)(p, q, m, b, &pan[n].e, &pan[n].floor);
+        n++;
+    }
+    R r = 0, e = 0;
+    for (int i = 0; i < n; i++) {
+        r += pan[i].r;
+        e += pan[i].e > pan[i].floor ? pan[i].e : pan[i].floor;
+    }
+    *err += e;
+    return r;
+}
+
+/* The contour sum S over all edge pairs: closed forms for parallel pairs,
+ * adaptive quadrature for skew ones with absolute tolerance tol on S shared
+ * among them; every I_pq integrates ln(r/s), s^2 = scale2.  *errest gets
+ * the quadrature estimates plus 16 eps times the size of the terms. */
+static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
+                           double scale2, double tol, double *errest)
+{
+    const R ln_s = R_LOG((R)scale2) / 2;
+    R s = 0, err = 0, mag = 0;
+    int pairs = 0; /* contributing edge pairs share the adaptive tolerance */
+    for (int p = 0; p < na; p++)
+        for (int q = 0; q < nb; q++)
+            pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
+    for (int p = 0; p < na; p++) {
+        const SUF(edge) ep = SUF(edge_of)(&ea[p]);
+        for (int q = 0; q < nb; q++) {
+            const double dot_d = v3_dot(ea[p].e, eb[q].e);
+            if (fabs(dot_d) < 1e-14)
+                continue; /* perpendicular: no contribution */
+            const rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
+            const SUF(edge) eq = SUF(edge_of)(&eb[q]);
+            const R dot = SUF(vdot)(ep.e, eq.e), lplq = ep.len * eq.len;
+            R I, m;
+            if (v3_dot(cr, cr) < 1e-26) { /* parallel */
+                I = SUF(ln_parallel_edges)(&ep, &eq, &m) - lplq * ln_s;
+            } else {
+                R e = 0;
+                I = SUF(adaptive)(&ep, &eq, (R)tol / (pairs * R_FABS(dot)), &e);
+                err += R_FABS(dot) * e;
+                m = 8 * R_FABS(I) + lplq * R_FABS(ln_s);
+                I -= lplq * ln_s;
+            }
+            mag += R_FABS(dot) * m;
+            s += dot * I;
+        }
+    }
+    *errest = (double)(err + 16 * R_EPS * mag);
+    return (double)s;
+}
