@@ -9,7 +9,11 @@
  *   R          the floating type,
  *   SUF(name)  name with the type's suffix,
  *   R_LOG, R_LOG1P, R_ATAN2, R_SQRT, R_FABS   its libm functions,
- *   R_EPS      its machine epsilon.
+ *   R_EPS      its machine epsilon,
+ * and optionally PAR_FLUSH(u, d, dot, m, &s, &mag), which adds the closed
+ * forms of m parallel edge pairs (four H arguments each, distance, factor
+ * e_p . e_q) to s and their terms' sizes to mag, for the pairs PAR_OK(u, d)
+ * accepts; the others go one by one.
  * The formulas and their sources are in ffcontour.c.
  */
 
@@ -90,24 +94,34 @@ static R SUF(ln_point_segment)(SUF(vec) x, const SUF(edge) *q, R *mag)
     return g1 - g0;
 }
 
-/* Parallel edges: the closed form in p's coordinate; *mag gets the size of
- * the terms added. */
-static R SUF(ln_parallel_edges)(const SUF(edge) *p, const SUF(edge) *q, R *mag)
+/* Parallel edges: the closed form in p's coordinate.  _setup gives the
+ * four arguments of H (signs +, +, -, -) and the distance of the lines. */
+static void SUF(parallel_setup)(const SUF(edge) *p, const SUF(edge) *q, R u[4], R *dist)
 {
     SUF(vec) w0 = SUF(vsub)(q->p0, p->p0);
     SUF(vec) w1 = SUF(vaxpy)(w0, 1, q->d);
     R b1 = SUF(vdot)(w0, p->e), b2 = SUF(vdot)(w1, p->e);
     /* distance between the lines, from both ends of q (mean of two) */
     SUF(vec) x0 = SUF(vaxpy)(w0, -b1, p->e), x1 = SUF(vaxpy)(w1, -b2, p->e);
-    R d = (R_SQRT(SUF(vdot)(x0, x0)) + R_SQRT(SUF(vdot)(x1, x1))) / 2;
+    *dist = (R_SQRT(SUF(vdot)(x0, x0)) + R_SQRT(SUF(vdot)(x1, x1))) / 2;
     if (b1 > b2) {
         R t = b1;
         b1 = b2;
         b2 = t;
     }
-    const R a2 = p->len;
-    R h1 = SUF(h_parallel)(a2 - b1, d), h2 = SUF(h_parallel)(-b2, d);
-    R h3 = SUF(h_parallel)(-b1, d), h4 = SUF(h_parallel)(a2 - b2, d);
+    u[0] = p->len - b1;
+    u[1] = -b2;
+    u[2] = -b1;
+    u[3] = p->len - b2;
+}
+
+/* ... and its value; *mag gets the size of the terms added. */
+static R SUF(ln_parallel_edges)(const SUF(edge) *p, const SUF(edge) *q, R *mag)
+{
+    R u[4], d;
+    SUF(parallel_setup)(p, q, u, &d);
+    R h1 = SUF(h_parallel)(u[0], d), h2 = SUF(h_parallel)(u[1], d);
+    R h3 = SUF(h_parallel)(u[2], d), h4 = SUF(h_parallel)(u[3], d);
     *mag = R_FABS(h1) + R_FABS(h2) + R_FABS(h3) + R_FABS(h4);
     return h1 + h2 - h3 - h4;
 }
@@ -184,6 +198,10 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
 {
     const R ln_s = R_LOG((R)scale2) / 2;
     R s = 0, err = 0, mag = 0;
+#ifdef PAR_FLUSH
+    double bu[4 * PAR_BATCH], bd[PAR_BATCH], bdot[PAR_BATCH];
+    int nbatch = 0;
+#endif
     int pairs = 0; /* contributing edge pairs share the adaptive tolerance */
     for (int p = 0; p < na; p++)
         for (int q = 0; q < nb; q++)
@@ -199,6 +217,23 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
             const R dot = SUF(vdot)(ep.e, eq.e), lplq = ep.len * eq.len;
             R I, m;
             if (v3_dot(cr, cr) < 1e-26) { /* parallel */
+#ifdef PAR_FLUSH
+                R u[4], d;
+                SUF(parallel_setup)(&ep, &eq, u, &d);
+                if (PAR_OK(u, d)) { /* batched: PAR_FLUSH adds dot (H sum) */
+                    for (int k = 0; k < 4; k++)
+                        bu[4 * nbatch + k] = u[k];
+                    bd[nbatch] = d;
+                    bdot[nbatch++] = dot;
+                    if (nbatch == PAR_BATCH) {
+                        PAR_FLUSH(bu, bd, bdot, nbatch, &s, &mag);
+                        nbatch = 0;
+                    }
+                    s -= dot * lplq * ln_s;
+                    mag += R_FABS(dot * lplq * ln_s);
+                    continue;
+                }
+#endif
                 I = SUF(ln_parallel_edges)(&ep, &eq, &m) - lplq * ln_s;
             } else {
                 R e = 0;
@@ -211,6 +246,10 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
             s += dot * I;
         }
     }
+#ifdef PAR_FLUSH
+    if (nbatch > 0)
+        PAR_FLUSH(bu, bd, bdot, nbatch, &s, &mag);
+#endif
     *errest = (double)(err + 16 * R_EPS * mag);
     return (double)s;
 }

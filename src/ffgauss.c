@@ -15,7 +15,7 @@
  * 25.4.29), K/2 distinct weights, so the K^2 products w_a w_b take
  * K/2 (K/2 + 1) / 2 values (3 for K = 4, 10 for K = 8): as for the
  * nine-point rule, the K^2 logs of an edge pair group into that many logs
- * of products, taken in batches by rad_log_batch (veclog.h).  Points are
+ * of products, taken in batches by rad_log_batch (vecmath.h).  Points are
  * stored per edge as x[K], y[K], z[K], so 4-lane vector operations give
  * the squared distances.
  *
@@ -51,7 +51,7 @@
 
 #include "formfactor.h"
 #include "vec.h"
-#include "veclog.h"
+#include "vecmath.h"
 
 #define RAD_PI 3.14159265358979323846
 #define THETA 0.9 /* how far towards the singularity the ellipse reaches */

@@ -27,22 +27,20 @@
  * How each I_pq is evaluated depends on the accuracy mode:
  *   classic    K-point Gauss-Legendre in each variable (K = 3: the paper's
  *              nine-point rule) and the closed form for colinear edges;
- *   default    first, for a pair apart from each other, the K-point Gauss
- *              rule in each variable, K = 3, 4 or 8, the first whose a
- *              priori bound is met (ffgauss.c; gauss_tiers below); if none
- *              is, as reference with its own tolerance:
- *   default,   a pair small against its separation (sum of the bounding
- *   reference  diagonals below the centroid distance, or below 1/4 of it
- *              in default, whose looser tolerance affords the contour's
- *              cancellation longer) is integrated over
- *              the areas instead (ffarea.c), where nothing cancels; the
- *              others by the contour with the closed form for every
- *              parallel edge pair (colinear included) and, for skew pairs,
- *              the inner integral in closed form and the outer one by
- *              adaptive Gauss-Kronrod.  Tolerances: relative 1e-8 of S
- *              (default, promising 1e-6) and 1e-11 (reference, promising
- *              1e-9); the error estimate is the quadrature's own plus a
- *              round-off bound of 16 eps times the size of the summed terms.
+ *   default,   the first route that meets the tolerance by its own
+ *   reference  estimate: (1) polygons apart: the K-point Gauss rule, K = 3,
+ *              4 or 8, under an a priori bound (ffgauss.c; gauss_tiers
+ *              below); (2) no skew edge pair: the closed forms, vectorised
+ *              (ffcontour.c); (3) a pair small against its separation (sum
+ *              of the bounding diagonals below the centroid distance, or
+ *              below 1/4 of it in default): area rules (ffarea.c), where
+ *              nothing cancels; (4) the contour with closed forms for
+ *              parallel edge pairs and adaptive Gauss-Kronrod over the
+ *              closed-form inner integral for skew ones (ffcontour.c), in
+ *              long double if double cancels too much, then the area rules
+ *              if they do better.  Tolerances: relative 1e-8 of S (default,
+ *              promising 1e-6) and 1e-11 (reference, promising 1e-9); every
+ *              estimate is the method's own plus a round-off bound.
  *              A negative result (possible only within its error) is
  *              clamped to 0 and the error estimate covers the clamp.
  */
@@ -57,7 +55,7 @@
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
-#include "veclog.h"
+#include "vecmath.h"
 
 #define RAD_PI 3.14159265358979323846
 
@@ -161,7 +159,7 @@ static inline int ln_colinear(const ff_edge *p, const ff_edge *q)
  * x[4], y[4], z[4] (rad_ff_poly.gauss3), so one 4-lane operation gives an
  * A point's squared distances to the three points of a B edge; the three
  * grouped products of ln_gauss3_pts are formed per edge pair and their logs
- * taken LOG_BATCH edge pairs at a time by rad_log_batch (veclog.c).  gb and
+ * taken LOG_BATCH edge pairs at a time by rad_log_batch (vecmath.h).  gb and
  * eb are relative to b's centroid, moved by `shift`.  Colinear edge pairs
  * take the closed form, as in contour_sum; `touch` says whether any can
  * exist (each polygon has at least two vertices on the other's plane:
@@ -397,10 +395,10 @@ static double classic_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb, 
  * off included, is within `rel` of its result.  The nine-point rule goes
  * first (it also yields the edge-pair sum the bounds need); its result,
  * accepted or not, then says which higher rule can succeed (S is s3 within
- * its bound), so none is computed in vain.  Returns 1 with *s, *e set, or
- * 0 (use the general path). */
+ * its bound), so none is computed in vain.  Rules above kmax are not
+ * tried.  Returns 1 with *s, *e set, or 0 (use the general path). */
 static int gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep,
-                       double scale2, double rel, double *s, double *e)
+                       double scale2, double rel, int kmax, double *s, double *e)
 {
     rad_ff_gauss_bounds g;
     double pp;
@@ -415,7 +413,7 @@ static int gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep,
         return 1;
     }
     const double est = s3 - bound;
-    for (int k = 4; k <= 8; k += 4) {
+    for (int k = 4; k <= kmax; k += 4) {
         bound = rad_ff_gauss_bound(&g, k);
         if (!(bound <= rel * est))
             continue;
@@ -427,6 +425,16 @@ static int gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep,
         }
     }
     return 0;
+}
+
+/* Store S and its estimate; F from a to b. */
+static double pair_done(const rad_ff_poly *a, double s, double e, double *contour,
+                        double *errest)
+{
+    *contour = s;
+    if (errest)
+        *errest = e;
+    return s / (2 * RAD_PI * a->area);
 }
 
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
@@ -478,16 +486,13 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
             *errest = NAN;
         return *contour / (2 * RAD_PI * a->area);
     }
+    /* polygons apart: the bounded Gauss rules (default, reference) */
     if (opt->accuracy != RAD_ACCURACY_CLASSIC && !nega && !negb && a->gauss3 && b->gauss3 &&
         a->gauss8 && b->gauss8) {
         double sg, eg;
         const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-11 : 1e-8;
-        if (gauss_tiers(a, b, sep, scale2, rel, &sg, &eg)) {
-            *contour = sg;
-            if (errest)
-                *errest = eg;
-            return sg / (2 * RAD_PI * a->area);
-        }
+        if (gauss_tiers(a, b, sep, scale2, rel, 8, &sg, &eg))
+            return pair_done(a, sg, eg, contour, errest);
     }
     /* edges in coordinates centred on A's centroid: precomputed unless
      * clipped */
@@ -517,6 +522,14 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         /* target relative error of S: 1e-9 (reference), 1e-6 (default), with a
          * margin of 100 for the estimates */
         const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-11 : 1e-8;
+        const int skew = has_skew(ea, mea, eb, meb);
+        /* no skew edge pair: the closed forms (vectorised), exact but for
+         * round-off */
+        if (!skew) {
+            s = rad_ff_contour(ea, mea, eb, meb, scale2, 0, 0, &e);
+            if (s > 0 && e <= rel * s)
+                return pair_done(a, s, e, contour, errest);
+        }
         const double r = v3_norm(sep);
         /* The contour's closed forms lose about eps (r/L)^4 to cancellation:
          * default (1e-8 internally) can afford r/L up to ~10, reference
@@ -532,7 +545,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
              * classic rule sets the scale of S for the absolute tolerance
              * of their adaptive quadrature; parallel edges need none. */
             double s0 = 0;
-            if (has_skew(ea, mea, eb, meb))
+            if (skew)
                 s0 = fabs(classic_sum(ea, mea, eb, meb, 3, scale2));
             s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * s0, 0, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
