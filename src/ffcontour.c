@@ -68,8 +68,9 @@ static const double gk_wg[4] = {
  * (others go one by one). */
 #define PAR_BATCH 32
 #define PAR_OK(u, d)                                                                        \
-    ((d) > 1e-150 && fabs((u)[0]) < 1e150 && fabs((u)[1]) < 1e150 && fabs((u)[2]) < 1e150 && \
-     fabs((u)[3]) < 1e150)
+    ((d) > 1e-150 && (d) < 1e150 && fabs((u)[0]) < 1e150 && fabs((u)[1]) < 1e150 &&          \
+     fabs((u)[2]) < 1e150 && fabs((u)[3]) < 1e150 &&                                        \
+     fabs((u)[0]) + fabs((u)[1]) + fabs((u)[2]) + fabs((u)[3]) < 1e150 * (d))
 #define PAR_FLUSH par_flush
 
 #if defined(HAVE_ATTRIBUTE_TARGET_CLONES)

@@ -235,6 +235,7 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
                 }
 #endif
                 I = SUF(ln_parallel_edges)(&ep, &eq, &m) - lplq * ln_s;
+                m += lplq * R_FABS(ln_s); /* as the batched path counts it */
             } else {
                 R e = 0;
                 I = SUF(adaptive)(&ep, &eq, (R)tol / (pairs * R_FABS(dot)), &e);

@@ -33,14 +33,34 @@
  * and |arg r^2| < 2 pi (two non-vanishing linear factors on a convex set),
  * so |ln(r/s)| <= M = (max |ln(|r^2|/s^2)| + 2 pi) / 2 (each |ln| bounded
  * from the exponent bits, within ln 2).  Gauss-Legendre
- * with K points then errs by at most
- *   E = 64/15 M rho1^(-2K) / (rho1^2 - 1)      (Trefethen 2013, Thm 19.3)
+ * with K points (degree 2K - 1, Trefethen's n = K - 1) then errs by at most
+ *   E = 64/15 M rho1^(-2(K-1)) / (rho1^2 - 1)
+ *     = 64/15 M rho1^(-2K) / (1 - rho1^-2)     (Trefethen 2013, Thm 19.3)
  * per unit interval integral, and the product rule on an edge pair of
  * lengths lp, lq by at most (lp lq / 4) * 2 (E_x + E_y) <= lp lq E (weights
  * positive, summing to 2).  Summed with the factors |e_p . e_q|, the error
  * of S is below P E, P = sum |e_p . e_q| lp lq, using the longest edge of
- * either polygon for h.  Round-off adds 16 eps times the sum of the magnitudes of the
- * terms, as in formfactor.c.
+ * either polygon for h.
+ *
+ * A second bound, from derivatives on the real edges, is far sharper for
+ * pairs many edge lengths apart (it holds no ln r magnitude and no
+ * ellipse margin), and the smaller of the two is used.  The K-point rule
+ * on an interval of length L errs by
+ *   L^(2K+1) (K!)^4 / ((2K+1) ((2K)!)^3) f^(2K)(xi)    (A&S 25.4.30),
+ * and along an edge ln r = Re ln(s - z), z complex with |s - z| = r, so
+ * |d^n ln r / ds^n| <= (n-1)! / r^n <= (n-1)! / D^n.  The product rule's
+ * error is the outer rule's on the inner integral plus the outer sum of
+ * the inner rule's errors, so for an edge pair
+ *   |E_pq| <= C_K lp lq (lp^(2K) + lq^(2K)) / D^(2K),
+ *   C_K = (K!)^4 (2K-1)! / ((2K+1) ((2K)!)^3) = 1/16800, 1/352800,
+ *         1/45053236800 for K = 3, 4, 8,
+ * and |E_S| <= 2 C_K P (lmax / D)^(2K), lmax the longest edge of either.
+ *
+ * D, a lower bound on the distance between the polygons, is the largest
+ * of the centroid distance less both radii and the caller's own bound
+ * (rad_ff_pair: the gap between bounding boxes, and the distance of each
+ * polygon's nearest vertex from the other's plane).  Round-off adds 16 eps
+ * times the sum of the magnitudes of the terms, as in formfactor.c.
  */
 #include <config.h>
 
@@ -83,42 +103,70 @@ static inline double abs_ln_bound(double x)
 }
 
 int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
-                       double scale2, double pp, rad_ff_gauss_bounds *g)
+                       double scale2, double dmin, rad_ff_gauss_bounds *g)
 {
     const double c = sqrt(sep2);
     /* every point of a polygon is within its radius of its centroid (it is
      * convex, so within the farthest vertex); a relative margin of 1e-12
      * covers the round-off of the radii */
     const double ra = a->radius * (1 + 1e-12), rb = b->radius * (1 + 1e-12);
-    const double D = c - ra - rb, R = c + ra + rb;
+    const double Dc = c - ra - rb, R = c + ra + rb;
+    const double D = Dc > dmin ? Dc : dmin;
     const double h = 0.5 * (a->lmax > b->lmax ? a->lmax : b->lmax);
     if (!(D > 1e-9 * c) || !(h > 0) || !(scale2 > DBL_MIN))
         return 0;
-    const double b1 = THETA * D / h, a1 = sqrt(1 + b1 * b1), rho = b1 + a1;
     const double inv_s2 = 1 / scale2;
-    const double lo = (1 - THETA) * D * (1 - THETA) * D * inv_s2;
-    const double hi = (a1 * h + R) * (a1 * h + R) * inv_s2;
     const double dlo = D * D * inv_s2, rhi = R * R * inv_s2;
-    if (!(lo > DBL_MIN) || !(hi < DBL_MAX) || !(dlo > DBL_MIN) || !(rhi < DBL_MAX))
+    if (!(dlo > DBL_MIN) || !(rhi < DBL_MAX))
         return 0;
-    const double llo = abs_ln_bound(lo), lhi = abs_ln_bound(hi);
-    const double M = 0.5 * ((llo > lhi ? llo : lhi) + 2 * RAD_PI);
-    g->rho2 = rho * rho;
-    g->num = pp * (64.0 / 15.0) * M;
+    g->D = D;
+    g->R = R;
+    g->h = h;
+    g->inv_s2 = inv_s2;
+    g->pp = 1;
+    g->q2 = 4 * h * h / (D * D); /* (lmax / D)^2 */
+    g->rho2 = 0;                 /* the ellipse bound: not yet */
     /* round-off: on the real edges |ln(r^2/s^2)| <= Lr (D <= r <= R); the
      * terms sum to at most P Lr / 2 in size (sum of w_a w_b is 4, each
      * coefficient lp lq / 8), and each grouped log carries about 10 eps
      * absolute from its product and its evaluation */
     const double l1 = abs_ln_bound(dlo), l2 = abs_ln_bound(rhi);
-    g->roundoff = 16 * DBL_EPSILON * 0.5 * pp * ((l1 > l2 ? l1 : l2) + 1);
+    g->roundoff = 16 * DBL_EPSILON * 0.5 * ((l1 > l2 ? l1 : l2) + 1);
     return 1;
+}
+
+void rad_ff_gauss_ellipse(rad_ff_gauss_bounds *g)
+{
+    const double D = g->D, h = g->h, R = g->R;
+    const double b1 = THETA * D / h, a1 = sqrt(1 + b1 * b1), rho = b1 + a1;
+    const double lo = (1 - THETA) * D * (1 - THETA) * D * g->inv_s2;
+    const double hi = (a1 * h + R) * (a1 * h + R) * g->inv_s2;
+    g->rho2 = 1; /* no bound (1 - 1/rho2 = 0) unless both ends are normal */
+    g->M = 0;
+    if (!(lo > DBL_MIN) || !(hi < DBL_MAX))
+        return;
+    const double llo = abs_ln_bound(lo), lhi = abs_ln_bound(hi);
+    g->M = 0.5 * ((llo > lhi ? llo : lhi) + 2 * RAD_PI);
+    g->rho2 = rho * rho;
+}
+
+/* x^K for K = 3, 4, 8 */
+static inline double pow_k(double x, int k)
+{
+    const double x2 = x * x, x4 = x2 * x2;
+    return k == 3 ? x2 * x : k == 4 ? x4 : x4 * x4;
 }
 
 double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k)
 {
-    const double r4 = g->rho2 * g->rho2, r8 = r4 * r4; /* rho^4, rho^8 */
-    const double r2k = k == 3 ? r4 * g->rho2 : k == 4 ? r8 : r8 * r8; /* rho^(2K) */
-    return g->num / (r2k * (g->rho2 - 1)) + g->roundoff;
+    /* C_K of the derivative bound (see the top of the file) */
+    const double ck = k == 3 ? 1 / 16800.0 : k == 4 ? 1 / 352800.0 : 1 / 45053236800.0;
+    double e = 2 * ck * pow_k(g->q2, k);
+    if (g->rho2 > 1) { /* Thm 19.3 with n = K - 1 */
+        const double ellipse = (64.0 / 15.0) * g->M / (pow_k(g->rho2, k) * (1 - 1 / g->rho2));
+        e = ellipse < e ? ellipse : e;
+    }
+    return g->pp * (e + g->roundoff);
 }
 
 #if defined(__GNUC__)
@@ -178,14 +226,14 @@ g_products(const double *ga, const lane4 *bx, const lane4 *by, const lane4 *bz, 
 /* S by the K x K rule (K = 4 or 8: a constant after inlining) */
 static inline __attribute__((always_inline)) double
 g_sum(const rad_ff_poly *a, const rad_ff_poly *b, const double *ga, const double *gb,
-      const int K, double scale2)
+      const int K, double scale2, double *pp)
 {
     const int V = K / 4, nc = K == 4 ? 3 : 10;
     const rad_ff_edge *ea = a->edges, *eb = b->edges;
     const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
     const double inv_s2 = 1.0 / scale2;
     const double *gw = rad_gauss_weights(K);
-    double w[G_CLASSES], arg[G_CLASSES * G_BATCH], coef[G_BATCH], s = 0;
+    double w[G_CLASSES], arg[G_CLASSES * G_BATCH], coef[G_BATCH], s = 0, sum_ll = 0;
     int m = 0;
     if (K == 4) { /* inner x inner, mixed, outer x outer */
         w[0] = gw[1] * gw[1];
@@ -213,6 +261,7 @@ g_sum(const rad_ff_poly *a, const rad_ff_poly *b, const double *ga, const double
             /* integral of ln(r/s) = (lp lq / 4) sum w w ln(r/s)
              *                      = (lp lq / 8) sum w w ln(r^2/s^2) */
             coef[m++] = dot * 0.125 * ea[p].len * eb[q].len;
+            sum_ll += fabs(dot) * ea[p].len * eb[q].len;
             if (m == G_BATCH) {
                 g_flush(arg, coef, m, w, nc, &s);
                 m = 0;
@@ -221,21 +270,25 @@ g_sum(const rad_ff_poly *a, const rad_ff_poly *b, const double *ga, const double
     }
     if (m > 0)
         g_flush(arg, coef, m, w, nc, &s);
+    if (pp)
+        *pp = sum_ll;
     return s;
 }
 
 #if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2)
+double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
+                        double *pp)
 {
-    return k == 4 ? g_sum(a, b, a->gauss4, b->gauss4, 4, scale2)
-                  : g_sum(a, b, a->gauss8, b->gauss8, 8, scale2);
+    return k == 4 ? g_sum(a, b, a->gauss4, b->gauss4, 4, scale2, pp)
+                  : g_sum(a, b, a->gauss8, b->gauss8, 8, scale2, pp);
 }
 #else
-double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2)
+double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
+                        double *pp)
 {
-    (void)a, (void)b, (void)k, (void)scale2;
+    (void)a, (void)b, (void)k, (void)scale2, (void)pp;
     return NAN; /* without vector extensions the path is not used */
 }
 #endif

@@ -65,6 +65,8 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->area = a;
     poly->centroid = a > 0 ? v3_add(v[0], v3_scale(c, 1.0 / a)) : v[0];
     poly->size = v3_norm(v3_sub(hi, lo));
+    poly->lo = lo;
+    poly->hi = hi;
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
     poly->gauss3 = NULL;

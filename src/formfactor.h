@@ -35,6 +35,7 @@ typedef struct rad_ff_poly {
     rad_vec3 centroid;
     double area;
     double size;            /* bounding-box diagonal */
+    rad_vec3 lo, hi;        /* bounding box */
 } rad_ff_poly;
 
 /* Per-thread work space for clipping; grows as needed. */
@@ -70,23 +71,32 @@ void rad_ff_gauss3_soa(const rad_ff_edge *e, double out[12]);
 
 /* Default mode's fast path (ffgauss.c): Gauss product rules on all edge
  * pairs of two unclipped polygons, K = 3 (the nine-point rule, formfactor.c),
- * 4 or 8 points per edge, with a priori error bounds.  _apart: 1 when the
- * polygons are apart, filling *g; sep2 is the squared centroid distance,
- * pp the sum over edge pairs of |e_p . e_q| lp lq (perpendicular pairs,
- * skipped exactly, left out).
- * _bound: the bound on the K-point rule's error in S (K = 3, 4, 8),
+ * 4 or 8 points per edge, with a priori error bounds.
+ * _apart: 1 when the polygons are apart, filling *g for the derivative
+ * bound; sep2 is the squared centroid distance, dmin a lower bound on the
+ * distance between the polygons (or 0).  The caller then sets g->pp, the
+ * sum over edge pairs of |e_p . e_q| lp lq (perpendicular pairs, skipped
+ * exactly, left out), to which the bounds are proportional.
+ * _ellipse: adds the Bernstein-ellipse bound (sharper only for pairs less
+ * than an edge length apart; costs a square root and a division).
+ * _bound: the smaller bound on the K-point rule's error in S (K = 3, 4, 8),
  * round-off included.
- * _sum: the rule's S (K = 4, 8).  _soa: an edge's K points as x[K], y[K],
- * z[K]. */
+ * _sum: the rule's S (K = 4, 8), and *pp (if not NULL) the sum above.
+ * _soa: an edge's K points as x[K], y[K], z[K]. */
 typedef struct rad_ff_gauss_bounds {
-    double num, rho2, roundoff;
+    double D, R, h, inv_s2; /* distance bounds, half the longest edge, 1/s^2 */
+    double pp;              /* sum of |e_p . e_q| lp lq */
+    double q2;              /* (2h / D)^2, the derivative bound */
+    double rho2, M;         /* the ellipse bound (rho2 = 0: not computed) */
+    double roundoff;        /* per unit pp */
 } rad_ff_gauss_bounds;
 void rad_ff_gauss_soa(const rad_ff_edge *e, int k, double *out);
 int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
-                       double scale2, double pp, rad_ff_gauss_bounds *g);
+                       double scale2, double dmin, rad_ff_gauss_bounds *g);
+void rad_ff_gauss_ellipse(rad_ff_gauss_bounds *g);
 double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k);
-double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2);
-
+double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
+                        double *pp);
 /* The contour sum S by closed forms (parallel edge pairs) and adaptive
  * quadrature (skew ones) with absolute tolerance tol, every I_pq
  * integrating ln(r/s) with s^2 = scale2; in long double if `extended`
