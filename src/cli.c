@@ -15,6 +15,7 @@
 
 #include "atomicfile.h"
 #include "cli.h"
+#include "lapack.h"
 
 void cli_error(const char *fmt, ...)
 {
@@ -252,6 +253,7 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    rad_blas_park_threads(); /* see blasthreads.c */
     if (argc < 2) {
         usage(stderr);
         return EXIT_USAGE;

@@ -225,6 +225,7 @@ int cli_solve_run(cli_solve *s, const char *path, cli_result *r)
                   ffs.negative, ffs.above_one, ffs.min_value, ffs.max_value, info.accuracy);
     s->solve.progress = s->common.ff.progress;
     s->solve.progress_user = s->common.ff.progress_user;
+    s->solve.ff_row_error = ffs.max_row_error; /* NaN in classic: no bound */
     rad_status st = rad_solve(&r->mesh, F, &s->solve, r->B, &rep, &err);
     double t4 = seconds();
     info.solve = &rep;

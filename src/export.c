@@ -168,6 +168,7 @@ int rad_export_report(FILE *out, const rad_run_info *in)
                 f->negative, f->above_one);
         jnum(out, "form_factor_max_error_estimate", f->max_errest, 1);
         jnum(out, "form_factor_max_relative_error_estimate", f->max_relerr, 1);
+        jnum(out, "form_factor_max_row_error_estimate", f->max_row_error, 1);
         fprintf(out,
                 "  \"visibility\": {\"needed\": %s, \"pairs_tested\": %.0f, "
                 "\"pairs_blockable\": %.0f, \"pairs_blocked\": %.0f, \"pairs_partial\": %.0f, "
@@ -181,6 +182,7 @@ int rad_export_report(FILE *out, const rad_run_info *in)
                 s->bounces, s->systems, s->sweeps);
         jnum(out, "residual", s->residual, 1);
         jnum(out, "rcond", s->rcond, 1);
+        jnum(out, "b_error_bound_from_form_factors", s->ff_error_bound, 1);
         jnum(out, "forward_error_bound", s->ferr, 1);
         jnum(out, "backward_error_bound", s->berr, 1);
         jnum(out, "convergence_factor", s->spectral_radius, 1);

@@ -1,39 +1,59 @@
-/* ffgauss.c -- default mode's fast path: Gauss product rules (4 x 4 and
- * 8 x 8 points) on the contour, with an a priori error bound.
+/* ffgauss.c -- Gauss product rules on the contour, batched for SIMD: the
+ * nine-point rule (classic mode) and the 4 x 4 and 8 x 8 rules under an a
+ * priori error bound (the fast path of the default and reference modes).
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * For two polygons apart from each other, every integrand ln(r/s) of the
- * contour sum (formfactor.c) is analytic well beyond the edges, and a
- * Gauss-Legendre product rule converges geometrically.  This file applies
- * the K-point rule (K = 4, then 8 for closer pairs) in each variable to
- * every edge pair and bounds its error before trusting it; pairs whose
- * bound misses the tolerance go on to the closed forms and adaptive
- * quadrature of formfactor.c.
+ * The contour sum (formfactor.c) is S = sum_pq (e_p . e_q) I_pq with
+ * I_pq the integral of ln(r/s) over edges p of A and q of B.  The K-point
+ * Gauss-Legendre rule in each variable (A&S 25.4.29, nodes x_a on [-1, 1])
+ * puts the points P_a = m_p + x_a d_p / 2 and Q_b = m_q + x_b d_q / 2 on
+ * the edges (m the midpoints, d the edge vectors), and
+ *   I_pq ~ (lp lq / 8) sum_ab w_a w_b ln(r_ab^2 / s^2).
+ * The nodes come in symmetric pairs of equal weight, so the K^2 products
+ * w_a w_b take a few values (3 for K = 3 and 4, 10 for K = 8) and the logs
+ * group into that many logs of products of r^2 (Goral et al.'s rule has
+ * nine points and three such groups).
  *
- * The rule.  Gauss nodes come in symmetric pairs of equal weight (A&S
- * 25.4.29), K/2 distinct weights, so the K^2 products w_a w_b take
- * K/2 (K/2 + 1) / 2 values (3 for K = 4, 10 for K = 8): as for the
- * nine-point rule, the K^2 logs of an edge pair group into that many logs
- * of products, taken in batches by rad_log_batch (vecmath.h).  Points are
- * stored per edge as x[K], y[K], z[K], so 4-lane vector operations give
- * the squared distances.
+ * Layout.  The edge pairs of a polygon pair that are not perpendicular
+ * (perpendicular ones contribute nothing) are laid out side by side, one
+ * per SIMD lane (rad_v4d, vecmath.h), up to BATCH at a time; each lane then
+ * runs the whole rule of its edge pair, logs included (rad_log4), with no
+ * shuffling between lanes.  A batch is padded to a multiple of 4 with
+ * copies of its first pair, weighted 0.
  *
- * The bound.  Write each edge on [-1, 1] (half-length h).  For a point Q
- * of the other polygon, ln r^2 as a function of the complex parameter x
- * vanishes nowhere in the Bernstein ellipse E_rho whose semi-minor axis b
- * is below dist(Q, edge)/h: the filled ellipse lies within b of [-1, 1]
- * (its half-axes are a = sqrt(1 + b^2) and b, and a - 1 <= b).  With
- * D <= dist(A, B) from the centroids and the radii about them (largest
- * centroid-vertex distance),
- *   D = |c_a - c_b| - radius_a - radius_b,   beta = D/h,   b1 = THETA beta,
+ * Two ways to the squared distances, w = m_p - m_q (B's midpoint moved
+ * into A's frame):
+ *   direct     r_ab = (w + x_a d_p / 2) - x_b d_q / 2, then r . r: each
+ *              r^2 to a few ulps relative to r^2 even when the points
+ *              nearly touch.  The classic mode uses it: the rule's values
+ *              there carry no error bound, so no extra round-off is added.
+ *   quadratic  r_ab^2 = A(x_a) + B(x_b) + C x_a x_b with
+ *                A(x) = |w|^2 + x (w . d_p) + x^2 lp^2 / 4,
+ *                B(y) = -y (w . d_q) + y^2 lq^2 / 4,   C = -(d_p . d_q) / 2:
+ *              two operations per point instead of eight, but the terms
+ *              may exceed r^2: the relative error of r^2 is below
+ *              8 eps kappa, kappa = ((R + lmax) / D)^2 (every term is at most
+ *              (|w| + lp/2 + lq/2)^2 <= (R + lmax)^2, and r >= D, R and D
+ *              bounds on the largest and smallest distance between the
+ *              polygons, lmax their longest edge).  The logs then err by as
+ *              much, which adds 8 eps kappa P to the bound below (sum over
+ *              the terms of |coefficient| times w_a w_b is P / 2); kappa is
+ *              small wherever the truncation bound passes.
+ *
+ * The bound (default and reference modes).  Write each edge on [-1, 1]
+ * (half-length h).  For a point Q of the other polygon, ln r^2 as a
+ * function of the complex parameter x vanishes nowhere in the Bernstein
+ * ellipse E_rho whose semi-minor axis b is below dist(Q, edge)/h: the
+ * filled ellipse lies within b of [-1, 1] (its half-axes are
+ * a = sqrt(1 + b^2) and b, and a - 1 <= b).  With D <= dist(A, B) and
+ *   beta = D/h,   b1 = THETA beta,   R = |c_a - c_b| + radius_a + radius_b,
  * on E_rho1 (rho1 = b1 + sqrt(1 + b1^2)):
  *   |r^2| >= ((1 - THETA) D)^2  and  |r^2| <= (a1 h + R)^2,
- *   R = |c_a - c_b| + radius_a + radius_b,
  * and |arg r^2| < 2 pi (two non-vanishing linear factors on a convex set),
  * so |ln(r/s)| <= M = (max |ln(|r^2|/s^2)| + 2 pi) / 2 (each |ln| bounded
- * from the exponent bits, within ln 2).  Gauss-Legendre
- * with K points (degree 2K - 1, Trefethen's n = K - 1) then errs by at most
+ * from the exponent bits, within ln 2).  Gauss-Legendre with K points
+ * (degree 2K - 1, Trefethen's n = K - 1) then errs by at most
  *   E = 64/15 M rho1^(-2(K-1)) / (rho1^2 - 1)
  *     = 64/15 M rho1^(-2K) / (1 - rho1^-2)     (Trefethen 2013, Thm 19.3)
  * per unit interval integral, and the product rule on an edge pair of
@@ -53,14 +73,24 @@
  * the inner rule's errors, so for an edge pair
  *   |E_pq| <= C_K lp lq (lp^(2K) + lq^(2K)) / D^(2K),
  *   C_K = (K!)^4 (2K-1)! / ((2K+1) ((2K)!)^3) = 1/16800, 1/352800,
- *         1/45053236800 for K = 3, 4, 8,
+ *         1/133189056, 1/45053236800 for K = 3, 4, 6, 8,
  * and |E_S| <= 2 C_K P (lmax / D)^(2K), lmax the longest edge of either.
  *
  * D, a lower bound on the distance between the polygons, is the largest
  * of the centroid distance less both radii and the caller's own bound
  * (rad_ff_pair: the gap between bounding boxes, and the distance of each
  * polygon's nearest vertex from the other's plane).  Round-off adds 16 eps
- * times the sum of the magnitudes of the terms, as in formfactor.c.
+ * times the sum of the magnitudes of the terms, as in formfactor.c, and
+ * the quadratic form's share above.
+ *
+ * Which rule (rad_ff_gauss_tiers).  The 4 x 4 rule costs about what the
+ * nine-point rule does (three logs per edge pair either way, the logs and
+ * distances being most of the work) and errs far less; the 8 x 8 rule
+ * about twice as much.  The bounds are known before either rule runs,
+ * except for S itself, so a guess at S (the polygons as two points:
+ * S ~ 2 A_a A_b cos_a cos_b / c^2) picks the rule that is likely to pass;
+ * whatever the guess, a result is accepted only when its bound is within
+ * `rel` of the result itself.
  */
 #include <config.h>
 
@@ -74,24 +104,52 @@
 #include "vecmath.h"
 
 #define RAD_PI 3.14159265358979323846
-#define THETA 0.9 /* how far towards the singularity the ellipse reaches */
-#define G_BATCH 32 /* edge pairs per batch of logs */
-#define G_CLASSES 10 /* product classes for K = 8 (3 for K = 4) */
+#define THETA 0.9  /* how far towards the singularity the ellipse reaches */
+#define BATCH 64   /* edge pairs per batch (a multiple of 4) */
 
-/* Storage order: K = 4 ascending; K = 8 as nodes 0 1 2 3 7 6 5 4, so that
- * position p has weight class p % 4 (0 outermost, 3 innermost) and both
- * 4-lane halves of an edge line up class by class. */
-void rad_ff_gauss_soa(const rad_ff_edge *e, int k, double *out)
+/* Gauss-Legendre nodes (ascending) and weights for K = 3, 4, 6, 8, as in
+ * gauss.c (A&S table 25.4; tests/test_gauss.c checks that they agree), as
+ * constants here so that the unrolled rules fold them. */
+static const double GX3[3] = {-0.774596669241483377036, 0.0, 0.774596669241483377036};
+static const double GW3[3] = {0.555555555555555555556, 0.888888888888888888889,
+                              0.555555555555555555556};
+static const double GX4[4] = {-0.861136311594052575224, -0.339981043584856264803,
+                              0.339981043584856264803, 0.861136311594052575224};
+static const double GW4[4] = {0.347854845137453857373, 0.652145154862546142627,
+                              0.652145154862546142627, 0.347854845137453857373};
+static const double GX6[6] = {-0.932469514203152027812, -0.661209386466264513661,
+                              -0.238619186083196908631, 0.238619186083196908631,
+                              0.661209386466264513661,  0.932469514203152027812};
+static const double GW6[6] = {0.17132449237917034504, 0.36076157304813860757,
+                              0.46791393457269104739, 0.46791393457269104739,
+                              0.36076157304813860757, 0.17132449237917034504};
+static const double GX8[8] = {-0.960289856497536231684, -0.796666477413626739592,
+                              -0.525532409916328985818, -0.183434642495649804939,
+                              0.183434642495649804939,  0.525532409916328985818,
+                              0.796666477413626739592,  0.960289856497536231684};
+static const double GW8[8] = {0.101228536290376259153, 0.222381034453374470544,
+                              0.313706645877887287338, 0.362683783378361982965,
+                              0.362683783378361982965, 0.313706645877887287338,
+                              0.222381034453374470544, 0.101228536290376259153};
+
+const double *rad_ff_gauss_table(int k, int weights)
 {
-    const double *x = rad_gauss_nodes(k); /* ascending */
-    for (int a = 0; a < k; a++) {
-        const int node = k == 8 && a >= 4 ? 11 - a : a;
-        rad_vec3 v = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + x[node])));
-        out[a] = v.x;
-        out[k + a] = v.y;
-        out[2 * k + a] = v.z;
+    switch (k) {
+    case 3:
+        return weights ? GW3 : GX3;
+    case 4:
+        return weights ? GW4 : GX4;
+    case 6:
+        return weights ? GW6 : GX6;
+    case 8:
+        return weights ? GW8 : GX8;
+    default:
+        return NULL;
     }
 }
+
+/* ---- the bounds ---------------------------------------------------------- */
+
 /* |ln x| <= (|k| + 1) ln 2 for x = 2^k z, z in [1, 2): a bound from the
  * exponent bits alone (x positive normal). */
 static inline double abs_ln_bound(double x)
@@ -102,8 +160,9 @@ static inline double abs_ln_bound(double x)
     return (fabs(k) + 1) * 0.69314718055994530942;
 }
 
-int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
-                       double scale2, double dmin, rad_ff_gauss_bounds *g)
+static inline __attribute__((always_inline)) int
+bounds_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2, double scale2,
+             double inv_s2, double dmin, rad_ff_gauss_bounds *g)
 {
     const double c = sqrt(sep2);
     /* every point of a polygon is within its radius of its centroid (it is
@@ -112,27 +171,36 @@ int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
     const double ra = a->radius * (1 + 1e-12), rb = b->radius * (1 + 1e-12);
     const double Dc = c - ra - rb, R = c + ra + rb;
     const double D = Dc > dmin ? Dc : dmin;
-    const double h = 0.5 * (a->lmax > b->lmax ? a->lmax : b->lmax);
-    if (!(D > 1e-9 * c) || !(h > 0) || !(scale2 > DBL_MIN))
-        return 0;
-    const double inv_s2 = 1 / scale2;
+    const double lmax = a->lmax > b->lmax ? a->lmax : b->lmax;
     const double dlo = D * D * inv_s2, rhi = R * R * inv_s2;
-    if (!(dlo > DBL_MIN) || !(rhi < DBL_MAX))
+    if (!(D > 1e-9 * c) || !(lmax > 0) || !(dlo > DBL_MIN) || !(rhi < DBL_MAX))
         return 0;
+    const double inv_d2 = 1 / (D * D);
     g->D = D;
     g->R = R;
-    g->h = h;
+    g->h = 0.5 * lmax;
     g->inv_s2 = inv_s2;
     g->pp = 1;
-    g->q2 = 4 * h * h / (D * D); /* (lmax / D)^2 */
-    g->rho2 = 0;                 /* the ellipse bound: not yet */
+    g->q2 = lmax * lmax * inv_d2; /* (lmax / D)^2 */
+    g->rho2 = 0;                  /* the ellipse bound: not yet */
     /* round-off: on the real edges |ln(r^2/s^2)| <= Lr (D <= r <= R); the
      * terms sum to at most P Lr / 2 in size (sum of w_a w_b is 4, each
      * coefficient lp lq / 8), and each grouped log carries about 10 eps
-     * absolute from its product and its evaluation */
+     * absolute from its product and its evaluation; the quadratic form's
+     * r^2 adds 8 eps kappa (see the top of the file) */
     const double l1 = abs_ln_bound(dlo), l2 = abs_ln_bound(rhi);
-    g->roundoff = 16 * DBL_EPSILON * 0.5 * ((l1 > l2 ? l1 : l2) + 1);
+    /* and, sharper for pairs far apart, |ln x| <= max(x, 1/x) - 1 */
+    const double t1 = scale2 * inv_d2 - 1, t2 = rhi - 1;
+    const double lb = l1 > l2 ? l1 : l2, lt = t1 > t2 ? t1 : t2;
+    const double kappa = (R + lmax) * (R + lmax) * inv_d2;
+    g->roundoff = DBL_EPSILON * (8 * ((lt < lb ? lt : lb) + 1) + 8 * kappa);
     return 1;
+}
+
+int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
+                       double scale2, double dmin, rad_ff_gauss_bounds *g)
+{
+    return scale2 > DBL_MIN && bounds_apart(a, b, sep2, scale2, 1 / scale2, dmin, g);
 }
 
 void rad_ff_gauss_ellipse(rad_ff_gauss_bounds *g)
@@ -150,17 +218,21 @@ void rad_ff_gauss_ellipse(rad_ff_gauss_bounds *g)
     g->rho2 = rho * rho;
 }
 
-/* x^K for K = 3, 4, 8 */
+/* x^K for K = 3, 4, 6, 8 */
 static inline double pow_k(double x, int k)
 {
     const double x2 = x * x, x4 = x2 * x2;
-    return k == 3 ? x2 * x : k == 4 ? x4 : x4 * x4;
+    return k == 3 ? x2 * x : k == 4 ? x4 : k == 6 ? x4 * x2 : x4 * x4;
 }
 
-double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k)
+static inline __attribute__((always_inline)) double bound_k(const rad_ff_gauss_bounds *g,
+                                                            int k)
 {
     /* C_K of the derivative bound (see the top of the file) */
-    const double ck = k == 3 ? 1 / 16800.0 : k == 4 ? 1 / 352800.0 : 1 / 45053236800.0;
+    const double ck = k == 3   ? 1 / 16800.0
+                      : k == 4 ? 1 / 352800.0
+                      : k == 6 ? 1 / 133189056.0
+                               : 1 / 45053236800.0;
     double e = 2 * ck * pow_k(g->q2, k);
     if (g->rho2 > 1) { /* Thm 19.3 with n = K - 1 */
         const double ellipse = (64.0 / 15.0) * g->M / (pow_k(g->rho2, k) * (1 - 1 / g->rho2));
@@ -169,126 +241,440 @@ double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k)
     return g->pp * (e + g->roundoff);
 }
 
+double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k)
+{
+    return bound_k(g, k);
+}
+
 #if defined(__GNUC__)
-typedef double lane4 __attribute__((vector_size(32)));
 
-static inline __attribute__((always_inline)) void
-g_flush(const double *arg, const double *coef, int m, const double *w, int nc, double *s)
+/* the helpers below are inlined: no vector crosses a call (see vecmath.h) */
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+typedef rad_v4d v4;
+
+static inline v4 load4(const double *p)
 {
-    double lg[G_CLASSES * G_BATCH];
-    rad_log_batch(lg, arg, nc * m);
-    for (int k = 0; k < m; k++) {
-        double t = 0;
-        for (int c = 0; c < nc; c++)
-            t += w[c] * lg[nc * k + c];
-        *s += coef[k] * t;
-    }
+    v4 r;
+    memcpy(&r, p, sizeof r);
+    return r;
 }
 
-/* squared distances over s^2 from A's stored point i of edge p to 4 of B's
- * points (lanes) */
-#define G_R2(ga, stride, i, bx, by, bz)                                                   \
-    ({                                                                                   \
-        const lane4 dx_ = (ga)[i] - (bx), dy_ = (ga)[(stride) + (i)] - (by),             \
-                    dz_ = (ga)[2 * (stride) + (i)] - (bz);                               \
-        (dx_ * dx_ + dy_ * dy_ + dz_ * dz_) * inv_s2;                                    \
-    })
-
-/* The grouped products of one edge pair.  K = 4 (ascending nodes; 0, 3
- * outer, 1, 2 inner): inner x inner, mixed, outer x outer.  K = 8 (classes
- * c = position % 4): acc[ci] lane cj holds the product over A's class ci
- * and B's class cj; class pairs (i, j) and (j, i) share one weight. */
-static inline __attribute__((always_inline)) void
-g_products(const double *ga, const lane4 *bx, const lane4 *by, const lane4 *bz, int K,
-           double inv_s2, double *out)
+static inline double hsum4(v4 x)
 {
-    if (K == 4) {
-        lane4 r[4];
-        for (int i = 0; i < 4; i++)
-            r[i] = G_R2(ga, 4, i, bx[0], by[0], bz[0]);
-        const lane4 m03 = r[0] * r[3], m12 = r[1] * r[2];
-        out[0] = m12[1] * m12[2];
-        out[1] = (m03[1] * m03[2]) * (m12[0] * m12[3]);
-        out[2] = m03[0] * m03[3];
-        return;
-    }
-    lane4 acc[4];
-    for (int c = 0; c < 4; c++)
-        acc[c] = (G_R2(ga, 8, c, bx[0], by[0], bz[0]) * G_R2(ga, 8, c, bx[1], by[1], bz[1])) *
-                 (G_R2(ga, 8, c + 4, bx[0], by[0], bz[0]) *
-                  G_R2(ga, 8, c + 4, bx[1], by[1], bz[1]));
-    int n = 0;
-    for (int i = 0; i < 4; i++)
-        for (int j = i; j < 4; j++)
-            out[n++] = i == j ? acc[i][i] : acc[i][j] * acc[j][i];
+    return (x[0] + x[1]) + (x[2] + x[3]);
 }
 
-/* S by the K x K rule (K = 4 or 8: a constant after inlining) */
-static inline __attribute__((always_inline)) double
-g_sum(const rad_ff_poly *a, const rad_ff_poly *b, const double *ga, const double *gb,
-      const int K, double scale2, double *pp)
+/* ---- edge pairs side by side --------------------------------------------- */
+
+/* A batch: per lane one edge pair, w = m_p - m_q (B's midpoint in A's
+ * frame), the edge vectors d_p, d_q, and cf = (e_p . e_q) lp lq / 8. */
+typedef struct pair_batch {
+    double wx[BATCH], wy[BATCH], wz[BATCH];
+    double px[BATCH], py[BATCH], pz[BATCH];
+    double qx[BATCH], qy[BATCH], qz[BATCH];
+    double cf[BATCH];
+} pair_batch;
+
+/* Colinear edge pairs (classic mode; they can exist only when `touch`)
+ * take the closed form instead of a lane: its sum. */
+typedef struct colinear_sum {
+    double scale2, ln_s, s;
+} colinear_sum;
+
+static int colinear_closed(const rad_ff_edge *ep, const rad_ff_edge *eq, rad_vec3 shift,
+                           double dot, colinear_sum *col)
 {
-    const int V = K / 4, nc = K == 4 ? 3 : 10;
-    const rad_ff_edge *ea = a->edges, *eb = b->edges;
-    const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
-    const double inv_s2 = 1.0 / scale2;
-    const double *gw = rad_gauss_weights(K);
-    double w[G_CLASSES], arg[G_CLASSES * G_BATCH], coef[G_BATCH], s = 0, sum_ll = 0;
-    int m = 0;
-    if (K == 4) { /* inner x inner, mixed, outer x outer */
-        w[0] = gw[1] * gw[1];
-        w[1] = gw[0] * gw[1];
-        w[2] = gw[0] * gw[0];
-    } else { /* class pairs (i <= j) in the order of g_products */
-        int n = 0;
-        for (int i = 0; i < 4; i++)
-            for (int j = i; j < 4; j++)
-                w[n++] = gw[i] * gw[j];
-    }
-    for (int q = 0; q < b->nedges; q++) {
-        lane4 bx[2], by[2], bz[2];
-        for (int v = 0; v < V; v++)
-            for (int l = 0; l < 4; l++) {
-                bx[v][l] = gb[3 * K * q + 4 * v + l] + shift.x;
-                by[v][l] = gb[3 * K * q + K + 4 * v + l] + shift.y;
-                bz[v][l] = gb[3 * K * q + 2 * K + 4 * v + l] + shift.z;
-            }
-        for (int p = 0; p < a->nedges; p++) {
-            const double dot = v3_dot(ea[p].e, eb[q].e);
-            if (fabs(dot) < 1e-14)
-                continue; /* perpendicular: no contribution */
-            g_products(ga + 3 * K * p, bx, by, bz, K, inv_s2, arg + nc * m);
-            /* integral of ln(r/s) = (lp lq / 4) sum w w ln(r/s)
-             *                      = (lp lq / 8) sum w w ln(r^2/s^2) */
-            coef[m++] = dot * 0.125 * ea[p].len * eb[q].len;
-            sum_ll += fabs(dot) * ea[p].len * eb[q].len;
-            if (m == G_BATCH) {
-                g_flush(arg, coef, m, w, nc, &s);
-                m = 0;
-            }
+    rad_ff_edge qe = *eq;
+    qe.p0 = v3_add(qe.p0, shift);
+    qe.mid = v3_add(qe.mid, shift);
+    const rad_vec3 cr = v3_cross(ep->e, eq->e);
+    if (!(v3_dot(cr, cr) < 1e-26 && rad_ff_colinear(ep, &qe)))
+        return 0;
+    if (isnan(col->ln_s))
+        col->ln_s = 0.5 * log(col->scale2);
+    col->s += dot * (rad_ff_ln_parallel_edges(ep, &qe) - ep->len * qe.len * col->ln_s);
+    return 1;
+}
+
+/* The edge pairs from position *pos (q * na + p) on that are not
+ * perpendicular, up to a full batch, padded to a multiple of 4 with copies
+ * of the first, weighted 0; advances *pos, adds sum |cf| to *acf and
+ * returns the count.  col (or NULL) takes the colinear pairs. */
+static int fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift,
+                      pair_batch *bt, int *pos, double *acf, colinear_sum *col)
+{
+    const int na = a->nedges, nb = b->nedges;
+    int m = 0, q = *pos / na, p = *pos - q * na;
+    double sum = 0;
+    while (q < nb && m < BATCH) {
+        const rad_ff_edge *ep = &a->edges[p], *eq = &b->edges[q];
+        const double dot = v3_dot(ep->e, eq->e);
+        /* perpendicular pairs contribute nothing */
+        if (fabs(dot) >= 1e-14 &&
+            !(col && fabs(dot) > 1 - 1e-12 && colinear_closed(ep, eq, shift, dot, col))) {
+            const rad_vec3 w = v3_sub(ep->mid, v3_add(eq->mid, shift));
+            bt->wx[m] = w.x;
+            bt->wy[m] = w.y;
+            bt->wz[m] = w.z;
+            bt->px[m] = ep->d.x;
+            bt->py[m] = ep->d.y;
+            bt->pz[m] = ep->d.z;
+            bt->qx[m] = eq->d.x;
+            bt->qy[m] = eq->d.y;
+            bt->qz[m] = eq->d.z;
+            bt->cf[m] = 0.125 * dot * ep->len * eq->len;
+            sum += fabs(bt->cf[m]);
+            m++;
+        }
+        if (++p == na) {
+            p = 0;
+            q++;
         }
     }
-    if (m > 0)
-        g_flush(arg, coef, m, w, nc, &s);
-    if (pp)
-        *pp = sum_ll;
-    return s;
+    *pos = q * na + p;
+    *acf += sum;
+    const int m4 = (m + 3) & ~3;
+    for (int k = m; k < m4; k++) {
+        double *const arrays[9] = {bt->wx, bt->wy, bt->wz, bt->px, bt->py,
+                                   bt->pz, bt->qx, bt->qy, bt->qz};
+        for (int i = 0; i < 9; i++)
+            arrays[i][k] = arrays[i][0];
+        bt->cf[k] = 0;
+    }
+    return m4;
+}
+
+/* ---- the nine-point rule, direct form (classic mode) --------------------- */
+
+/* squared distance over s^2 between U = w + x_a d_p/2 and V = x_b d_q/2 */
+#define R2(ux, uy, uz, vx, vy, vz)                                                        \
+    ({                                                                                   \
+        const v4 dx_ = (ux) - (vx), dy_ = (uy) - (vy), dz_ = (uz) - (vz);                \
+        (dx_ * dx_ + dy_ * dy_ + dz_ * dz_) * inv_s2;                                    \
+    })
+#define R2W(ux, uy, uz) (((ux) * (ux) + (uy) * (uy) + (uz) * (uz)) * inv_s2)
+
+/* S of m (a multiple of 4) edge pairs: weights 5/9, 8/9, 5/9, so w_a w_b
+ * is 25/81 at the corners of the 3 x 3 grid, 40/81 at its edge midpoints
+ * and 64/81 at its centre */
+static inline __attribute__((always_inline)) double nine_eval(const pair_batch *bt, int m,
+                                                              double inv_s2)
+{
+    const double hu = 0.5 * 0.774596669241483377036; /* sqrt(3/5) / 2 */
+    v4 acc = {0, 0, 0, 0};
+    for (int k = 0; k < m; k += 4) {
+        const v4 wx = load4(bt->wx + k), wy = load4(bt->wy + k), wz = load4(bt->wz + k);
+        const v4 px = hu * load4(bt->px + k), py = hu * load4(bt->py + k),
+                 pz = hu * load4(bt->pz + k);
+        const v4 qx = hu * load4(bt->qx + k), qy = hu * load4(bt->qy + k),
+                 qz = hu * load4(bt->qz + k);
+        const v4 mx = wx - px, my = wy - py, mz = wz - pz; /* x_a = -u */
+        const v4 lx = wx + px, ly = wy + py, lz = wz + pz; /* x_a = +u */
+        const v4 corner = (R2(mx, my, mz, -qx, -qy, -qz) * R2(mx, my, mz, qx, qy, qz)) *
+                          (R2(lx, ly, lz, -qx, -qy, -qz) * R2(lx, ly, lz, qx, qy, qz));
+        const v4 edge = (R2W(mx, my, mz) * R2W(lx, ly, lz)) *
+                        (R2(wx, wy, wz, -qx, -qy, -qz) * R2(wx, wy, wz, qx, qy, qz));
+        const v4 centre = R2W(wx, wy, wz);
+        acc += load4(bt->cf + k) *
+               ((25.0 / 81) * rad_log4(corner) + (40.0 / 81) * rad_log4(edge) +
+                (64.0 / 81) * rad_log4(centre));
+    }
+    return hsum4(acc);
 }
 
 #if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
+double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, int touch)
+{
+    const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
+    const double inv_s2 = 1.0 / scale2;
+    const int end = a->nedges * b->nedges;
+    colinear_sum col = {scale2, NAN, 0};
+    pair_batch bt;
+    double s = 0, acf = 0;
+    for (int pos = 0; pos < end;) {
+        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, touch ? &col : NULL);
+        if (m > 0)
+            s += nine_eval(&bt, m, inv_s2);
+    }
+    return s + col.s;
+}
+
+/* ---- the 4 x 4 and 8 x 8 rules, quadratic form ---------------------------- */
+
+/* S of m (a multiple of 4) edge pairs by the K x K rule, K = 3, 4, 6 or 8
+ * (a constant after inlining), r^2 / s^2 = A(x) + B(y) + C x y with
+ * A(x) = c0 + al x + ga x^2, B(y) = be y + de y^2 (see the top of the
+ * file).  Node a has class min(a, K-1-a) (0 outermost; the middle node of
+ * odd K is a class of its own); the products of r^2 are grouped by the
+ * class pair {class a, class b}, which fixes w_a w_b. */
+static inline __attribute__((always_inline)) double quad_eval(const pair_batch *bt, int m,
+                                                              double inv_s2, const int K)
+{
+    const double *xs = K == 3 ? GX3 : K == 4 ? GX4 : K == 6 ? GX6 : GX8;
+    const double *ws = K == 3 ? GW3 : K == 4 ? GW4 : K == 6 ? GW6 : GW8;
+    const int H = (K + 1) / 2, NC = H * (H + 1) / 2;
+    v4 acc = {0, 0, 0, 0};
+    for (int k = 0; k < m; k += 4) {
+        const v4 wx = load4(bt->wx + k), wy = load4(bt->wy + k), wz = load4(bt->wz + k);
+        const v4 px = load4(bt->px + k), py = load4(bt->py + k), pz = load4(bt->pz + k);
+        const v4 qx = load4(bt->qx + k), qy = load4(bt->qy + k), qz = load4(bt->qz + k);
+        const v4 c0 = (wx * wx + wy * wy + wz * wz) * inv_s2;
+        const v4 al = (wx * px + wy * py + wz * pz) * inv_s2;
+        const v4 ga = (px * px + py * py + pz * pz) * (0.25 * inv_s2);
+        const v4 be = -(wx * qx + wy * qy + wz * qz) * inv_s2;
+        const v4 de = (qx * qx + qy * qy + qz * qz) * (0.25 * inv_s2);
+        const v4 ep = -(px * qx + py * qy + pz * qz) * (0.5 * inv_s2);
+        v4 A[8], B[8], P[10];
+#pragma GCC unroll 8
+        for (int i = 0; i < K; i++) {
+            const double x = xs[i];
+            A[i] = x == 0 ? c0 : c0 + (al * x + ga * (x * x));
+            B[i] = x == 0 ? (v4){0, 0, 0, 0} : be * x + de * (x * x);
+        }
+#pragma GCC unroll 10
+        for (int c = 0; c < NC; c++)
+            P[c] = (v4){1, 1, 1, 1};
+#pragma GCC unroll 8
+        for (int ia = 0; ia < K; ia++) {
+            const v4 ex = ep * xs[ia];
+            const int ca = ia < H ? ia : K - 1 - ia;
+#pragma GCC unroll 8
+            for (int ib = 0; ib < K; ib++) {
+                const int cb = ib < H ? ib : K - 1 - ib;
+                const int lo = ca < cb ? ca : cb, hi = ca < cb ? cb : ca;
+                /* index of the class pair (lo, hi), lo <= hi, in row order */
+                const int c = lo * H - lo * (lo - 1) / 2 + (hi - lo);
+                const v4 ab = A[ia] + B[ib];
+                P[c] *= xs[ia] == 0 || xs[ib] == 0 ? ab : ab + ex * xs[ib];
+            }
+        }
+        v4 t = {0, 0, 0, 0};
+        int c = 0;
+#pragma GCC unroll 4
+        for (int i = 0; i < H; i++)
+#pragma GCC unroll 4
+            for (int j = i; j < H; j++, c++)
+                t += (ws[i] * ws[j]) * rad_log4(P[c]);
+        acc += load4(bt->cf + k) * t;
+    }
+    return hsum4(acc);
+}
+
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+static double quad_eval_k(const pair_batch *bt, int m, double inv_s2, int k)
+{
+    switch (k) {
+    case 3:
+        return quad_eval(bt, m, inv_s2, 3);
+    case 4:
+        return quad_eval(bt, m, inv_s2, 4);
+    case 6:
+        return quad_eval(bt, m, inv_s2, 6);
+    default:
+        return quad_eval(bt, m, inv_s2, 8);
+    }
+}
+
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
                         double *pp)
 {
-    return k == 4 ? g_sum(a, b, a->gauss4, b->gauss4, 4, scale2, pp)
-                  : g_sum(a, b, a->gauss8, b->gauss8, 8, scale2, pp);
+    const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
+    const int end = a->nedges * b->nedges;
+    pair_batch bt;
+    double s = 0, acf = 0;
+    for (int pos = 0; pos < end;) {
+        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, NULL);
+        if (m > 0)
+            s += quad_eval_k(&bt, m, 1.0 / scale2, k);
+    }
+    if (pp)
+        *pp = 8 * acf; /* sum |e_p . e_q| lp lq */
+    return s;
 }
-#else
+
+/* s accepted if positive and its bound within rel of it */
+static inline int accept(double s, double bound, double rel)
+{
+    return s > 0 && bound <= rel * s;
+}
+
+/* The tiers' rules, in order */
+static const int tier_k[4] = {3, 4, 6, 8};
+
+/* The derivative bound without a division or a square root, for the fast
+ * path: with d = D^2/s^2, mu = lmax^2/s^2, rr = R^2/s^2 and P = g.pp, the
+ * bound on the K-point rule's error in S times d^K is
+ *   T_K = P (2 C_K mu^K + 8 eps d^(K-1) z),   z = max(1, rr d) + 2 rr + 2 mu
+ * (the round-off term: (L + 1) d <= max(s^2/D^2, R^2/s^2) d = max(1, rr d)
+ * by |ln x| <= max(x, 1/x) - 1, and kappa d <= (R + lmax)^2 / s^2 <=
+ * 2 rr + 2 mu), so a result s_K is accepted when T_K <= rel s_K d^K.
+ * fast_bounds fills T_K and d^K for the four tiers. */
+static inline void fast_bounds(double d, double mu, double z, double pp, double *t, double *dk)
+{
+    const double d2 = d * d, d3 = d2 * d, d4 = d2 * d2, d5 = d4 * d, d6 = d4 * d2, d7 = d6 * d;
+    const double m2 = mu * mu, m3 = m2 * mu, m4 = m2 * m2, m6 = m4 * m2, m8 = m4 * m4;
+    const double r = 8 * DBL_EPSILON * z;
+    t[0] = pp * ((2 / 16800.0) * m3 + r * d2);
+    t[1] = pp * ((2 / 352800.0) * m4 + r * d3);
+    t[2] = pp * ((2 / 133189056.0) * m6 + r * d5);
+    t[3] = pp * ((2 / 45053236800.0) * m8 + r * d7);
+    dk[0] = d3;
+    dk[1] = d4;
+    dk[2] = d6;
+    dk[3] = d7 * d;
+}
+
+/* sum |e_p . e_q| lp lq over the edge pairs that are not perpendicular */
+static double sum_ll(const rad_ff_poly *a, const rad_ff_poly *b)
+{
+    double pp = 0;
+    for (int q = 0; q < b->nedges; q++)
+        for (int p = 0; p < a->nedges; p++) {
+            const double dot = fabs(v3_dot(a->edges[p].e, b->edges[q].e));
+            pp += dot >= 1e-14 ? dot * a->edges[p].len * b->edges[q].len : 0;
+        }
+    return pp;
+}
+
+/* The K-point rule's S: from the batch, or (large polygons) afresh */
+static inline double tier_sum(const rad_ff_poly *a, const rad_ff_poly *b, const pair_batch *bt,
+                              int m, double scale2, double inv_s2, int k)
+{
+    return bt ? quad_eval_k(bt, m, inv_s2, k) : rad_ff_gauss_sum(a, b, k, scale2, NULL);
+}
+
+/* The general tiers: the bounds of rad_ff_gauss_apart (the centroid
+ * distance less the radii too, and the ellipse bound), from tier t on. */
+static int tiers_general(const rad_ff_poly *a, const rad_ff_poly *b, const pair_batch *bt, int m,
+                         double pp, double scale2, double dmin, double rel, double *s,
+                         double *e)
+{
+    const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
+    const double sep2 = v3_dot(sep, sep), inv_s2 = 1 / scale2;
+    rad_ff_gauss_bounds g;
+    if (!bounds_apart(a, b, sep2, scale2, inv_s2, dmin, &g))
+        return 0;
+    g.pp = pp;
+    /* A guess at S, only to choose the rule: both polygons as points,
+     * S ~ 2 A_a A_b cos_a cos_b / c^2 = 2 G / c^4.  The first rule whose
+     * bound is within rel / 2 of it is tried (or the 8 x 8 rule if its
+     * bound is within 4 rel of it). */
+    const double sep4 = sep2 * sep2;
+    const double G = a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
+    int t = 0;
+    while (t < 3 && !(bound_k(&g, tier_k[t]) * sep4 <= rel * G))
+        t++;
+    double est = 8 * G / sep4; /* 4 times the guess */
+    for (; t < 4; t++) {
+        const int K = tier_k[t];
+        double bk = bound_k(&g, K);
+        if (!(bk <= rel * est) && g.rho2 == 0) { /* the ellipse bound: close pairs */
+            rad_ff_gauss_ellipse(&g);
+            bk = bound_k(&g, K);
+        }
+        if (!(bk <= rel * est))
+            return 0; /* cannot pass */
+        const double sk = tier_sum(a, b, bt, m, scale2, inv_s2, K);
+        if (!accept(sk, bk, rel) && g.rho2 == 0) {
+            rad_ff_gauss_ellipse(&g);
+            bk = bound_k(&g, K);
+        }
+        if (accept(sk, bk, rel)) {
+            *s = sk;
+            *e = bk;
+            return 1;
+        }
+        est = sk - bk; /* S is at least this */
+    }
+    return 0;
+}
+
+int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                       double dplane, double tol, double rel, double *s, double *e)
+{
+    if (!(scale2 > DBL_MIN && scale2 < DBL_MAX))
+        return 0;
+    const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
+    const double sep2 = v3_dot(sep, sep), inv_s2 = 1 / scale2;
+    pair_batch bt;
+    int m = 0;
+    double pp;
+    const int one_batch = a->nedges * b->nedges <= BATCH;
+    if (one_batch) {
+        double acf = 0;
+        int pos = 0;
+        m = fill_pairs(a, b, sep, &bt, &pos, &acf, NULL);
+        pp = 8 * acf; /* sum |e_p . e_q| lp lq */
+    } else {
+        pp = sum_ll(a, b);
+    }
+    if (!(pp > 0))
+        return 0; /* every edge pair perpendicular: the general path */
+    /* The fast path: D from the caller's distances alone, D^2 = x less
+     * their round-off (tol, far below D here: (x - tol)^2 >= x (1 - 2e-6)
+     * once x >= (1e6 tol)^2), and no division until a result passes. */
+    const double x = gap2 > dplane * dplane || dplane < 0 ? gap2 : dplane * dplane;
+    if (one_batch && x >= 1e12 * tol * tol) {
+        const double ra = a->radius, rb = b->radius;
+        const double lmax = a->lmax > b->lmax ? a->lmax : b->lmax;
+        const double d = x * (1 - 2e-6) * inv_s2, mu = lmax * lmax * inv_s2;
+        /* R^2 <= 2 c^2 + 2 (ra + rb)^2 */
+        const double rr = 2 * (sep2 + (ra + rb) * (ra + rb)) * (1 + 1e-12) * inv_s2;
+        const double z = (rr * d > 1 ? rr * d : 1) + 2 * rr + 2 * mu;
+        if (d > 1e-30 && d <= 1 && rr < 1e300) {
+            double tk[4], dk[4];
+            fast_bounds(d, mu, z, pp, tk, dk);
+            /* the guess at S (as in tiers_general), times sep^4 */
+            const double sep4 = sep2 * sep2;
+            const double G = a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
+            const double rg = rel * G;
+            int t = tk[0] * sep4 <= rg * dk[0]   ? 0
+                    : tk[1] * sep4 <= rg * dk[1] ? 1
+                    : tk[2] * sep4 <= rg * dk[2] ? 2
+                                                 : 3;
+            double est = 8 * G / sep4;
+            for (; t < 4; t++) {
+                if (!(tk[t] <= rel * est * dk[t]))
+                    break; /* cannot pass: the general bounds */
+                const double sk = quad_eval_k(&bt, m, inv_s2, tier_k[t]);
+                if (sk > 0 && tk[t] <= rel * sk * dk[t]) {
+                    *s = sk;
+                    *e = tk[t] / dk[t];
+                    return 1;
+                }
+                est = sk - tk[t] / dk[t];
+            }
+        }
+    }
+    const double dmin = (sqrt(gap2) > dplane ? sqrt(gap2) : dplane) - tol;
+    return tiers_general(a, b, one_batch ? &bt : NULL, m, pp, scale2, dmin, rel, s, e);
+}
+
+#else /* without vector extensions these paths are not used */
+
+double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, int touch)
+{
+    (void)a, (void)b, (void)scale2, (void)touch;
+    return NAN;
+}
+
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
                         double *pp)
 {
     (void)a, (void)b, (void)k, (void)scale2, (void)pp;
-    return NAN; /* without vector extensions the path is not used */
+    return NAN;
+}
+
+int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                       double dplane, double tol, double rel, double *s, double *e)
+{
+    (void)a, (void)b, (void)scale2, (void)gap2, (void)dplane, (void)tol, (void)rel, (void)s,
+        (void)e;
+    return 0;
 }
 #endif

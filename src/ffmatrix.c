@@ -20,6 +20,7 @@
 #include <omp.h>
 #else
 #define omp_get_max_threads() 1
+#define omp_get_thread_num() 0
 #endif
 
 #include "formfactor.h"
@@ -69,21 +70,7 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->hi = hi;
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
-    poly->gauss3 = NULL;
-    poly->gauss4 = poly->gauss8 = NULL;
     ff_poly_lengths(poly);
-}
-
-void rad_ff_poly_gauss(rad_ff_poly *p, double *g)
-{
-    p->gauss3 = g;
-    p->gauss4 = g + 12 * p->n;
-    p->gauss8 = p->gauss4 + 12 * p->n;
-    for (int k = 0; k < p->nedges; k++) {
-        rad_ff_gauss3_soa(&p->edges[k], p->gauss3 + 12 * k);
-        rad_ff_gauss_soa(&p->edges[k], 4, p->gauss4 + 12 * k);
-        rad_ff_gauss_soa(&p->edges[k], 8, p->gauss8 + 24 * k);
-    }
 }
 
 double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
@@ -93,18 +80,13 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_scratch w;
     double s;
     rad_ff_edge *ea = malloc(sizeof *ea * (size_t)na), *eb = malloc(sizeof *eb * (size_t)nb);
-    double *ga = malloc(sizeof *ga * 48 * (size_t)na), *gb = malloc(sizeof *gb * 48 * (size_t)nb);
-    if (!ea || !eb || !ga || !gb) {
+    if (!ea || !eb) {
         free(ea);
         free(eb);
-        free(ga);
-        free(gb);
         return NAN;
     }
     rad_ff_poly_make(&pa, a, na, ea);
     rad_ff_poly_make(&pb, b, nb, eb);
-    rad_ff_poly_gauss(&pa, ga); /* the same routes as in a matrix */
-    rad_ff_poly_gauss(&pb, gb);
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
@@ -112,14 +94,12 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_scratch_free(&w);
     free(ea);
     free(eb);
-    free(ga);
-    free(gb);
     return f;
 }
 
 /* Element polygons with contiguous vertices, as the kernel wants them. */
 static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
-                             rad_ff_edge **edges, double **gauss3)
+                             rad_ff_edge **edges)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
     for (int e = 0; e < m->nelements; e++)
@@ -127,8 +107,7 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     *polys = malloc(sizeof **polys * ne);
     *pts = malloc(sizeof **pts * (total ? total : 1));
     *edges = malloc(sizeof **edges * (total ? total : 1));
-    *gauss3 = malloc(sizeof **gauss3 * 48 * (total ? total : 1)); /* 3, 4, 8 points */
-    if (!*polys || !*pts || !*edges || !*gauss3)
+    if (!*polys || !*pts || !*edges)
         return RAD_ERR_NOMEM;
     size_t at = 0;
     for (int e = 0; e < m->nelements; e++) {
@@ -143,7 +122,6 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
         ff_poly_lengths(p);
-        rad_ff_poly_gauss(p, *gauss3 + 48 * at); /* once per element */
         at += (size_t)el->nverts;
     }
     return RAD_OK;
@@ -152,13 +130,16 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
 /* Pairs (i, j > i): the contour sum S gives F_ji = S/(2 pi A_j), stored in
  * column i (contiguous, so threads on neighbouring i do not share cache
  * lines); mirror() fills F_ij afterwards.  Tracks the largest estimated
- * absolute and relative errors.  Returns 0, or -1 when scratch ran out. */
-static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_options *opt,
-                       rad_ff_scratch *w, rad_occ_work *ow, double *F, double *errest,
-                       double *maxerr, double *maxrel)
+ * absolute and relative errors, and adds each entry's estimated error to
+ * its row's sum in rowerr (the thread's own, NULL in classic).  inv_t[k]
+ * is 1 / (2 pi A_k).  Returns 0, or -1 when scratch ran out. */
+static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int i,
+                       const rad_ff_options *opt, rad_ff_scratch *w, rad_occ_work *ow, double *F,
+                       double *errest, double *rowerr, double *maxerr, double *maxrel)
 {
     const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
     double *col = F + (size_t)i * n, *ecol = errest ? errest + (size_t)i * n : NULL;
+    double row_i = 0;
     for (int j = i + 1; j < n; j++) {
         double s, e = 0;
         double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
@@ -167,17 +148,23 @@ static int fill_column(const rad_ff_poly *polys, int n, int i, const rad_ff_opti
         /* hidden surfaces (occlusion.c): S stays symmetric, or unchanged */
         if (ow && rad_occ_pair(ow, polys, i, j, &s, want ? &e : NULL) != 0)
             return -1;
-        const double tj = 2 * RAD_PI * polys[j].area;
-        col[j] = s / tj;
+        col[j] = s * inv_t[j];
         if (want && s != 0) {
-            const double ti = 2 * RAD_PI * polys[i].area;
-            const double ea = e / (tj < ti ? tj : ti), er = e / fabs(s);
+            const double ej = e * inv_t[j], ei = e * inv_t[i];
+            const double ea = ej > ei ? ej : ei;
             *maxerr = ea > *maxerr ? ea : *maxerr; /* not fmax: a libm call here */
-            *maxrel = er > *maxrel ? er : *maxrel;
+            if (e > *maxrel * fabs(s))
+                *maxrel = e / fabs(s);
+            if (rowerr) {
+                row_i += ei;
+                rowerr[j] += ej;
+            }
         }
         if (ecol)
-            ecol[j] = want ? e / tj : NAN;
+            ecol[j] = want ? e * inv_t[j] : NAN;
     }
+    if (rowerr)
+        rowerr[i] += row_i;
     col[i] = 0;
     if (ecol)
         ecol[i] = 0;
@@ -232,17 +219,15 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
     rad_ff_poly *polys = NULL;
     rad_vec3 *pts = NULL;
     rad_ff_edge *edges = NULL;
-    double *gauss3 = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
-    if (mesh_polys(m, &polys, &pts, &edges, &gauss3) != RAD_OK) {
+    if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
         free(edges);
-        free(gauss3);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
     }
     rad_occ *occ = NULL;
@@ -252,15 +237,22 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
         free(polys);
         free(pts);
         free(edges);
-        free(gauss3);
         return vs;
     }
     const double total = 0.5 * (double)n * (n - 1);
     const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
+    /* 1 / (2 pi A_k), and each thread's row sums of the error estimates */
+    double *inv_t = malloc(sizeof *inv_t * (size_t)(n > 0 ? n : 1));
+    double *rowerr = opt->accuracy != RAD_ACCURACY_CLASSIC
+                         ? calloc((size_t)threads * (size_t)(n > 0 ? n : 1), sizeof *rowerr)
+                         : NULL;
+    const int nomem = !inv_t || (opt->accuracy != RAD_ACCURACY_CLASSIC && !rowerr);
+    for (int k = 0; k < n && !nomem; k++)
+        inv_t[k] = 1 / (2 * RAD_PI * polys[k].area);
     /* blocks of rows between progress calls: few parallel regions (each
      * ends in a barrier, costly when the cores are shared) */
     const int block = n / 50 > 64 ? n / 50 : 64;
-    for (int i0 = 0; i0 < n && !failed && !stop; i0 += block) {
+    for (int i0 = 0; i0 < n && !failed && !stop && !nomem; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
 #pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel)
         {
@@ -268,10 +260,11 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
             rad_occ_work ow;
             rad_ff_scratch_init(&w);
             rad_occ_work_init(&ow, occ);
+            double *my_rowerr = rowerr ? rowerr + (size_t)omp_get_thread_num() * n : NULL;
 #pragma omp for schedule(dynamic, 1)
             for (int i = i0; i < i1; i++)
-                if (fill_column(polys, n, i, opt, &w, occ ? &ow : NULL, F, errest, &maxerr,
-                                &maxrel) != 0)
+                if (fill_column(polys, inv_t, n, i, opt, &w, occ ? &ow : NULL, F, errest,
+                                my_rowerr, &maxerr, &maxrel) != 0)
                     failed = 1;
 #pragma omp critical(rad_occ_stats)
             rad_occ_stats_add(&vst, &ow.stats);
@@ -283,18 +276,31 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
             stop = opt->progress(opt->progress_user, "form factors", done, total);
         }
     }
-    if (!failed && !stop) {
+    if (!failed && !stop && !nomem) {
         mirror(polys, n, F, threads);
         if (errest)
             mirror(polys, n, errest, threads);
     }
+    double max_row_error = NAN;
+    if (rowerr && !nomem) { /* the largest row sum of the entries' error estimates */
+        max_row_error = 0;
+        for (int k = 0; k < n; k++) {
+            double r = 0;
+            for (int t = 0; t < threads; t++)
+                r += rowerr[(size_t)t * n + k];
+            max_row_error = r > max_row_error ? r : max_row_error;
+        }
+    }
+    free(inv_t);
+    free(rowerr);
     free(polys);
     free(pts);
     free(edges);
-    free(gauss3);
     rad_occ_free(occ);
     if (vstats)
         *vstats = vst;
+    if (nomem)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
     if (failed)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
     if (stop)
@@ -304,6 +310,7 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
         fill_stats(F, n, stats);
         stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
         stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
+        stats->max_row_error = max_row_error;
         stats->vis_needed = vst.needed;
         stats->vis_pairs_tested = vst.pairs_tested;
         stats->vis_pairs_blockable = vst.pairs_blockable;

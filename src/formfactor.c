@@ -116,153 +116,29 @@ static double ln_gauss3_pts(const rad_vec3 *pa, const rad_vec3 *qb, rad_vec3 shi
 }
 
 /* The 3 Gauss points of an edge (A&S 25.4.29, x = 0, +-sqrt(3/5)). */
-void rad_ff_gauss3_points(const ff_edge *e, rad_vec3 out[3])
+static void gauss3_points(const ff_edge *e, rad_vec3 out[3])
 {
     static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
     for (int a = 0; a < 3; a++)
         out[a] = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + (a - 1) * x3)));
 }
 
-void rad_ff_gauss3_soa(const ff_edge *e, double out[12])
-{
-    rad_vec3 g[3];
-    rad_ff_gauss3_points(e, g);
-    for (int a = 0; a < 4; a++) {
-        const rad_vec3 v = g[a < 3 ? a : 1];
-        out[a] = v.x;
-        out[4 + a] = v.y;
-        out[8 + a] = v.z;
-    }
-}
-
 static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
 {
     rad_vec3 pa[3], qb[3];
-    rad_ff_gauss3_points(p, pa);
-    rad_ff_gauss3_points(q, qb);
+    gauss3_points(p, pa);
+    gauss3_points(q, qb);
     return ln_gauss3_pts(pa, qb, v3(0, 0, 0), p->len, q->len, inv_s2);
 }
 
-/* Colinear: parallel edges on one line (distance between the lines below
- * 1e-12 of the longer edge).  The classic rule's Gauss points would hit or
+/* Colinear (formfactor.h).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */
-static inline int ln_colinear(const ff_edge *p, const ff_edge *q)
+int rad_ff_colinear(const ff_edge *p, const ff_edge *q)
 {
     rad_vec3 w = v3_sub(q->p0, p->p0);
     rad_vec3 perp = v3_sub(w, v3_scale(p->e, v3_dot(w, p->e)));
     double lmax = p->len > q->len ? p->len : q->len;
     return v3_dot(perp, perp) <= 1e-24 * lmax * lmax;
-}
-
-/* The nine-point rule over all edge pairs of two unclipped polygons,
- * arranged for SIMD: the polygons' Gauss points are stored per edge as
- * x[4], y[4], z[4] (rad_ff_poly.gauss3), so one 4-lane operation gives an
- * A point's squared distances to the three points of a B edge; the three
- * grouped products of ln_gauss3_pts are formed per edge pair and their logs
- * taken LOG_BATCH edge pairs at a time by rad_log_batch (vecmath.h).  gb and
- * eb are relative to b's centroid, moved by `shift`.  Colinear edge pairs
- * take the closed form, as in contour_sum; `touch` says whether any can
- * exist (rad_ff_pair: two vertices of each polygon near the other's
- * plane).  *pp (if not NULL) gets the sum
- * of |e_p . e_q| lp lq over the edge pairs integrated by the rule.  With target_clones the compiler
- * also emits an AVX2/FMA clone, chosen at load time. */
-#define LOG_BATCH 64
-
-#if defined(__GNUC__)
-typedef double lane4 __attribute__((vector_size(32)));
-#endif
-
-RAD_LOG_INLINE double classic9_flush(const double *arg, const double *coef, int m)
-{
-    double lg[3 * LOG_BATCH], s = 0;
-    rad_log_batch(lg, arg, 3 * m);
-    for (int k = 0; k < m; k++)
-        s += coef[k] * (25.0 * lg[3 * k] + 40.0 * lg[3 * k + 1] + 64.0 * lg[3 * k + 2]);
-    return s;
-}
-
-/* squared distances, over s^2, from A's Gauss point a of edge p to the
- * three points of B's edge (lanes 0..2) */
-#if defined(__GNUC__)
-#define R2_LANES(r, ga, p, a, bx, by, bz)                                                   \
-    do {                                                                                 \
-        const lane4 dx_ = (ga)[12 * (p) + (a)] - (bx), dy_ = (ga)[12 * (p) + 4 + (a)] - (by), \
-                    dz_ = (ga)[12 * (p) + 8 + (a)] - (bz);                               \
-        (r) = (dx_ * dx_ + dy_ * dy_ + dz_ * dz_) * inv_s2;                              \
-    } while (0)
-#endif
-
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-static double classic9_sum(const ff_edge *ea, int na, const double *ga, const ff_edge *eb,
-                           int nb, const double *gb, rad_vec3 shift, double scale2,
-                           int touch, double *pp)
-{
-    const double inv_s2 = 1.0 / scale2;
-    double arg[3 * LOG_BATCH], coef[LOG_BATCH];
-    double s = 0, ln_s = NAN, sum_ll = 0;
-    int m = 0;
-    for (int q = 0; q < nb; q++) {
-#if defined(__GNUC__)
-        lane4 bx, by, bz;
-        for (int l = 0; l < 4; l++) {
-            bx[l] = gb[12 * q + l] + shift.x;
-            by[l] = gb[12 * q + 4 + l] + shift.y;
-            bz[l] = gb[12 * q + 8 + l] + shift.z;
-        }
-#endif
-        for (int p = 0; p < na; p++) {
-            const double dot = v3_dot(ea[p].e, eb[q].e);
-            if (fabs(dot) < 1e-14)
-                continue; /* perpendicular: no contribution */
-            if (touch && fabs(dot) > 1 - 1e-12) { /* colinear ones in closed form */
-                rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
-                ff_edge qe = eb[q];
-                qe.p0 = v3_add(qe.p0, shift);
-                if (v3_dot(cr, cr) < 1e-26 && ln_colinear(&ea[p], &qe)) {
-                    if (isnan(ln_s))
-                        ln_s = 0.5 * log(scale2);
-                    s += dot * (rad_ff_ln_parallel_edges(&ea[p], &qe) - ea[p].len * qe.len * ln_s);
-                    continue;
-                }
-            }
-            /* weights 5/9, 8/9, 5/9: corner, edge and centre products */
-#if defined(__GNUC__)
-            lane4 r0, r1, r2;
-            R2_LANES(r0, ga, p, 0, bx, by, bz);
-            R2_LANES(r1, ga, p, 1, bx, by, bz);
-            R2_LANES(r2, ga, p, 2, bx, by, bz);
-            const lane4 r02 = r0 * r2;
-            arg[3 * m] = r02[0] * r02[2];
-            arg[3 * m + 1] = r02[1] * r1[0] * r1[2];
-            arg[3 * m + 2] = r1[1];
-#else
-            double r[3][3];
-            for (int a = 0; a < 3; a++)
-                for (int b = 0; b < 3; b++) {
-                    double dx = ga[12 * p + a] - (gb[12 * q + b] + shift.x);
-                    double dy = ga[12 * p + 4 + a] - (gb[12 * q + 4 + b] + shift.y);
-                    double dz = ga[12 * p + 8 + a] - (gb[12 * q + 8 + b] + shift.z);
-                    r[a][b] = (dx * dx + dy * dy + dz * dz) * inv_s2;
-                }
-            arg[3 * m] = r[0][0] * r[2][0] * r[0][2] * r[2][2];
-            arg[3 * m + 1] = r[0][1] * r[2][1] * r[1][0] * r[1][2];
-            arg[3 * m + 2] = r[1][1];
-#endif
-            sum_ll += fabs(dot) * ea[p].len * eb[q].len;
-            coef[m++] = dot * (0.125 / 81.0) * ea[p].len * eb[q].len;
-            if (m == LOG_BATCH) {
-                s += classic9_flush(arg, coef, m);
-                m = 0;
-            }
-        }
-    }
-    if (m > 0)
-        s += classic9_flush(arg, coef, m);
-    if (pp)
-        *pp = sum_ll;
-    return s;
 }
 
 /* ---- one polygon pair ---------------------------------------------------- */
@@ -317,6 +193,7 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
         ff_edge *x = &e[m];
         x->p0 = a;
         x->d = v3_sub(b, a);
+        x->mid = v3_add(a, v3_scale(x->d, 0.5));
         x->len = v3_norm(x->d);
         if (!(x->len > 0))
             continue;
@@ -383,7 +260,7 @@ static double classic_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb, 
                 continue; /* perpendicular: no contribution */
             const rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
             double I;
-            if (v3_dot(cr, cr) < 1e-26 && ln_colinear(&ea[p], &eb[q]))
+            if (v3_dot(cr, cr) < 1e-26 && rad_ff_colinear(&ea[p], &eb[q]))
                 I = rad_ff_ln_parallel_edges(&ea[p], &eb[q]) - ea[p].len * eb[q].len * ln_s;
             else
                 I = k == 3 ? ln_gauss3(&ea[p], &eb[q], inv_s2)
@@ -393,46 +270,8 @@ static double classic_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb, 
     return s;
 }
 
-/* Default mode's fast path for polygons apart (ffgauss.c): the 4 x 4 or
- * the 8 x 8 rule, the first whose a priori bound, round-off included, is
- * within `rel` of its result.  The 4 x 4 rule costs about what the nine-
- * point rule does (three logs per edge pair either way, the logs being
- * most of the work) and errs far less; its result, accepted or not, then
- * says whether the 8 x 8 rule can succeed (S is s4 within its bound), so
- * that it is not computed in vain.  The derivative bound goes first; the
- * ellipse bound, sharper only for close pairs, only if that one fails.
- * Returns 1 with *s, *e set, or 0 (use the general path). */
-static int gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep,
-                       double scale2, double dmin, double rel, double *s, double *e)
-{
-    rad_ff_gauss_bounds g;
-    if (!rad_ff_gauss_apart(a, b, v3_dot(sep, sep), scale2, dmin, &g))
-        return 0;
-    const double s4 = rad_ff_gauss_sum(a, b, 4, scale2, &g.pp);
-    double bound = rad_ff_gauss_bound(&g, 4);
-    if (!(s4 > 0 && bound <= rel * s4)) {
-        rad_ff_gauss_ellipse(&g);
-        bound = rad_ff_gauss_bound(&g, 4);
-    }
-    if (s4 > 0 && bound <= rel * s4) {
-        *s = s4;
-        *e = bound;
-        return 1;
-    }
-    const double b8 = rad_ff_gauss_bound(&g, 8);
-    if (!(b8 <= rel * (s4 - bound)))
-        return 0;
-    const double s8 = rad_ff_gauss_sum(a, b, 8, scale2, NULL);
-    if (s8 > 0 && b8 <= rel * s8) {
-        *s = s8;
-        *e = b8;
-        return 1;
-    }
-    return 0;
-}
-
-/* Distance between the bounding boxes of a and b (0 if they meet). */
-static double box_gap(const rad_ff_poly *a, const rad_ff_poly *b)
+/* Squared distance between the bounding boxes of a and b (0 if they meet). */
+static double box_gap2(const rad_ff_poly *a, const rad_ff_poly *b)
 {
     const double lo[3] = {b->lo.x - a->hi.x, b->lo.y - a->hi.y, b->lo.z - a->hi.z};
     const double hi[3] = {a->lo.x - b->hi.x, a->lo.y - b->hi.y, a->lo.z - b->hi.z};
@@ -441,7 +280,7 @@ static double box_gap(const rad_ff_poly *a, const rad_ff_poly *b)
         const double gk = lo[k] > hi[k] ? lo[k] : hi[k];
         g2 += gk > 0 ? gk * gk : 0;
     }
-    return sqrt(g2);
+    return g2;
 }
 
 /* Store S and its estimate; F from a to b. */
@@ -498,29 +337,28 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         return 0.0;
     const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
     const double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
-    if (opt->accuracy == RAD_ACCURACY_CLASSIC && opt->quadrature == 3 && !nega && !negb &&
-        a->gauss3 && b->gauss3) {
-        /* the common case, batched; the precomputed Gauss points hold only
-         * for unclipped polygons */
-        *contour = classic9_sum(a->edges, a->nedges, a->gauss3, b->edges, b->nedges, b->gauss3,
-                                sep, scale2, neara >= 2 && nearb >= 2, NULL);
-        if (errest)
-            *errest = NAN;
-        return *contour / (2 * RAD_PI * a->area);
+    if (opt->accuracy == RAD_ACCURACY_CLASSIC && opt->quadrature == 3 && !nega && !negb) {
+        /* the common case, batched (the polygons' own edges hold only for
+         * unclipped polygons) */
+        const double s9 = rad_ff_nine_point(a, b, scale2, neara >= 2 && nearb >= 2);
+        if (!isnan(s9)) {
+            *contour = s9;
+            if (errest)
+                *errest = NAN;
+            return s9 / (2 * RAD_PI * a->area);
+        }
     }
     /* polygons apart: the bounded Gauss rules (default, reference) */
-    if (opt->accuracy != RAD_ACCURACY_CLASSIC && !nega && !negb && a->gauss3 && b->gauss3 &&
-        a->gauss8 && b->gauss8) {
+    if (opt->accuracy != RAD_ACCURACY_CLASSIC && !nega && !negb) {
         double sg, eg;
-        /* the bounds are bounds, not estimates: a margin of 10 under the
-         * promise (1e-9 reference, 1e-6 default) is enough */
-        const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-10 : 1e-7;
-        /* a lower bound on their distance: each polygon's nearest vertex
-         * from the other's plane, the gap between bounding boxes (less
-         * the round-off tolerance) */
-        const double gap = box_gap(a, b), dp = mina > minb ? mina : minb;
-        const double dmin = (gap > dp ? gap : dp) - tol;
-        if (gauss_tiers(a, b, sep, scale2, dmin, rel, &sg, &eg))
+        /* the bounds are bounds (the truncation error proved, round-off
+         * with a margin), not estimates: half the promise (1e-9
+         * reference, 1e-6 default) */
+        const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 5e-10 : 5e-7;
+        /* for a lower bound on their distance: each polygon's nearest
+         * vertex from the other's plane, the gap between bounding boxes */
+        if (rad_ff_gauss_tiers(a, b, scale2, box_gap2(a, b), mina > minb ? mina : minb, tol, rel,
+                               &sg, &eg))
             return pair_done(a, sg, eg, contour, errest);
     }
     /* edges in coordinates centred on A's centroid: precomputed unless

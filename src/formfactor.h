@@ -10,6 +10,7 @@
 /* One edge of a polygon, relative to the polygon's centroid. */
 typedef struct rad_ff_edge {
     rad_vec3 p0;    /* start, relative to the centroid */
+    rad_vec3 mid;   /* midpoint, relative to the centroid */
     rad_vec3 d;     /* end - start */
     rad_vec3 e;     /* unit direction */
     double len;
@@ -21,13 +22,6 @@ typedef struct rad_ff_poly {
     int n;
     rad_ff_edge *edges;     /* its non-degenerate edges (n of room) */
     int nedges;
-    double *gauss3;         /* the nine-point rule's 3 Gauss points per
-                               edge, relative to the centroid, or NULL:
-                               edge k holds x[4], y[4], z[4] at 12 k (lane
-                               3 repeats lane 1), 12 n of room */
-    double *gauss4;         /* 4 and 8 Gauss points per edge, as x[K],
-                               y[K], z[K] (default mode's fast path), */
-    double *gauss8;         /* or NULL */
     double perimeter;       /* sum of the edge lengths */
     double lmax;            /* longest edge */
     double radius;          /* largest distance from the centroid to a vertex */
@@ -50,10 +44,6 @@ void rad_ff_scratch_free(rad_ff_scratch *w);
 /* Fill poly from n vertices (normal, centroid, area, size and edges
  * computed); `edges` must have room for n. */
 void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges);
-/* Store the Gauss points of poly's edges (3, 4 and 8 per edge) in g (room
- * for 48 doubles per vertex) and point poly's gauss3/4/8 at them: the
- * kernel's fast paths need them. */
-void rad_ff_poly_gauss(rad_ff_poly *poly, double *g);
 /* Compute the edges of p[0..n) relative to `origin` into e; returns their
  * number (zero-length edges are dropped). */
 int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
@@ -64,14 +54,15 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest);
 
-/* The three Gauss-Legendre points of an edge (nine-point rule). */
-void rad_ff_gauss3_points(const rad_ff_edge *e, rad_vec3 out[3]);
-/* The same, in the padded layout of rad_ff_poly.gauss3 (12 doubles). */
-void rad_ff_gauss3_soa(const rad_ff_edge *e, double out[12]);
+/* Colinear: parallel edges on one line (distance between the lines below
+ * 1e-12 of the longer edge), where the Gauss points would hit r = 0. */
+int rad_ff_colinear(const rad_ff_edge *p, const rad_ff_edge *q);
 
-/* Default mode's fast path (ffgauss.c): Gauss product rules on all edge
- * pairs of two unclipped polygons, K = 3 (the nine-point rule, formfactor.c),
- * 4 or 8 points per edge, with a priori error bounds.
+/* Gauss product rules on every edge pair of two unclipped polygons,
+ * batched for SIMD (ffgauss.c).
+ * _nine_point: the contour sum S by the nine-point rule (classic mode),
+ * colinear edge pairs in closed form when `touch` says they can exist; NaN
+ * without vector extensions (use the plain loop).
  * _apart: 1 when the polygons are apart, filling *g for the derivative
  * bound; sep2 is the squared centroid distance, dmin a lower bound on the
  * distance between the polygons (or 0).  The caller then sets g->pp, the
@@ -79,10 +70,16 @@ void rad_ff_gauss3_soa(const rad_ff_edge *e, double out[12]);
  * exactly, left out), to which the bounds are proportional.
  * _ellipse: adds the Bernstein-ellipse bound (sharper only for pairs less
  * than an edge length apart; costs a square root and a division).
- * _bound: the smaller bound on the K-point rule's error in S (K = 3, 4, 8),
+ * _bound: the smaller bound on the K-point rule's error in S (K = 3, 4, 6, 8),
  * round-off included.
- * _sum: the rule's S (K = 4, 8), and *pp (if not NULL) the sum above.
- * _soa: an edge's K points as x[K], y[K], z[K]. */
+ * _sum: the K x K rule's S (K = 3, 4, 6, 8) in the quadratic form, and *pp
+ * (if not NULL) the sum above.
+ * _tiers: default and reference modes' fast path: the 3 x 3, 4 x 4, 6 x 6 or 8 x 8
+ * rule, the first whose bound is within `rel` of its result; 1 with *s and
+ * *e (the bound) set, or 0 (use the general path).  gap2 is the squared
+ * distance between the bounding boxes, dplane the larger of each
+ * polygon's smallest vertex distance from the other's plane, tol their
+ * round-off. */
 typedef struct rad_ff_gauss_bounds {
     double D, R, h, inv_s2; /* distance bounds, half the longest edge, 1/s^2 */
     double pp;              /* sum of |e_p . e_q| lp lq */
@@ -90,13 +87,19 @@ typedef struct rad_ff_gauss_bounds {
     double rho2, M;         /* the ellipse bound (rho2 = 0: not computed) */
     double roundoff;        /* per unit pp */
 } rad_ff_gauss_bounds;
-void rad_ff_gauss_soa(const rad_ff_edge *e, int k, double *out);
+/* The nodes (weights = 0) or weights (1) of ffgauss.c's K-point rules,
+ * K = 3, 4, 6, 8, or NULL. */
+const double *rad_ff_gauss_table(int k, int weights);
+double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, int touch);
 int rad_ff_gauss_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2,
                        double scale2, double dmin, rad_ff_gauss_bounds *g);
 void rad_ff_gauss_ellipse(rad_ff_gauss_bounds *g);
 double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k);
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
                         double *pp);
+int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                       double dplane, double tol, double rel, double *s, double *e);
+
 /* The contour sum S by closed forms (parallel edge pairs) and adaptive
  * quadrature (skew ones) with absolute tolerance tol, every I_pq
  * integrating ln(r/s) with s^2 = scale2; in long double if `extended`

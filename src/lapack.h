@@ -35,4 +35,10 @@ void dgemm_(const char *transa, const char *transb, const int *m, const int *n, 
             const int *ldb, const double *beta, double *c, const int *ldc, size_t transa_len,
             size_t transb_len);
 
+/* Stop OpenBLAS's idle worker threads, which spin for a tenth of a
+ * second after the library is loaded (blasthreads.c).  For programs, at
+ * start-up, before any other thread calls BLAS; a library function never
+ * calls it. */
+void rad_blas_park_threads(void);
+
 #endif /* RAD_LAPACK_H */

@@ -188,6 +188,9 @@ typedef struct rad_ff_stats {
     double min_value, max_value;
     double max_errest;          /* largest estimated absolute error */
     double max_relerr;          /* largest estimated relative error */
+    double max_row_error;       /* largest row sum of the estimated absolute
+                                   errors, max_i sum_j |dF_ij| (a bound on
+                                   ||dF||_inf; NaN in classic) */
     int vis_needed;             /* 0: nothing can be blocked, no visibility work */
     double vis_pairs_tested, vis_pairs_blockable, vis_pairs_blocked, vis_pairs_partial;
     double vis_seconds;         /* visibility setup + thread time (occlusion.h) */
@@ -239,6 +242,11 @@ typedef struct rad_solve_options {
     int ambient;                /* 1: trace/display with the ambient term */
     const char *trace;          /* path of the per-step TSV trace, or NULL */
     const double *reference;    /* converged B for the trace's rms columns, or NULL */
+    double ff_row_error;        /* a bound on ||dF||_inf, the error of F
+                                   (rad_ff_stats.max_row_error), or NaN if
+                                   unknown: gauss then bounds the error it
+                                   causes in B, and calls the system singular
+                                   when F's error could make it so */
 } rad_solve_options;
 
 void rad_solve_options_init(rad_solve_options *opt);
@@ -250,6 +258,9 @@ typedef struct rad_solve_report {
     int sweeps;                 /* iterative solvers, per the slowest band */
     double residual;            /* max over bands of ||(I - rho F)B - E||inf / ||E||inf */
     double rcond;               /* reciprocal condition estimate (gauss), min over systems */
+    double ff_error_bound;      /* gauss, given ff_row_error: relative error of B
+                                   (infinity norm) that F's error may cause,
+                                   max over systems; NaN otherwise */
     double ferr, berr;          /* forward, backward error bounds (error_bounds) */
     double spectral_radius;     /* estimate of rho(diag(rho) F), max over bands */
     double row_sum_min, row_sum_max;  /* of F */

@@ -53,6 +53,7 @@ void rad_solve_options_init(rad_solve_options *opt)
     opt->max_iterations = 100000;
     opt->bounces = -1;
     opt->sort = 1;
+    opt->ff_row_error = NAN;
 }
 
 double rad_solve_bytes(int n, int with_errbounds)
@@ -91,12 +92,13 @@ static rad_status solve_lu(int n, const double *F, const double *rho, const doub
     int *ipiv = malloc(sizeof *ipiv * (size_t)n), *iwork = malloc(sizeof *iwork * (size_t)n);
     double *work = malloc(sizeof *work * 4 * (size_t)n);
     double *rhs = malloc(sizeof *rhs * (size_t)n * nb), *X = malloc(sizeof *X * (size_t)n * nb);
-    double anorm = 0, rcond = 0;
+    double *rowabs = calloc((size_t)n, sizeof *rowabs);
+    double anorm = 0, rcond = 0, ainf = 0, rho_max = 0;
     int info = 0;
     rad_status st = RAD_OK;
     if (opt->error_bounds)
         AF = malloc(sizeof *AF * nn);
-    if (!A || !ipiv || !iwork || !work || !rhs || !X || (opt->error_bounds && !AF)) {
+    if (!A || !ipiv || !iwork || !work || !rhs || !X || !rowabs || (opt->error_bounds && !AF)) {
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the %d x %d system", n, n);
         goto done;
     }
@@ -106,8 +108,13 @@ static rad_status solve_lu(int n, const double *F, const double *rho, const doub
             double a = (i == j) - rho[i] * F[(size_t)i + (size_t)j * n];
             A[(size_t)i + (size_t)j * n] = a;
             col += fabs(a);
+            rowabs[i] += fabs(a);
         }
         anorm = fmax(anorm, col);
+    }
+    for (int i = 0; i < n; i++) { /* ||A||_inf, max rho */
+        ainf = fmax(ainf, rowabs[i]);
+        rho_max = fmax(rho_max, rho[i]);
     }
     for (int k = 0; k < nb; k++)
         memcpy(rhs + (size_t)k * n, E + (size_t)bands[k] * n, sizeof *rhs * (size_t)n);
@@ -155,9 +162,34 @@ static rad_status solve_lu(int n, const double *F, const double *rho, const doub
                       rcond, RAD_RCOND_MIN);
         goto done;
     }
+    if (opt->ff_row_error >= 0) {
+        /* The error dF of the form factors perturbs A by at most
+         * ||diag(rho) dF||_inf <= rho_max ||dF||_inf =: d, and B by at
+         * most k / (1 - k) relative, k = ||A^-1||_inf d (the normwise
+         * perturbation bound, Higham 2002, Accuracy and Stability of
+         * Numerical Algorithms, thm. 7.2), ||A^-1||_inf = 1 / (rcond_inf
+         * ||A||_inf) from LAPACK's estimate (dgecon).  k >= 1: F is not known well enough to tell
+         * the system from a singular one. */
+        double rinf = 0;
+        int inf2 = 0;
+        dgecon_("I", &n, AF ? AF : A, &n, &ainf, &rinf, work, iwork, &inf2, 1);
+        const double k = rho_max * opt->ff_row_error / (rinf * ainf);
+        const double bound = k < 1 ? k / (1 - k) : INFINITY;
+        rep->ff_error_bound = isnan(rep->ff_error_bound) ? bound : fmax(rep->ff_error_bound, bound);
+        if (!(k < 1)) {
+            st = rad_fail(err, RAD_ERR_SINGULAR,
+                          "the radiosity system is singular within the accuracy of its form "
+                          "factors: their error (up to %.3g per row) could make it singular "
+                          "(||(I - rho F)^-1|| ||rho dF|| = %.3g >= 1); a closed enclosure "
+                          "that reflects (nearly) everything needs them exact",
+                          opt->ff_row_error, k);
+            goto done;
+        }
+    }
     for (int k = 0; k < nb; k++)
         memcpy(B + (size_t)bands[k] * n, X + (size_t)k * n, sizeof *B * (size_t)n);
 done:
+    free(rowabs);
     free(A);
     free(AF);
     free(ipiv);
@@ -366,6 +398,7 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     rep->solver = opt->solver;
     rep->bounces = opt->bounces;
     rep->rcond = NAN;
+    rep->ff_error_bound = NAN;
     rep->spectral_radius = NAN;
     rep->ferr = rep->berr = NAN;
     if (opt->tolerance <= 0 || opt->max_iterations < 1)

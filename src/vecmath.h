@@ -56,12 +56,33 @@
 #define RAD_LOG_INLINE static inline
 #endif
 
+/* The reduced argument's part of ln x, shared by the scalar and the
+ * four-lane versions (T is double or rad_v4d, the same operators): from z
+ * (in [sqrt(1/2), sqrt(2))) and k (as T), ln x = k ln 2 + ln z. */
+#define RAD_LOG_TAIL(T, z, kd)                                                            \
+    ({                                                                                   \
+        /* ln 2 = LN2_HI + LN2_LO; LN2_HI has 21 trailing zero bits */                   \
+        const double LN2_HI_ = 6.93147180369123816490e-01;                               \
+        const double LN2_LO_ = 1.90821492927058770002e-10;                               \
+        const T f_ = (z)-1.0;                                                            \
+        const T s_ = f_ / (2.0 + f_);                                                    \
+        const T w_ = s_ * s_;                                                            \
+        /* T(w) = w Q(w), Q(w) = sum_{j=0..9} 2 w^j/(2j+3), by Estrin's scheme         \
+         * (pairs, then powers w^2, w^4, w^8): a dependency chain of 5 steps           \
+         * instead of Horner's 10, so short batches pipeline */                        \
+        const T w2_ = w_ * w_, w4_ = w2_ * w2_, w8_ = w4_ * w4_;                         \
+        const T q01_ = 2.0 / 3 + 2.0 / 5 * w_, q23_ = 2.0 / 7 + 2.0 / 9 * w_;            \
+        const T q45_ = 2.0 / 11 + 2.0 / 13 * w_, q67_ = 2.0 / 15 + 2.0 / 17 * w_;        \
+        const T q89_ = 2.0 / 19 + 2.0 / 21 * w_;                                         \
+        const T q03_ = q01_ + q23_ * w2_, q47_ = q45_ + q67_ * w2_;                      \
+        const T p_ = (q03_ + q47_ * w4_) + q89_ * w8_;                                   \
+        const T tw_ = p_ * w_;                                                           \
+        (kd) * LN2_HI_ + ((f_ - s_ * (f_ - tw_)) + (kd) * LN2_LO_);                      \
+    })
+
 /* ln x for a positive normal x, branch-free. */
 RAD_LOG_INLINE double rad_log_core(double x)
 {
-    /* ln 2 = LN2_HI + LN2_LO; LN2_HI has 21 trailing zero bits */
-    static const double LN2_HI = 6.93147180369123816490e-01;
-    static const double LN2_LO = 1.90821492927058770002e-10;
     uint64_t b;
     memcpy(&b, &x, sizeof b);
     const uint64_t t = b - RAD_LOG_SQRT_HALF_BITS;
@@ -75,20 +96,7 @@ RAD_LOG_INLINE double rad_log_core(double x)
     const uint64_t zb = b - (t & RAD_LOG_EXP_MASK);
     double z;
     memcpy(&z, &zb, sizeof z);
-    const double f = z - 1.0;
-    const double s = f / (2.0 + f);
-    const double w = s * s;
-    /* T(w) = w Q(w), Q(w) = sum_{j=0..9} 2 w^j/(2j+3), by Estrin's scheme
-     * (pairs, then powers w^2, w^4, w^8): a dependency chain of 5 steps
-     * instead of Horner's 10, so short batches pipeline */
-    const double w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
-    const double q01 = 2.0 / 3 + 2.0 / 5 * w, q23 = 2.0 / 7 + 2.0 / 9 * w;
-    const double q45 = 2.0 / 11 + 2.0 / 13 * w, q67 = 2.0 / 15 + 2.0 / 17 * w;
-    const double q89 = 2.0 / 19 + 2.0 / 21 * w;
-    const double q03 = q01 + q23 * w2, q47 = q45 + q67 * w2;
-    const double p = (q03 + q47 * w4) + q89 * w8;
-    const double tw = p * w;
-    return kd * LN2_HI + ((f - s * (f - tw)) + kd * LN2_LO);
+    return RAD_LOG_TAIL(double, z, kd);
 }
 
 /* atan(y / x) for x > 0 and finite y, branch-free. */
@@ -132,6 +140,45 @@ RAD_LOG_INLINE double rad_atan_core(double y, double x)
     const double r = big ? (PI_2 - a) + PI_2_LO : a;
     return copysign(r, y);
 }
+
+#if defined(__GNUC__)
+/* These functions are always inlined, so no call passes a vector through
+ * the ABI whose AVX and SSE variants GCC warns about. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+/* Four doubles in one SIMD register (GCC vector extensions: AVX in an
+ * AVX2 clone, two SSE2 halves otherwise), and their bit patterns. */
+typedef double rad_v4d __attribute__((vector_size(32)));
+typedef unsigned long long rad_v4u __attribute__((vector_size(32)));
+typedef long long rad_v4i __attribute__((vector_size(32)));
+
+/* rad_log_core on four lanes at once: the same arithmetic, step for step
+ * (so the same results), for positive normal lanes; see rad_log4 for the
+ * others. */
+RAD_LOG_INLINE rad_v4d rad_log4_core(rad_v4d x)
+{
+    const rad_v4u b = (rad_v4u)x;
+    const rad_v4u t = b - RAD_LOG_SQRT_HALF_BITS;
+    const rad_v4u kb = 0x4330000000000000ULL | ((t >> 52) ^ 0x800);
+    const rad_v4d kd = (rad_v4d)kb - (4503599627370496.0 + 2048.0);
+    const rad_v4d z = (rad_v4d)(b - (t & RAD_LOG_EXP_MASK));
+    return RAD_LOG_TAIL(rad_v4d, z, kd);
+}
+
+/* ln of four lanes; lanes that are not positive normal numbers get
+ * libm's log, as in rad_log_batch. */
+RAD_LOG_INLINE rad_v4d rad_log4(rad_v4d x)
+{
+    rad_v4d y = rad_log4_core(x);
+    const rad_v4i bad = (x >= DBL_MIN) & (x <= DBL_MAX); /* -1 where fine */
+    if (__builtin_expect((bad[0] & bad[1] & bad[2] & bad[3]) != -1, 0))
+        for (int i = 0; i < 4; i++)
+            if (!bad[i])
+                y[i] = log(x[i]);
+    return y;
+}
+#pragma GCC diagnostic pop
+#endif
 
 /* y[i] = ln x[i] for i < n, within 2 ulp; arguments that are not positive
  * normal numbers get libm's log.  y and x must not overlap. */

@@ -686,6 +686,7 @@ typedef struct scene_run {
     rad_mesh m;
     double *F;
     int n;
+    double row_error; /* rad_ff_stats.max_row_error of the fill */
 } scene_run;
 
 typedef struct matrix_call {
@@ -693,15 +694,21 @@ typedef struct matrix_call {
     int m;
 } matrix_call;
 
+/* F, then the fill's max_row_error after it */
 static void matrix_fn(const void *ctx, void *out)
 {
     const matrix_call *c = ctx;
     rad_ff_options o = ffopt(c->m);
+    rad_ff_stats st;
     rad_error err;
     size_t n = (size_t)c->mesh->nelements;
-    if (rad_ff_matrix(c->mesh, &o, out, NULL, NULL, &err) != RAD_OK)
-        for (size_t k = 0; k < n * n; k++)
-            ((double *)out)[k] = NAN;
+    double *F = out;
+    if (rad_ff_matrix(c->mesh, &o, F, NULL, &st, &err) != RAD_OK) {
+        for (size_t k = 0; k <= n * n; k++)
+            F[k] = NAN;
+        return;
+    }
+    F[n * n] = st.max_row_error;
 }
 
 /* Parse and mesh `text', fill F in mode m (CPU limit `limit' s).  Returns 0, or -1 when the scene
@@ -722,7 +729,7 @@ static int scene_build(scene_run *r, const char *text, int m, double limit)
     }
     r->n = r->m.nelements;
     size_t nn = (size_t)r->n * (size_t)r->n;
-    r->F = malloc(sizeof *r->F * nn);
+    r->F = malloc(sizeof *r->F * (nn + 1));
     if (!r->F) {
         rad_mesh_free(&r->m);
         rad_scene_free(&r->s);
@@ -730,11 +737,12 @@ static int scene_build(scene_run *r, const char *text, int m, double limit)
     }
     matrix_call c = {&r->m, m};
     call_limit = limit;
-    int st = guarded(matrix_fn, &c, r->F, sizeof *r->F * nn);
+    int st = guarded(matrix_fn, &c, r->F, sizeof *r->F * (nn + 1));
     call_limit = LIMIT_PAIR;
     if (st != 0)
-        for (size_t k = 0; k < nn; k++)
+        for (size_t k = 0; k <= nn; k++)
             r->F[k] = NAN;
+    r->row_error = r->F[nn];
     return 0;
 }
 
@@ -1353,6 +1361,7 @@ static void test_reflectance(void)
             double B[6 * RAD_BANDS];
             char label[160], detail[256];
             rad_solve_options_init(&so);
+            so.ff_row_error = cl.row_error; /* NaN in classic */
             for (int i = 0; i < cl.n; i++)
                 for (int b = 0; b < RAD_BANDS; b++)
                     cl.m.elements[i].reflect[b] = rho;
@@ -1385,14 +1394,25 @@ static void test_reflectance(void)
                              rad_strstatus(st), w);
                 else {
                     /* The promise per form factor bounds the row sums s of F
-                     * by tol, and B = 1/(1 - rho s) moves by rho tol / (1 - rho)
-                     * relative: useless at rho near 1.  The cube's factors come
-                     * from closed forms for every edge pair, so the rows are 1
-                     * to round-off and B is held to the mode's own tolerance. */
+                     * within tol of 1, and B = 1/(1 - rho s) moves by up to
+                     * rho tol / (1 - rho - tol) relative: little at rho near 1.
+                     * The solver propagates F's estimated error into a bound
+                     * on B's (Higham 2002, thm. 7.2); B must be within it
+                     * (and the mode's tol, plus the solve's round-off, 64 eps
+                     * times the condition 1/(1 - rho)), the bound within what
+                     * the promise allows, and the rows within tol of 1. */
+                    const double cap = rho * modes[m].tol / (1 - rho - modes[m].tol);
+                    const double bound = rep.ff_error_bound;
+                    const double allow =
+                        fmax(bound, modes[m].tol) + 64 * DBL_EPSILON / (1 - rho);
+                    const int rows = fabs(rep.row_sum_min - 1) <= modes[m].tol &&
+                                     fabs(rep.row_sum_max - 1) <= modes[m].tol;
                     snprintf(detail, sizeof detail,
-                             "status '%s', worst rel err %.3g (tol %g; rows %.17g..%.17g)",
-                             rad_strstatus(st), w, modes[m].tol, rep.row_sum_min, rep.row_sum_max);
-                    emit(st == RAD_OK && w <= modes[m].tol, label, detail);
+                             "status '%s', worst rel err %.3g within %.3g (bound from F %.3g, "
+                             "promise allows %.3g; rows %.17g..%.17g)",
+                             rad_strstatus(st), w, allow, bound, cap, rep.row_sum_min,
+                             rep.row_sum_max);
+                    emit(st == RAD_OK && w <= allow && bound <= cap && rows, label, detail);
                 }
             }
             /* open: two facing squares, B1 = E / (1 - rho^2 F^2), B2 = rho F B1 */

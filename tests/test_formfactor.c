@@ -366,7 +366,7 @@ static void test_bounds(void)
 {
     static const double sizes[][2] = {{1, 1}, {1, 0.1}, {0.3, 2}, {1e-3, 1e-3}};
     static const double seps[] = {0.05, 0.3, 1, 2.5, 7, 30, 200, 3e3};
-    int tried[3] = {0, 0, 0}, honest[3] = {1, 1, 1}, used = 0, est_ok = 1, promise = 1;
+    int tried[4] = {0, 0, 0, 0}, honest[4] = {1, 1, 1, 1}, used = 0, est_ok = 1, promise = 1;
     double worst_ratio = 0;
     for (size_t i = 0; i < sizeof sizes / sizeof *sizes; i++)
         for (size_t j = 0; j < sizeof seps / sizeof *seps; j++) {
@@ -378,11 +378,8 @@ static void test_bounds(void)
             const double S = exact * 2 * M_PI * a * b, slack = 1e-15 * S;
             rad_ff_poly pa, pb;
             rad_ff_edge ea[4], eb[4];
-            double ga[48 * 4], gb[48 * 4];
             rad_ff_poly_make(&pa, lo, 4, ea);
             rad_ff_poly_make(&pb, hi, 4, eb);
-            rad_ff_poly_gauss(&pa, ga);
-            rad_ff_poly_gauss(&pb, gb);
             rad_vec3 sep = {pb.centroid.x - pa.centroid.x, pb.centroid.y - pa.centroid.y,
                             pb.centroid.z - pa.centroid.z};
             double sep2 = sep.x * sep.x + sep.y * sep.y + sep.z * sep.z;
@@ -391,7 +388,7 @@ static void test_bounds(void)
             double pp = 2 * (a * a + b * b);
             rad_ff_gauss_bounds g;
             if (rad_ff_gauss_apart(&pa, &pb, sep2, scale2, c, &g)) {
-                static const int ks[3] = {4, 8, 3};
+                static const int ks[4] = {4, 8, 3, 6};
                 g.pp = pp;
                 /* three bounds: derivative only, ellipse only, the smaller */
                 rad_ff_gauss_bounds gd = g, ge = g, gm = g;
@@ -399,7 +396,7 @@ static void test_bounds(void)
                 ge.q2 = INFINITY;
                 rad_ff_gauss_ellipse(&gm);
                 const rad_ff_gauss_bounds *gs[3] = {&gd, &ge, &gm};
-                for (int t = 0; t < 2; t++) { /* K = 4, 8 (3 is the classic rule) */
+                for (int t = 0; t < 4; t++) { /* K = 4, 8, 3, 6 in the quadratic form */
                     double sk = rad_ff_gauss_sum(&pa, &pb, ks[t], scale2, NULL);
                     tried[t]++;
                     for (int v = 0; v < 3; v++) {
@@ -427,6 +424,7 @@ static void test_bounds(void)
     tap_ok(used >= 20, "bounds: %d of 32 rectangle pairs are apart (bounded)", used);
     tap_ok(tried[0] && honest[0], "bounds: 4 x 4 rule within its a priori bound (%d pairs)", tried[0]);
     tap_ok(tried[1] && honest[1], "bounds: 8 x 8 rule within its a priori bound (%d pairs)", tried[1]);
+    tap_ok(tried[3] && honest[3], "bounds: 6 x 6 rule within its a priori bound (%d pairs)", tried[3]);
     tap_ok(tried[2] && honest[2], "bounds: nine-point rule within its a priori bound (%d pairs)",
            tried[2]);
     tap_diag("worst error / bound of the 4 x 4 and 8 x 8 rules: %.3g", worst_ratio);
@@ -434,8 +432,24 @@ static void test_bounds(void)
     tap_ok(promise, "default within 1e-6, reference within 1e-9 of C-11 on all 32 pairs");
 }
 
+/* ffgauss.c keeps its own copies of the 3, 4, 6 and 8 point rules (as
+ * constants the compiler folds): they must be gauss.c's, digit for digit. */
+static void test_tables(void)
+{
+    static const int ks[4] = {3, 4, 6, 8};
+    for (int t = 0; t < 4; t++) {
+        const double *x = rad_ff_gauss_table(ks[t], 0), *w = rad_ff_gauss_table(ks[t], 1);
+        int same = x && w;
+        for (int i = 0; same && i < ks[t]; i++)
+            same = x[i] == rad_gauss_nodes(ks[t])[i] && w[i] == rad_gauss_weights(ks[t])[i];
+        tap_ok(same, "ffgauss.c's %d-point rule is gauss.c's", ks[t]);
+    }
+    tap_ok(rad_ff_gauss_table(5, 0) == NULL, "no 5-point table in ffgauss.c");
+}
+
 int main(void)
 {
+    test_tables();
     test_disks();
     test_log_integrals();
     test_squares();
