@@ -106,6 +106,11 @@
 #define RAD_PI 3.14159265358979323846
 #define THETA 0.9  /* how far towards the singularity the ellipse reaches */
 #define BATCH 64   /* edge pairs per batch (a multiple of 4) */
+/* The quadratic-form rules take rad_log4_short, which errs by at most
+ * 1.2e-14 absolute per log: over the grouped logs (sum of the class
+ * weights at most 4, coefficients lp lq / 8) at most 6e-15 P in S, taken
+ * here with a margin, per unit P. */
+#define LOG_SHORT_ERR 8e-15
 
 /* Gauss-Legendre nodes (ascending) and weights for K = 3, 4, 6, 8, as in
  * gauss.c (A&S table 25.4; tests/test_gauss.c checks that they agree), as
@@ -301,7 +306,7 @@ static int colinear_closed(const rad_ff_edge *ep, const rad_ff_edge *eq, rad_vec
  * perpendicular, up to a full batch, padded to a multiple of 4 with copies
  * of the first, weighted 0; advances *pos, adds sum |cf| to *acf and
  * returns the count.  col (or NULL) takes the colinear pairs. */
-static int fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift,
+static inline __attribute__((always_inline)) int fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift,
                       pair_batch *bt, int *pos, double *acf, colinear_sum *col)
 {
     const int na = a->nedges, nb = b->nedges;
@@ -411,12 +416,14 @@ double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scal
  * odd K is a class of its own); the products of r^2 are grouped by the
  * class pair {class a, class b}, which fixes w_a w_b. */
 static inline __attribute__((always_inline)) double quad_eval(const pair_batch *bt, int m,
-                                                              double inv_s2, const int K)
+                                                              double inv_s2, const int K,
+                                                              const int short_log)
 {
     const double *xs = K == 3 ? GX3 : K == 4 ? GX4 : K == 6 ? GX6 : GX8;
     const double *ws = K == 3 ? GW3 : K == 4 ? GW4 : K == 6 ? GW6 : GW8;
     const int H = (K + 1) / 2, NC = H * (H + 1) / 2;
     v4 acc = {0, 0, 0, 0};
+    rad_v4i fine = {-1, -1, -1, -1}; /* lanes whose products are all normal */
     for (int k = 0; k < m; k += 4) {
         const v4 wx = load4(bt->wx + k), wy = load4(bt->wy + k), wz = load4(bt->wz + k);
         const v4 px = load4(bt->px + k), py = load4(bt->py + k), pz = load4(bt->pz + k);
@@ -456,28 +463,54 @@ static inline __attribute__((always_inline)) double quad_eval(const pair_batch *
 #pragma GCC unroll 4
         for (int i = 0; i < H; i++)
 #pragma GCC unroll 4
-            for (int j = i; j < H; j++, c++)
-                t += (ws[i] * ws[j]) * rad_log4(P[c]);
+            for (int j = i; j < H; j++, c++) {
+                fine &= (P[c] >= DBL_MIN) & (P[c] <= DBL_MAX);
+                t += (ws[i] * ws[j]) * (short_log ? rad_log4_short(P[c]) : rad_log4_core(P[c]));
+            }
         acc += load4(bt->cf + k) * t;
     }
+    /* a product out of the normal range (the bounds keep r^2 / s^2 within
+     * [D^2/s^2, 3], so only for a pair barely apart): no result */
+    if ((fine[0] & fine[1] & fine[2] & fine[3]) != -1)
+        return NAN;
     return hsum4(acc);
 }
 
+/* K = 3, 4, 6, 8; the short log (default mode's budget) or the full one */
+static inline __attribute__((always_inline)) double quad_eval_k(const pair_batch *bt, int m,
+                                                                double inv_s2, int k,
+                                                                int short_log)
+{
+    if (short_log)
+        switch (k) {
+        case 3:
+            return quad_eval(bt, m, inv_s2, 3, 1);
+        case 4:
+            return quad_eval(bt, m, inv_s2, 4, 1);
+        case 6:
+            return quad_eval(bt, m, inv_s2, 6, 1);
+        default:
+            return quad_eval(bt, m, inv_s2, 8, 1);
+        }
+    switch (k) {
+    case 3:
+        return quad_eval(bt, m, inv_s2, 3, 0);
+    case 4:
+        return quad_eval(bt, m, inv_s2, 4, 0);
+    case 6:
+        return quad_eval(bt, m, inv_s2, 6, 0);
+    default:
+        return quad_eval(bt, m, inv_s2, 8, 0);
+    }
+}
+
+/* quad_eval_k for the general paths, in its own AVX2 clone */
 #if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-static double quad_eval_k(const pair_batch *bt, int m, double inv_s2, int k)
+static double quad_eval_any(const pair_batch *bt, int m, double inv_s2, int k)
 {
-    switch (k) {
-    case 3:
-        return quad_eval(bt, m, inv_s2, 3);
-    case 4:
-        return quad_eval(bt, m, inv_s2, 4);
-    case 6:
-        return quad_eval(bt, m, inv_s2, 6);
-    default:
-        return quad_eval(bt, m, inv_s2, 8);
-    }
+    return quad_eval_k(bt, m, inv_s2, k, 0);
 }
 
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
@@ -490,7 +523,7 @@ double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, doubl
     for (int pos = 0; pos < end;) {
         const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, NULL);
         if (m > 0)
-            s += quad_eval_k(&bt, m, 1.0 / scale2, k);
+            s += quad_eval_any(&bt, m, 1.0 / scale2, k);
     }
     if (pp)
         *pp = 8 * acf; /* sum |e_p . e_q| lp lq */
@@ -514,11 +547,12 @@ static const int tier_k[4] = {3, 4, 6, 8};
  * by |ln x| <= max(x, 1/x) - 1, and kappa d <= (R + lmax)^2 / s^2 <=
  * 2 rr + 2 mu), so a result s_K is accepted when T_K <= rel s_K d^K.
  * fast_bounds fills T_K and d^K for the four tiers. */
-static inline void fast_bounds(double d, double mu, double z, double pp, double *t, double *dk)
+static inline void fast_bounds(double d, double mu, double z, double pp, double log_err,
+                               double *t, double *dk)
 {
     const double d2 = d * d, d3 = d2 * d, d4 = d2 * d2, d5 = d4 * d, d6 = d4 * d2, d7 = d6 * d;
     const double m2 = mu * mu, m3 = m2 * mu, m4 = m2 * m2, m6 = m4 * m2, m8 = m4 * m4;
-    const double r = 8 * DBL_EPSILON * z;
+    const double r = 8 * DBL_EPSILON * z + log_err * d;
     t[0] = pp * ((2 / 16800.0) * m3 + r * d2);
     t[1] = pp * ((2 / 352800.0) * m4 + r * d3);
     t[2] = pp * ((2 / 133189056.0) * m6 + r * d5);
@@ -545,7 +579,7 @@ static double sum_ll(const rad_ff_poly *a, const rad_ff_poly *b)
 static inline double tier_sum(const rad_ff_poly *a, const rad_ff_poly *b, const pair_batch *bt,
                               int m, double scale2, double inv_s2, int k)
 {
-    return bt ? quad_eval_k(bt, m, inv_s2, k) : rad_ff_gauss_sum(a, b, k, scale2, NULL);
+    return bt ? quad_eval_any(bt, m, inv_s2, k) : rad_ff_gauss_sum(a, b, k, scale2, NULL);
 }
 
 /* The general tiers: the bounds of rad_ff_gauss_apart (the centroid
@@ -594,8 +628,12 @@ static int tiers_general(const rad_ff_poly *a, const rad_ff_poly *b, const pair_
     return 0;
 }
 
-int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
-                       double dplane, double tol, double rel, double *s, double *e)
+/* The tiers; short_log (a constant after inlining) chooses the log: the
+ * short one where its error (LOG_SHORT_ERR) is far below the tolerance
+ * (default mode), the full one otherwise. */
+static inline __attribute__((always_inline)) int
+tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, double dplane,
+      double tol, double rel, double *s, double *e, const int short_log)
 {
     if (!(scale2 > DBL_MIN && scale2 < DBL_MAX))
         return 0;
@@ -628,7 +666,7 @@ int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2
         const double z = (rr * d > 1 ? rr * d : 1) + 2 * rr + 2 * mu;
         if (d > 1e-30 && d <= 1 && rr < 1e300) {
             double tk[4], dk[4];
-            fast_bounds(d, mu, z, pp, tk, dk);
+            fast_bounds(d, mu, z, pp, short_log ? LOG_SHORT_ERR : 0, tk, dk);
             /* the guess at S (as in tiers_general), times sep^4 */
             const double sep4 = sep2 * sep2;
             const double G = a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
@@ -641,7 +679,7 @@ int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2
             for (; t < 4; t++) {
                 if (!(tk[t] <= rel * est * dk[t]))
                     break; /* cannot pass: the general bounds */
-                const double sk = quad_eval_k(&bt, m, inv_s2, tier_k[t]);
+                const double sk = quad_eval_k(&bt, m, inv_s2, tier_k[t], short_log);
                 if (sk > 0 && tk[t] <= rel * sk * dk[t]) {
                     *s = sk;
                     *e = tk[t] / dk[t];
@@ -655,12 +693,46 @@ int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2
     return tiers_general(a, b, one_batch ? &bt : NULL, m, pp, scale2, dmin, rel, s, e);
 }
 
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+static int tiers_short(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                       double dplane, double tol, double rel, double *s, double *e)
+{
+    return tiers(a, b, scale2, gap2, dplane, tol, rel, s, e, 1);
+}
+
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+static int tiers_full(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                      double dplane, double tol, double rel, double *s, double *e)
+{
+    return tiers(a, b, scale2, gap2, dplane, tol, rel, s, e, 0);
+}
+
+int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
+                       double dplane, double tol, double rel, double *s, double *e)
+{
+    return rel > 1e-8 ? tiers_short(a, b, scale2, gap2, dplane, tol, rel, s, e)
+                      : tiers_full(a, b, scale2, gap2, dplane, tol, rel, s, e);
+}
+
 #else /* without vector extensions these paths are not used */
 
 double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, int touch)
 {
     (void)a, (void)b, (void)scale2, (void)touch;
     return NAN;
+}
+
+/* quad_eval_k for the general paths, in its own AVX2 clone */
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+static double quad_eval_any(const pair_batch *bt, int m, double inv_s2, int k)
+{
+    return quad_eval_k(bt, m, inv_s2, k, 0);
 }
 
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
