@@ -9,8 +9,11 @@ cube=$data/goral1984-cube.scene
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 echo "== form-factor fill, cube 20x20 (2400 elements, 2,878,800 unordered pairs)"
-echo "   (rad_ff_matrix only, ${BENCH_FF_REPEATS:-5} runs each: median and best)"
+echo "   (rad_ff_matrix only, ${BENCH_FF_REPEATS:-5} runs each, modes in turn: median and best)"
 "$ff" "$cube" 20x20 ${BENCH_FF_REPEATS:-5}
+echo
+echo "== form-factor fill, cube 7x7 (294 elements, as shipped): the cost of default's error control"
+"$ff" "$cube" 7x7 ${BENCH_FF_SMALL_REPEATS:-51}
 echo
 echo "== LU (dgetrf) against DGEMM, same run (GFLOP/s)"
 "$lu" ${BENCH_LU_SIZES:-2000 4000}

@@ -145,9 +145,12 @@ static void summary(const rad_run_info *in)
         return;
     if (s->bounces >= 0)
         fprintf(stderr, "radiosity: %d bounces (Jacobi from B = E)", s->bounces);
-    else if (s->solver == RAD_SOLVER_GAUSS)
+    else if (s->solver == RAD_SOLVER_GAUSS) {
         fprintf(stderr, "radiosity: gauss, %d factorisation%s, rcond %.3g", s->systems,
                 s->systems == 1 ? "" : "s", s->rcond);
+        if (!isnan(s->ff_error_bound))
+            fprintf(stderr, "; F's error moves B by %.3g relative at most", s->ff_error_bound);
+    }
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
     else

@@ -48,6 +48,22 @@ typedef struct solution {
     double *B;
 } solution;
 
+#define TIME_RUNS 9
+#define TIME_SPAN 0.1
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* sorts x[0..n) (n >= 1) and returns its median */
+static double median(double *x, int n)
+{
+    qsort(x, (size_t)n, sizeof *x, cmp_double);
+    return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+
 static double now(void)
 {
     struct timespec t;
@@ -63,7 +79,9 @@ static void help(void)
            "the best available truth (the closed form B = E/(1 - rho) for a closed\n"
            "scene of one material; otherwise the reference-mode gauss solution on the\n"
            "finest mesh).  The error is the area-weighted RMS of Cohen et al. 1988,\n"
-           "eq. 14, averaged over the bands, and the maximum, in units of B.\n"
+           "eq. 14, averaged over the bands, and the maximum, in units of B.  Each\n"
+           "time is the median of up to 9 runs, repeated while they took less than\n"
+           "0.1 s in all.\n"
            "\n"
            "Options:\n"
            "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
@@ -206,24 +224,35 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
         cli_error("out of memory for %zu elements", ne);
         return 1;
     }
-    double t0 = now();
-    rad_status st = rad_ff_matrix(&out->mesh, ff, F, NULL, NULL, &err);
-    double t1 = now();
-    if (st == RAD_OK) {
-        rad_solve_options_init(&so);
-        so.solver = (rad_solver)solver;
-        so.tolerance = 1e-13;
-        st = rad_solve(&out->mesh, F, &so, out->B, NULL, &err);
+    /* Each stage is timed as the median of up to TIME_RUNS runs, repeated
+     * while the runs so far took less than TIME_SPAN s in all: a small
+     * mesh takes milliseconds, and one run of it is noise. */
+    double tf[TIME_RUNS], ts[TIME_RUNS], spent = 0;
+    int nf = 0, ns = 0;
+    rad_status st = RAD_OK;
+    while (st == RAD_OK && nf < TIME_RUNS && spent < TIME_SPAN) {
+        double t0 = now();
+        st = rad_ff_matrix(&out->mesh, ff, F, NULL, NULL, &err);
+        tf[nf++] = now() - t0;
+        spent += tf[nf - 1];
     }
-    double t2 = now();
+    rad_solve_options_init(&so);
+    so.solver = (rad_solver)solver;
+    so.tolerance = 1e-13;
+    for (spent = 0; st == RAD_OK && ns < TIME_RUNS && spent < TIME_SPAN;) {
+        double t0 = now();
+        st = rad_solve(&out->mesh, F, &so, out->B, NULL, &err);
+        ts[ns++] = now() - t0;
+        spent += ts[ns - 1];
+    }
     free(F);
     if (st != RAD_OK) {
         cli_error("mesh %dx%d, %s, %s: %s", n, n, acc_names[ff->accuracy], solver_names[solver],
                   err.message);
         return 1;
     }
-    *t_ff = t1 - t0;
-    *t_solve = t2 - t1;
+    *t_ff = median(tf, nf);
+    *t_solve = median(ts, ns);
     return 0;
 }
 

@@ -18,8 +18,17 @@
  * polygon as a fan of triangles from its first vertex, each the collapsed
  * square of Duffy (1982): P(u, v) = v0 + u (v_k - v0) + u v (v_k+1 - v_k),
  * dA = 2 A_k u du dv.  Orders k = 2, 3, ... are tried until two successive
- * results agree to the tolerance; |S_k - S_k-1| is the error estimate
- * (conservative: S_k is far more accurate than S_k-1 once they agree).
+ * results agree to the tolerance.  The error estimate is the geometric
+ * tail of the differences: with d_k = |S_k - S_k-1| falling by q =
+ * d_k / d_k-1 an order, S_k errs by about d_k q / (1 - q), and the estimate
+ * is d_k max(1, q / (1 - q)) (d_k alone when they fall faster than
+ * halving; infinite when they do not fall).
+ *
+ * A quadrilateral longer than the pair's distance (a strip beside another
+ * polygon) is cut into n_u x n_v equal parts of its parameter square, each
+ * at most half the distance D long, so that the integrand, which varies on
+ * the scale of D, is smooth on every part (additivity of the integral);
+ * D is the gap between the polygons' bounding boxes.
  */
 #include <config.h>
 
@@ -32,15 +41,18 @@
 
 #define AREA_ORDER_MAX 10
 
-/* Gauss points of polygon p (n vertices) relative to `origin`, order k:
- * fills pts and w (room for count_points(n, k)); returns the count. */
-static int count_points(int n, int k)
+#define AREA_SPLIT_MAX 16 /* parts per side of a quadrilateral */
+
+/* Gauss points of polygon p (n vertices) relative to `origin`, order k, a
+ * quadrilateral cut into nu x nv parts: fills pts and w (room for
+ * count_points(n, k, nu, nv)); returns the count. */
+static int count_points(int n, int k, int nu, int nv)
 {
-    return n == 4 ? k * k : (n - 2) * k * k;
+    return n == 4 ? k * k * nu * nv : (n - 2) * k * k;
 }
 
-static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, rad_vec3 *pts,
-                          double *w)
+static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, int nu, int nv,
+                          rad_vec3 *pts, double *w)
 {
     const double *x = rad_gauss_nodes(k), *gw = rad_gauss_weights(k);
     int m = 0;
@@ -48,19 +60,21 @@ static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, rad_
         rad_vec3 q[4];
         for (int c = 0; c < 4; c++)
             q[c] = v3_sub(p[c], origin);
-        for (int i = 0; i < k; i++) {
-            double u = 0.5 * (1 + x[i]);
-            for (int j = 0; j < k; j++) {
-                double v = 0.5 * (1 + x[j]);
-                /* P(u,v) = (1-u)(1-v) q0 + u(1-v) q1 + u v q2 + (1-u) v q3 */
-                rad_vec3 a = v3_lerp(q[0], q[1], u), b = v3_lerp(q[3], q[2], u);
-                rad_vec3 pu = v3_add(v3_scale(v3_sub(q[1], q[0]), 1 - v),
-                                     v3_scale(v3_sub(q[2], q[3]), v));
-                rad_vec3 pv = v3_sub(b, a);
-                pts[m] = v3_lerp(a, b, v);
-                w[m++] = 0.25 * gw[i] * gw[j] * v3_norm(v3_cross(pu, pv));
-            }
-        }
+        for (int pu_ = 0; pu_ < nu; pu_++)
+            for (int pv_ = 0; pv_ < nv; pv_++)
+                for (int i = 0; i < k; i++) {
+                    double u = (pu_ + 0.5 * (1 + x[i])) / nu;
+                    for (int j = 0; j < k; j++) {
+                        double v = (pv_ + 0.5 * (1 + x[j])) / nv;
+                        /* P(u,v) = (1-u)(1-v) q0 + u(1-v) q1 + u v q2 + (1-u) v q3 */
+                        rad_vec3 a = v3_lerp(q[0], q[1], u), b = v3_lerp(q[3], q[2], u);
+                        rad_vec3 pu = v3_add(v3_scale(v3_sub(q[1], q[0]), 1 - v),
+                                             v3_scale(v3_sub(q[2], q[3]), v));
+                        rad_vec3 pv = v3_sub(b, a);
+                        pts[m] = v3_lerp(a, b, v);
+                        w[m++] = 0.25 * gw[i] * gw[j] * v3_norm(v3_cross(pu, pv)) / (nu * nv);
+                    }
+                }
         return m;
     }
     for (int t = 1; t + 1 < n; t++) {
@@ -76,6 +90,44 @@ static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, rad_
         }
     }
     return m;
+}
+
+/* Bounding-box gap between the vertex sets a and b (0 if they overlap). */
+static double vertex_box_gap(const rad_vec3 *a, int na, const rad_vec3 *b, int nb)
+{
+    double lo[2][3], hi[2][3], g2 = 0;
+    const rad_vec3 *ps[2] = {a, b};
+    const int ns[2] = {na, nb};
+    for (int s = 0; s < 2; s++) {
+        lo[s][0] = hi[s][0] = ps[s][0].x;
+        lo[s][1] = hi[s][1] = ps[s][0].y;
+        lo[s][2] = hi[s][2] = ps[s][0].z;
+        for (int k = 1; k < ns[s]; k++) {
+            const double c[3] = {ps[s][k].x, ps[s][k].y, ps[s][k].z};
+            for (int d = 0; d < 3; d++) {
+                lo[s][d] = fmin(lo[s][d], c[d]);
+                hi[s][d] = fmax(hi[s][d], c[d]);
+            }
+        }
+    }
+    for (int d = 0; d < 3; d++) {
+        const double gap = fmax(lo[1][d] - hi[0][d], lo[0][d] - hi[1][d]);
+        g2 += gap > 0 ? gap * gap : 0;
+    }
+    return sqrt(g2);
+}
+
+/* Parts per side of quadrilateral p for pieces at most D/2 long. */
+static void split_counts(const rad_vec3 *p, int n, double D, int *nu, int *nv)
+{
+    *nu = *nv = 1;
+    if (n != 4 || !(D > 0))
+        return;
+    const double lu = fmax(v3_norm(v3_sub(p[1], p[0])), v3_norm(v3_sub(p[2], p[3])));
+    const double lv = fmax(v3_norm(v3_sub(p[3], p[0])), v3_norm(v3_sub(p[2], p[1])));
+    const double cu = ceil(2 * lu / D), cv = ceil(2 * lv / D);
+    *nu = cu < 1 ? 1 : cu > AREA_SPLIT_MAX ? AREA_SPLIT_MAX : (int)cu;
+    *nv = cv < 1 ? 1 : cv > AREA_SPLIT_MAX ? AREA_SPLIT_MAX : (int)cv;
 }
 
 /* 2 sum_k sum_l w_k w_l (n_a . d)(-n_b . d) / |d|^4 */
@@ -102,11 +154,16 @@ int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, i
     enum { SMALL = 2 * AREA_ORDER_MAX * AREA_ORDER_MAX * 3 };
     rad_vec3 pts_small[SMALL];
     double w_small[SMALL];
-    const int cap = count_points(na > nb ? na : nb, AREA_ORDER_MAX);
-    const int heap = 2 * cap > SMALL;
-    rad_vec3 *pts = heap ? malloc(sizeof *pts * 2 * (size_t)cap) : pts_small;
-    double *w = heap ? malloc(sizeof *w * 2 * (size_t)cap) : w_small;
-    double prev = NAN;
+    const double D = vertex_box_gap(a, na, b, nb);
+    int nua, nva, nub, nvb;
+    split_counts(a, na, D, &nua, &nva);
+    split_counts(b, nb, D, &nub, &nvb);
+    const int capa = count_points(na, AREA_ORDER_MAX, nua, nva);
+    const int capb = count_points(nb, AREA_ORDER_MAX, nub, nvb);
+    const int heap = capa + capb > SMALL;
+    rad_vec3 *pts = heap ? malloc(sizeof *pts * (size_t)(capa + capb)) : pts_small;
+    double *w = heap ? malloc(sizeof *w * (size_t)(capa + capb)) : w_small;
+    double prev = NAN, dprev = NAN;
     int ok = 0;
     if (!pts || !w) {
         if (heap) {
@@ -117,14 +174,23 @@ int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, i
     }
     /* polygons of many vertices start at order 1 (their fans are fine already) */
     for (int k = na > 4 || nb > 4 ? 1 : 2; k <= AREA_ORDER_MAX && !ok; k++) {
-        int ma = polygon_points(a, na, origin, k, pts, w);
-        int mb = polygon_points(b, nb, origin, k, pts + cap, w + cap);
-        double s = area_sum(pts, w, ma, norm_a, pts + cap, w + cap, mb, norm_b);
-        if (isfinite(prev) && fabs(s - prev) <= rel_tol * fabs(s)) {
-            *s_out = s;
-            *err_out = fabs(s - prev);
-            ok = 1;
+        int ma = polygon_points(a, na, origin, k, nua, nva, pts, w);
+        int mb = polygon_points(b, nb, origin, k, nub, nvb, pts + capa, w + capa);
+        double s = area_sum(pts, w, ma, norm_a, pts + capa, w + capa, mb, norm_b);
+        const double d = fabs(s - prev);
+        if (isfinite(prev) && d <= rel_tol * fabs(s)) {
+            /* the geometric tail d q / (1 - q), q = d / dprev; d alone for
+             * q <= 1/2, and no claim at all without a previous difference
+             * that is larger */
+            const double q = d / dprev;
+            const double e = q <= 0.5 ? d : q < 1 ? d * q / (1 - q) : INFINITY;
+            if (e <= rel_tol * fabs(s)) {
+                *s_out = s;
+                *err_out = e;
+                ok = 1;
+            }
         }
+        dprev = d;
         prev = s;
         if ((size_t)ma * (size_t)mb > 4000000)
             break; /* too many points: the contour is cheaper */

@@ -138,7 +138,15 @@ double rad_ff_contour(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int 
 
 double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q)
 {
-    const edge_d ep = edge_of_d(p), eq = edge_of_d(q);
+    edge_d ep, eq; /* single edges: their own d */
+    ep.p0 = vec_of_d(p->p0);
+    ep.d = vec_of_d(p->d);
+    ep.len = p->len;
+    ep.e = vec_of_d(p->e);
+    eq.p0 = vec_of_d(q->p0);
+    eq.d = vec_of_d(q->d);
+    eq.len = q->len;
+    eq.e = vec_of_d(q->e);
     double mag;
     return ln_parallel_edges_d(&ep, &eq, &mag);
 }

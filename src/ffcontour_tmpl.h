@@ -52,11 +52,16 @@ typedef struct SUF(edge) {
     R len;
 } SUF(edge);
 
-static SUF(edge) SUF(edge_of)(const rad_ff_edge *x)
+/* The edge from x's start to the next edge's start (its end): in long
+ * double the difference of the two doubles is exact (up to 11 bits of
+ * exponent apart), so the contour closes exactly and no gap of a rounded
+ * d (an ulp of the coordinates, times the integral of ln r over the other
+ * contour) enters S; in double it is x->d itself. */
+static SUF(edge) SUF(edge_of)(const rad_ff_edge *x, const rad_ff_edge *next)
 {
     SUF(edge) r;
     r.p0 = SUF(vec_of)(x->p0);
-    r.d = SUF(vec_of)(x->d);
+    r.d = SUF(vsub)(SUF(vec_of)(next->p0), r.p0);
     /* the unit direction again in this type, from d */
     r.len = R_SQRT(SUF(vdot)(r.d, r.d));
     r.e = SUF(vscale)(r.d, 1 / r.len);
@@ -207,13 +212,13 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
         for (int q = 0; q < nb; q++)
             pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
     for (int p = 0; p < na; p++) {
-        const SUF(edge) ep = SUF(edge_of)(&ea[p]);
+        const SUF(edge) ep = SUF(edge_of)(&ea[p], &ea[(p + 1) % na]);
         for (int q = 0; q < nb; q++) {
             const double dot_d = v3_dot(ea[p].e, eb[q].e);
             if (fabs(dot_d) < 1e-14)
                 continue; /* perpendicular: no contribution */
             const rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
-            const SUF(edge) eq = SUF(edge_of)(&eb[q]);
+            const SUF(edge) eq = SUF(edge_of)(&eb[q], &eb[(q + 1) % nb]);
             const R dot = SUF(vdot)(ep.e, eq.e), lplq = ep.len * eq.len;
             R I, m;
             if (v3_dot(cr, cr) < 1e-26) { /* parallel */

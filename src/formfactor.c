@@ -29,8 +29,9 @@
  *              nine-point rule) and the closed form for colinear edges;
  *   default,   the first route that meets the tolerance by its own
  *   reference  estimate: (1) polygons apart: the K-point Gauss rule, K = 3,
- *              4 or 8, under an a priori bound (ffgauss.c; gauss_tiers
- *              below); (2) no skew edge pair: the closed forms, vectorised
+ *              4, 6 or 8, under an a priori bound, accepted within half the
+ *              promise (ffgauss.c, rad_ff_gauss_tiers); (2) no skew edge
+ *              pair: the closed forms, vectorised
  *              (ffcontour.c); (3) a pair small against its separation (sum
  *              of the bounding diagonals below the centroid distance, or
  *              below 1/4 of it in default): area rules (ffarea.c), where
