@@ -201,3 +201,164 @@ int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, i
     }
     return ok ? 0 : 1;
 }
+
+/* ---- adaptive area rules ---------------------------------------------------
+ *
+ * Two long strips end to end, or a strip beside a large plate, are neither
+ * small against their distance (so one product rule over each polygon
+ * needs orders beyond reach where they come closest) nor free of
+ * cancellation in the contour (their terms exceed S by 1e10 when they are
+ * nearly coplanar).  Cut into parts, though, every pair of parts is: the
+ * polygons become bilinear patches (a quadrilateral its own map of the
+ * unit square, any other polygon a fan of collapsed squares, as above),
+ * and a pair of patches whose larger is longer than ADAPT_ETA times their
+ * distance (the gap between their bounding boxes) has that larger one cut
+ * in two across its longer side; a pair close enough is integrated with
+ * ADAPT_K and ADAPT_K + 2 points per side, and the difference is its error
+ * estimate (the higher order errs far less: a patch at least 1/ADAPT_ETA
+ * times its size away lies inside a Bernstein ellipse of rho > 11 for the
+ * integrand, so 2k points err by about rho^-2k, 1e-13 and 1e-17).  The
+ * integrand has one sign throughout (facing polygons), so the sums over
+ * parts do not cancel.  At most ADAPT_LEAVES pairs are integrated;
+ * patches that touch never become close enough and end the attempt.
+ */
+
+#define ADAPT_ETA 0.35
+#define ADAPT_K 6
+#define ADAPT_LEAVES 4000
+#define ADAPT_STACK 256
+
+typedef struct patch {
+    rad_vec3 q[4]; /* the bilinear map's corners, relative to the origin */
+    rad_vec3 lo, hi;
+    double size;   /* bounding-box diagonal */
+} patch;
+
+static void patch_set(patch *p, rad_vec3 q0, rad_vec3 q1, rad_vec3 q2, rad_vec3 q3)
+{
+    p->q[0] = q0;
+    p->q[1] = q1;
+    p->q[2] = q2;
+    p->q[3] = q3;
+    p->lo = p->hi = q0;
+    for (int c = 1; c < 4; c++) {
+        p->lo = v3(fmin(p->lo.x, p->q[c].x), fmin(p->lo.y, p->q[c].y), fmin(p->lo.z, p->q[c].z));
+        p->hi = v3(fmax(p->hi.x, p->q[c].x), fmax(p->hi.y, p->q[c].y), fmax(p->hi.z, p->q[c].z));
+    }
+    p->size = v3_norm(v3_sub(p->hi, p->lo));
+}
+
+/* Cut p in two across its longer side (the bilinear map restricted to
+ * half the square is the bilinear map of the half's corners). */
+static void patch_split(const patch *p, patch *a, patch *b)
+{
+    const rad_vec3 *q = p->q;
+    const double lu = v3_norm(v3_sub(q[1], q[0])) + v3_norm(v3_sub(q[2], q[3]));
+    const double lv = v3_norm(v3_sub(q[3], q[0])) + v3_norm(v3_sub(q[2], q[1]));
+    if (lu >= lv) {
+        const rad_vec3 m01 = v3_lerp(q[0], q[1], 0.5), m32 = v3_lerp(q[3], q[2], 0.5);
+        patch_set(a, q[0], m01, m32, q[3]);
+        patch_set(b, m01, q[1], q[2], m32);
+    } else {
+        const rad_vec3 m03 = v3_lerp(q[0], q[3], 0.5), m12 = v3_lerp(q[1], q[2], 0.5);
+        patch_set(a, q[0], q[1], m12, m03);
+        patch_set(b, m03, m12, q[2], q[3]);
+    }
+}
+
+static double patch_gap(const patch *a, const patch *b)
+{
+    const double g[3] = {fmax(b->lo.x - a->hi.x, a->lo.x - b->hi.x),
+                         fmax(b->lo.y - a->hi.y, a->lo.y - b->hi.y),
+                         fmax(b->lo.z - a->hi.z, a->lo.z - b->hi.z)};
+    double g2 = 0;
+    for (int d = 0; d < 3; d++)
+        g2 += g[d] > 0 ? g[d] * g[d] : 0;
+    return sqrt(g2);
+}
+
+/* The polygon as patches: a quadrilateral one, any other n - 2 collapsed
+ * squares (P(u, v) = v0 + u (v_k - v0) + u v (v_k+1 - v_k): corners v0,
+ * v_k, v_k+1, v0).  Returns the count. */
+static int polygon_patches(const rad_vec3 *p, int n, rad_vec3 origin, patch *out)
+{
+    if (n == 4) {
+        patch_set(out, v3_sub(p[0], origin), v3_sub(p[1], origin), v3_sub(p[2], origin),
+                  v3_sub(p[3], origin));
+        return 1;
+    }
+    const rad_vec3 v0 = v3_sub(p[0], origin);
+    for (int t = 1; t + 1 < n; t++)
+        patch_set(&out[t - 1], v0, v3_sub(p[t], origin), v3_sub(p[t + 1], origin), v0);
+    return n - 2;
+}
+
+int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b,
+                         int nb, rad_vec3 norm_b, rad_vec3 origin, double rel_tol,
+                         double *s_out, double *err_out)
+{
+    enum { K = ADAPT_K, K2 = ADAPT_K + 2 };
+    rad_vec3 pa[K2 * K2], pb[K2 * K2];
+    double wa[K2 * K2], wb[K2 * K2];
+    patch *stack = malloc(sizeof *stack * 2 * ADAPT_STACK);
+    patch *ta = malloc(sizeof *ta * (size_t)(na > 2 ? na - 2 : 1));
+    patch *tb = malloc(sizeof *tb * (size_t)(nb > 2 ? nb - 2 : 1));
+    if (!stack || !ta || !tb) {
+        free(stack);
+        free(ta);
+        free(tb);
+        return -1;
+    }
+    const int ma = polygon_patches(a, na, origin, ta), mb = polygon_patches(b, nb, origin, tb);
+    double s = 0, e = 0;
+    int leaves = 0, ok = 1;
+    for (int i = 0; i < ma && ok; i++)
+        for (int j = 0; j < mb && ok; j++) {
+            int top = 0;
+            stack[0] = ta[i];
+            stack[1] = tb[j];
+            top = 1;
+            while (top > 0 && ok) {
+                patch *pp = &stack[2 * (top - 1)], *qq = pp + 1;
+                const double gap = patch_gap(pp, qq);
+                const double big = fmax(pp->size, qq->size);
+                if (big <= ADAPT_ETA * gap) {
+                    /* close enough: two orders */
+                    const patch x = *pp, y = *qq;
+                    top--;
+                    double sk[2];
+                    for (int o = 0; o < 2; o++) {
+                        const int k = o ? K2 : K;
+                        int na2 = polygon_points(x.q, 4, v3(0, 0, 0), k, 1, 1, pa, wa);
+                        int nb2 = polygon_points(y.q, 4, v3(0, 0, 0), k, 1, 1, pb, wb);
+                        sk[o] = area_sum(pa, wa, na2, norm_a, pb, wb, nb2, norm_b);
+                    }
+                    s += sk[1];
+                    e += fabs(sk[1] - sk[0]);
+                    ok = ++leaves <= ADAPT_LEAVES;
+                } else if (!(gap > 0) || top >= ADAPT_STACK) {
+                    ok = 0; /* touching, or too deep: not for this method */
+                } else {
+                    /* cut the larger; the pair becomes two */
+                    patch x1, x2;
+                    const int first = pp->size >= qq->size;
+                    patch_split(first ? pp : qq, &x1, &x2);
+                    const patch other = first ? *qq : *pp;
+                    patch *slot = &stack[2 * (top - 1)];
+                    slot[0] = first ? x1 : other;
+                    slot[1] = first ? other : x1;
+                    slot[2] = first ? x2 : other;
+                    slot[3] = first ? other : x2;
+                    top++;
+                }
+            }
+        }
+    free(stack);
+    free(ta);
+    free(tb);
+    if (!ok || !(e <= rel_tol * fabs(s)))
+        return 1;
+    *s_out = s;
+    *err_out = e;
+    return 0;
+}

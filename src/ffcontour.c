@@ -118,7 +118,8 @@ static void par_flush(const double *u, const double *d, const double *dot, int m
 #undef R_FABS
 #undef R_EPS
 
-/* long double */
+/* long double, the edges exact from the vertices */
+#define EXACT_EDGES
 #define R long double
 #define SUF(name) name##_ld
 #define R_LOG logl
@@ -130,10 +131,11 @@ static void par_flush(const double *u, const double *d, const double *dot, int m
 #include "ffcontour_tmpl.h"
 
 double rad_ff_contour(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
-                      double scale2, double tol, int extended, double *errest)
+                      double scale2, double tol, int extended, rad_vec3 origin,
+                      double *errest)
 {
-    return extended ? contour_ld(ea, na, eb, nb, scale2, tol, errest)
-                    : contour_d(ea, na, eb, nb, scale2, tol, errest);
+    return extended ? contour_ld(ea, na, eb, nb, scale2, tol, origin, errest)
+                    : contour_d(ea, na, eb, nb, scale2, tol, origin, errest);
 }
 
 double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q)

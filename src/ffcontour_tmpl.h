@@ -52,16 +52,25 @@ typedef struct SUF(edge) {
     R len;
 } SUF(edge);
 
-/* The edge from x's start to the next edge's start (its end): in long
- * double the difference of the two doubles is exact (up to 11 bits of
- * exponent apart), so the contour closes exactly and no gap of a rounded
- * d (an ulp of the coordinates, times the integral of ln r over the other
- * contour) enters S; in double it is x->d itself. */
-static SUF(edge) SUF(edge_of)(const rad_ff_edge *x, const rad_ff_edge *next)
+/* The edge from x's start to the next edge's start (its end), so that the
+ * contour closes in this type.  With EXACT_EDGES (long double) both come
+ * from the vertices as given less `origin`: differences of doubles that
+ * the 64-bit significand holds exactly (up to 11 bits of exponent apart),
+ * so neither the rounding of the vertices relative to the centroid nor a
+ * gap between edges (an ulp of the coordinates, times the log integral
+ * over the other contour) enters S; in double they are x->p0 and x->d. */
+static SUF(edge) SUF(edge_of)(const rad_ff_edge *x, const rad_ff_edge *next, SUF(vec) origin)
 {
     SUF(edge) r;
+#ifdef EXACT_EDGES
+    r.p0 = SUF(vsub)(SUF(vec_of)(x->v0), origin);
+    r.d = SUF(vsub)(SUF(vec_of)(next->v0), SUF(vec_of)(x->v0));
+#else
+    (void)next;
+    (void)origin;
     r.p0 = SUF(vec_of)(x->p0);
-    r.d = SUF(vsub)(SUF(vec_of)(next->p0), r.p0);
+    r.d = SUF(vec_of)(x->d);
+#endif
     /* the unit direction again in this type, from d */
     r.len = R_SQRT(SUF(vdot)(r.d, r.d));
     r.e = SUF(vscale)(r.d, 1 / r.len);
@@ -199,8 +208,9 @@ static R SUF(adaptive)(const SUF(edge) *p, const SUF(edge) *q, R tol, R *err)
  * among them; every I_pq integrates ln(r/s), s^2 = scale2.  *errest gets
  * the quadrature estimates plus 16 eps times the size of the terms. */
 static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
-                           double scale2, double tol, double *errest)
+                           double scale2, double tol, rad_vec3 origin_d, double *errest)
 {
+    const SUF(vec) origin = SUF(vec_of)(origin_d);
     const R ln_s = R_LOG((R)scale2) / 2;
     R s = 0, err = 0, mag = 0;
 #ifdef PAR_FLUSH
@@ -212,13 +222,13 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
         for (int q = 0; q < nb; q++)
             pairs += fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14;
     for (int p = 0; p < na; p++) {
-        const SUF(edge) ep = SUF(edge_of)(&ea[p], &ea[(p + 1) % na]);
+        const SUF(edge) ep = SUF(edge_of)(&ea[p], &ea[(p + 1) % na], origin);
         for (int q = 0; q < nb; q++) {
             const double dot_d = v3_dot(ea[p].e, eb[q].e);
             if (fabs(dot_d) < 1e-14)
                 continue; /* perpendicular: no contribution */
             const rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
-            const SUF(edge) eq = SUF(edge_of)(&eb[q], &eb[(q + 1) % nb]);
+            const SUF(edge) eq = SUF(edge_of)(&eb[q], &eb[(q + 1) % nb], origin);
             const R dot = SUF(vdot)(ep.e, eq.e), lplq = ep.len * eq.len;
             R I, m;
             if (v3_dot(cr, cr) < 1e-26) { /* parallel */

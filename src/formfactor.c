@@ -192,6 +192,7 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
     for (int k = 0; k < n; k++) {
         rad_vec3 a = v3_sub(p[k], origin), b = v3_sub(p[(k + 1) % n], origin);
         ff_edge *x = &e[m];
+        x->v0 = p[k];
         x->p0 = a;
         x->d = v3_sub(b, a);
         x->mid = v3_add(a, v3_scale(x->d, 0.5));
@@ -362,8 +363,11 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
                                &sg, &eg))
             return pair_done(a, sg, eg, contour, errest);
     }
-    /* edges in coordinates centred on A's centroid: precomputed unless
-     * clipped */
+    /* edges in coordinates centred on A's centroid: A's precomputed unless
+     * clipped; B's from its vertices, each rounded once, so that a vertex
+     * the two polygons share is the same point in both (through B's own
+     * centroid it would differ by an ulp of the coordinates, which a
+     * touching pair feels at the 1e-11 level) */
     int mea, meb;
     if (nega) {
         mea = rad_ff_edges(pa, na, a->centroid, ea);
@@ -371,16 +375,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         mea = a->nedges;
         memcpy(ea, a->edges, sizeof *ea * (size_t)mea);
     }
-    if (negb) {
-        meb = rad_ff_edges(pb, nb, a->centroid, eb);
-    } else {
-        const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
-        meb = b->nedges;
-        for (int k = 0; k < meb; k++) {
-            eb[k] = b->edges[k];
-            eb[k].p0 = v3_add(eb[k].p0, shift);
-        }
-    }
+    meb = rad_ff_edges(pb, nb, a->centroid, eb);
     double s, e = 0;
     if (opt->accuracy == RAD_ACCURACY_CLASSIC) {
         s = classic_sum(ea, mea, eb, meb, opt->quadrature, scale2);
@@ -394,7 +389,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         /* no skew edge pair: the closed forms (vectorised), exact but for
          * round-off */
         if (!skew) {
-            s = rad_ff_contour(ea, mea, eb, meb, scale2, 0, 0, &e);
+            s = rad_ff_contour(ea, mea, eb, meb, scale2, 0, 0, a->centroid, &e);
             if (s > 0 && e <= rel * s)
                 return pair_done(a, s, e, contour, errest);
         }
@@ -415,20 +410,21 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
             double s0 = 0;
             if (skew)
                 s0 = fabs(classic_sum(ea, mea, eb, meb, 3, scale2));
-            s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * s0, 0, &e);
+            s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * s0, 0, a->centroid, &e);
             if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
-                s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 0, &e);
+                s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 0, a->centroid, &e);
             /* still short of the tolerance: the terms cancel beyond double
              * (long thin pairs); the same in long double, if it does better */
             if (e > rel * fabs(s)) {
                 double sx, ex;
-                sx = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 1, &ex);
+                sx = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 1, a->centroid, &ex);
                 if (ex < e) {
                     s = sx;
                     e = ex;
                 }
             }
-            /* and failing that, the area form, if it does better */
+            /* and failing that, the area form, if it does better: in one
+             * piece, then cut into parts small against their distance */
             double sa, ea_;
             if (e > rel * fabs(s) && area == 1 &&
                 rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &sa,
@@ -436,6 +432,16 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
                 ea_ < e) {
                 s = sa;
                 e = ea_;
+            }
+            if (e > rel * fabs(s)) {
+                const int ad = rad_ff_area_adaptive(pa, na, a->normal, pb, nb, b->normal,
+                                                    a->centroid, rel, &sa, &ea_);
+                if (ad < 0)
+                    return NAN;
+                if (ad == 0 && ea_ < e) {
+                    s = sa;
+                    e = ea_;
+                }
             }
         }
         if (s < 0) { /* a form factor is never negative: clamp within its error */

@@ -9,6 +9,7 @@
 
 /* One edge of a polygon, relative to the polygon's centroid. */
 typedef struct rad_ff_edge {
+    rad_vec3 v0;    /* start, as given (absolute) */
     rad_vec3 p0;    /* start, relative to the centroid */
     rad_vec3 mid;   /* midpoint, relative to the centroid */
     rad_vec3 d;     /* end - start */
@@ -102,10 +103,13 @@ int rad_ff_gauss_tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2
 
 /* The contour sum S by closed forms (parallel edge pairs) and adaptive
  * quadrature (skew ones) with absolute tolerance tol, every I_pq
- * integrating ln(r/s) with s^2 = scale2; in long double if `extended`
- * (ffcontour.c).  *errest gets its error estimate. */
+ * integrating ln(r/s) with s^2 = scale2; in long double if `extended`,
+ * the edges then taken from their vertices as given (v0) less `origin`,
+ * the point their p0 are relative to, so that long double holds them
+ * exactly (ffcontour.c).  *errest gets its error estimate. */
 double rad_ff_contour(const rad_ff_edge *ea, int na, const rad_ff_edge *eb, int nb,
-                      double scale2, double tol, int extended, double *errest);
+                      double scale2, double tol, int extended, rad_vec3 origin,
+                      double *errest);
 /* The closed form of the integral of ln r over two parallel edges. */
 double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q);
 
@@ -115,5 +119,11 @@ double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q);
  * *err set, 1 when it did not converge (use the contour), -1 out of memory. */
 int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, int nb,
                 rad_vec3 norm_b, rad_vec3 origin, double rel_tol, double *s, double *err);
+/* The same by cutting both polygons into parts until every pair of parts
+ * is small against its distance (strips end to end, a strip beside a
+ * plate); the same returns.  Polygons that touch are not for it. */
+int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b,
+                         int nb, rad_vec3 norm_b, rad_vec3 origin, double rel_tol, double *s,
+                         double *err);
 
 #endif /* RAD_FORMFACTOR_H */

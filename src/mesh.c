@@ -46,11 +46,20 @@ static void polygon_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double
     *centroid = a > 0 ? v3_add(p[0], v3_scale(c, 1.0 / a)) : p[0];
 }
 
+/* (1 - t) a + t b: exactly a at t = 0 and b at t = 1 (a + t (b - a)
+ * rounds b - a, so the far end moves by an ulp of the larger coordinate:
+ * 2e-14 of the height of an element whose corner sits just above another
+ * plane), so the grid's corners are the quad's own vertices. */
+static rad_vec3 lerp_ends(rad_vec3 a, rad_vec3 b, double t)
+{
+    return v3_add(v3_scale(a, 1 - t), v3_scale(b, t));
+}
+
 static rad_vec3 bilinear(const rad_vec3 *q, double u, double v)
 {
-    rad_vec3 a = v3_lerp(q[0], q[1], u);
-    rad_vec3 b = v3_lerp(q[3], q[2], u);
-    return v3_lerp(a, b, v);
+    rad_vec3 a = lerp_ends(q[0], q[1], u);
+    rad_vec3 b = lerp_ends(q[3], q[2], u);
+    return lerp_ends(a, b, v);
 }
 
 rad_status rad_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
