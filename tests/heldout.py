@@ -12,7 +12,9 @@
 # 1e-3..1e3.  The reference is the contour integral (Goral et al. 1984,
 # eq. 13) in mpmath: the inner integral over each edge in closed form
 # (Gradshteyn & Ryzhik 2.733.1), the outer one by tanh-sinh quadrature with
-# breakpoints where the integrand has kinks, in a precision raised until
+# breakpoints where the integrand has kinks or comes near a singularity
+# (the ends of the other edge, the closest approach of skew lines), in a
+# precision raised until
 # two precisions 15 digits apart agree to 1e-17 (the contour cancels for
 # small or nearly coplanar pairs).  None of it shares code with the
 # program.  The program's default and reference modes must be within their
@@ -56,7 +58,7 @@ def edge_pair(P0, P1, Q0, Q1):
     dq = sub(Q1, Q0); lq = norm(dq); eq = scale(dq, 1 / lq)
     c = dot(ep, eq)
     if abs(c) < mp.mpf(10) ** (-mp.mp.dps + 5):
-        return mp.mpf(0), mp.mpf(0)
+        return mp.mpf(0), mp.mpf(0), mp.mpf(0)
 
     def inner(s):
         w = sub(add(P0, scale(ep, s)), Q0)
@@ -64,33 +66,49 @@ def edge_pair(P0, P1, Q0, Q1):
         h = norm(sub(w, scale(eq, t0)))
         return G(lq - t0, h) - G(-t0, h)
 
+    # breakpoints: where the point passes q's ends, and the closest
+    # approach of the two lines (a skew edge pair nearly touching there has
+    # a near-singularity tanh-sinh misses in the interior)
     pts = [mp.mpf(0), lp]
     for Qx in (Q0, Q1):
         s = dot(sub(Qx, P0), ep)
         if 0 < s < lp:
             pts.append(s)
-    return c, mp.quad(inner, sorted(set(pts)))
+    n = cross(ep, eq)
+    if dot(n, n) > mp.mpf(10) ** (-mp.mp.dps):
+        s = dot(cross(sub(Q0, P0), eq), n) / dot(n, n)
+        if 0 < s < lp:
+            pts.append(s)
+    value, err = mp.quad(inner, sorted(set(pts)), maxdegree=10, error=True)
+    return c, value, err
 
 
 def ff_at(A, B, dps):
+    """(F, tanh-sinh's own error estimate of it)"""
     with mp.workdps(dps):
         A = [[mp.mpf(x) for x in v] for v in A]
         B = [[mp.mpf(x) for x in v] for v in B]
-        s = mp.mpf(0)
+        s = e = mp.mpf(0)
         for i in range(len(A)):
             for j in range(len(B)):
-                c, integral = edge_pair(A[i], A[(i + 1) % len(A)], B[j], B[(j + 1) % len(B)])
+                c, integral, err = edge_pair(A[i], A[(i + 1) % len(A)], B[j], B[(j + 1) % len(B)])
                 s += c * integral
-        return s / (2 * mp.pi * area(A))
+                e += abs(c) * err
+        t = 2 * mp.pi * area(A)
+        return s / t, e / t
 
 
 def ff(A, B):
+    """F, or None when the reference itself is unsure (two precisions
+    disagree, or the quadrature's estimate exceeds 1e-17 of F)"""
     d = 25
-    f1 = ff_at(A, B, d)
+    f1, _ = ff_at(A, B, d)
     while True:
-        f2 = ff_at(A, B, d + 15)
-        if abs(f2 - f1) <= 1e-17 * abs(f2) or d > 120:
-            return float(f2)
+        f2, e2 = ff_at(A, B, d + 15)
+        if abs(f2 - f1) <= 1e-17 * abs(f2):
+            return float(f2) if e2 <= 1e-17 * abs(f2) else None
+        if d > 120:
+            return None
         d += 15
         f1 = f2
 
@@ -239,6 +257,9 @@ def main():
                     f.write(scene(A, B))
                 for acc, tol in (("default", 1e-6), ("reference", 1e-9)):
                     n += 1
+                    if exact is None:
+                        print("ok %d - %s [%s] # SKIP the mpmath reference is unsure" % (n, name, acc))
+                        continue
                     F, e, why = run(prog, path, acc)
                     if F is None:
                         print("not ok %d - %s [%s]: %s" % (n, name, acc, why))
