@@ -733,15 +733,6 @@ double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scal
     return NAN;
 }
 
-/* quad_eval_k for the general paths, in its own AVX2 clone */
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-static double quad_eval_any(const pair_batch *bt, int m, double inv_s2, int k)
-{
-    return quad_eval_k(bt, m, inv_s2, k, 0);
-}
-
 double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, double scale2,
                         double *pp)
 {

@@ -56,7 +56,6 @@
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
-#include "vecmath.h"
 
 #define RAD_PI 3.14159265358979323846
 

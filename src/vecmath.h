@@ -1,12 +1,13 @@
-/* vecmath.h -- natural logarithm of an array, written so that it vectorises.
+/* vecmath.h -- natural logarithm and arctangent written so that they
+ * vectorise: scalar (rad_log_core, rad_atan_core, for loops the compiler
+ * vectorises) and on four lanes (rad_log4, rad_log4_short).
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * The nine-point rule spends most of its time in logarithms of squared
+ * The Gauss rules spend most of their time in logarithms of squared
  * distances.  libm's log is scalar; this one is plain arithmetic on the
- * bits of the argument, with no branch and no table, so the compiler turns
- * a loop over it into SIMD code.  It is inline: a caller compiled in an
- * AVX2/FMA clone (target_clones) gets 4-lane code.
+ * bits of the argument, with no branch and no table.  It is inline: a
+ * caller compiled in an AVX2/FMA clone (target_clones) gets 4-lane code.
  *
  * Method (the classic reduction, e.g. Cody & Waite 1980, ch. 5; Tang 1990):
  *   x = 2^k z with z in [sqrt(1/2), sqrt(2)), read off the bits;
@@ -24,9 +25,9 @@
  * random arguments over the whole range the largest error seen was 1.1
  * ulp; tests/test_vecmath.c checks 2 ulp against libm.
  *
- * Arguments that are not positive normal numbers (0, subnormal, negative,
- * infinite, NaN) are passed to libm's log afterwards, so those results are
- * exactly libm's.
+ * rad_log4 passes arguments that are not positive normal numbers (0,
+ * subnormal, negative, infinite, NaN) to libm's log afterwards, so those
+ * results are exactly libm's.
  *
  * Arctangent atan(y/x) for x > 0 (rad_atan_core; the closed form of the
  * parallel-edge integral needs no other quadrant), by three reductions
@@ -189,7 +190,7 @@ RAD_LOG_INLINE rad_v4d rad_log4_short(rad_v4d x)
 }
 
 /* ln of four lanes; lanes that are not positive normal numbers get
- * libm's log, as in rad_log_batch. */
+ * libm's log. */
 RAD_LOG_INLINE rad_v4d rad_log4(rad_v4d x)
 {
     rad_v4d y = rad_log4_core(x);
@@ -202,20 +203,5 @@ RAD_LOG_INLINE rad_v4d rad_log4(rad_v4d x)
 }
 #pragma GCC diagnostic pop
 #endif
-
-/* y[i] = ln x[i] for i < n, within 2 ulp; arguments that are not positive
- * normal numbers get libm's log.  y and x must not overlap. */
-RAD_LOG_INLINE void rad_log_batch(double *restrict y, const double *restrict x, int n)
-{
-    int bad = 0;
-#pragma omp simd reduction(| : bad)
-    for (int i = 0; i < n; i++) {
-        y[i] = rad_log_core(x[i]);
-        bad |= (x[i] >= DBL_MIN) & (x[i] <= DBL_MAX) ? 0 : 1;
-    }
-    for (int i = 0; bad && i < n; i++)
-        if (!(x[i] >= DBL_MIN && x[i] <= DBL_MAX))
-            y[i] = log(x[i]);
-}
 
 #endif /* RAD_VECLOG_H */
