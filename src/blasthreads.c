@@ -10,8 +10,9 @@
  * its cores with them: on a 2-core machine one run in four of the 7x7 cube
  * took 70 ms instead of 3.  OpenBLAS's own blas_thread_shutdown_ (its fork
  * handler) stops them, and OpenBLAS starts them again at its next threaded
- * call.  The reference is weak: with another BLAS the symbol is absent and
- * nothing happens.
+ * call (after which they spin again: `radiosity sweep` parks them before
+ * each timed fill).  The reference is weak: with another BLAS the symbol
+ * is absent and nothing happens.
  */
 #include <config.h>
 

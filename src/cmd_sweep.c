@@ -25,6 +25,7 @@
 
 #include "atomicfile.h"
 #include "cli.h"
+#include "lapack.h"
 #include "plotxy.h"
 
 enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT };
@@ -230,6 +231,10 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
     double tf[TIME_RUNS], ts[TIME_RUNS], spent = 0;
     int nf = 0, ns = 0;
     rad_status st = RAD_OK;
+    /* the solve of the row before left OpenBLAS's threads spinning for a
+     * tenth of a second (blasthreads.c): they would take a core from the
+     * fill */
+    rad_blas_park_threads();
     while (st == RAD_OK && nf < TIME_RUNS && spent < TIME_SPAN) {
         double t0 = now();
         st = rad_ff_matrix(&out->mesh, ff, F, NULL, NULL, &err);
