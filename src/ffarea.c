@@ -95,26 +95,10 @@ static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, int 
 /* Bounding-box gap between the vertex sets a and b (0 if they overlap). */
 static double vertex_box_gap(const rad_vec3 *a, int na, const rad_vec3 *b, int nb)
 {
-    double lo[2][3], hi[2][3], g2 = 0;
-    const rad_vec3 *ps[2] = {a, b};
-    const int ns[2] = {na, nb};
-    for (int s = 0; s < 2; s++) {
-        lo[s][0] = hi[s][0] = ps[s][0].x;
-        lo[s][1] = hi[s][1] = ps[s][0].y;
-        lo[s][2] = hi[s][2] = ps[s][0].z;
-        for (int k = 1; k < ns[s]; k++) {
-            const double c[3] = {ps[s][k].x, ps[s][k].y, ps[s][k].z};
-            for (int d = 0; d < 3; d++) {
-                lo[s][d] = fmin(lo[s][d], c[d]);
-                hi[s][d] = fmax(hi[s][d], c[d]);
-            }
-        }
-    }
-    for (int d = 0; d < 3; d++) {
-        const double gap = fmax(lo[1][d] - hi[0][d], lo[0][d] - hi[1][d]);
-        g2 += gap > 0 ? gap * gap : 0;
-    }
-    return sqrt(g2);
+    rad_vec3 alo, ahi, blo, bhi;
+    v3_bounds(a, na, &alo, &ahi);
+    v3_bounds(b, nb, &blo, &bhi);
+    return sqrt(v3_box_gap2(alo, ahi, blo, bhi));
 }
 
 /* Parts per side of quadrilateral p for pieces at most D/2 long. */
@@ -240,11 +224,7 @@ static void patch_set(patch *p, rad_vec3 q0, rad_vec3 q1, rad_vec3 q2, rad_vec3 
     p->q[1] = q1;
     p->q[2] = q2;
     p->q[3] = q3;
-    p->lo = p->hi = q0;
-    for (int c = 1; c < 4; c++) {
-        p->lo = v3(fmin(p->lo.x, p->q[c].x), fmin(p->lo.y, p->q[c].y), fmin(p->lo.z, p->q[c].z));
-        p->hi = v3(fmax(p->hi.x, p->q[c].x), fmax(p->hi.y, p->q[c].y), fmax(p->hi.z, p->q[c].z));
-    }
+    v3_bounds(p->q, 4, &p->lo, &p->hi);
     p->size = v3_norm(v3_sub(p->hi, p->lo));
 }
 
@@ -268,13 +248,7 @@ static void patch_split(const patch *p, patch *a, patch *b)
 
 static double patch_gap(const patch *a, const patch *b)
 {
-    const double g[3] = {fmax(b->lo.x - a->hi.x, a->lo.x - b->hi.x),
-                         fmax(b->lo.y - a->hi.y, a->lo.y - b->hi.y),
-                         fmax(b->lo.z - a->hi.z, a->lo.z - b->hi.z)};
-    double g2 = 0;
-    for (int d = 0; d < 3; d++)
-        g2 += g[d] > 0 ? g[d] * g[d] : 0;
-    return sqrt(g2);
+    return sqrt(v3_box_gap2(a->lo, a->hi, b->lo, b->hi));
 }
 
 /* The polygon as patches: a quadrilateral one, any other n - 2 collapsed

@@ -242,14 +242,16 @@ static inline double pow_k(double x, int k)
     return k == 3 ? x2 * x : k == 4 ? x4 : k == 6 ? x4 * x2 : x4 * x4;
 }
 
+/* C_K of the derivative bound (see the top of the file), K = 3, 4, 6, 8 */
+#define C3 (1 / 16800.0)
+#define C4 (1 / 352800.0)
+#define C6 (1 / 133189056.0)
+#define C8 (1 / 45053236800.0)
+
 static inline __attribute__((always_inline)) double bound_k(const rad_ff_gauss_bounds *g,
                                                             int k)
 {
-    /* C_K of the derivative bound (see the top of the file) */
-    const double ck = k == 3   ? 1 / 16800.0
-                      : k == 4 ? 1 / 352800.0
-                      : k == 6 ? 1 / 133189056.0
-                               : 1 / 45053236800.0;
+    const double ck = k == 3 ? C3 : k == 4 ? C4 : k == 6 ? C6 : C8;
     double e = 2 * ck * pow_k(g->q2, k);
     if (g->rho2 > 1) { /* Thm 19.3 with n = K - 1 */
         const double ellipse = (64.0 / 15.0) * g->M / (pow_k(g->rho2, k) * (1 - 1 / g->rho2));
@@ -560,10 +562,10 @@ static inline void fast_bounds(double d, double mu, double z, double pp, double 
     const double d2 = d * d, d3 = d2 * d, d4 = d2 * d2, d5 = d4 * d, d6 = d4 * d2, d7 = d6 * d;
     const double m2 = mu * mu, m3 = m2 * mu, m4 = m2 * m2, m6 = m4 * m2, m8 = m4 * m4;
     const double r = 8 * DBL_EPSILON * z + log_err * d;
-    t[0] = pp * ((2 / 16800.0) * m3 + r * d2);
-    t[1] = pp * ((2 / 352800.0) * m4 + r * d3);
-    t[2] = pp * ((2 / 133189056.0) * m6 + r * d5);
-    t[3] = pp * ((2 / 45053236800.0) * m8 + r * d7);
+    t[0] = pp * (2 * C3 * m3 + r * d2);
+    t[1] = pp * (2 * C4 * m4 + r * d3);
+    t[2] = pp * (2 * C6 * m6 + r * d5);
+    t[3] = pp * (2 * C8 * m8 + r * d7);
     dk[0] = d3;
     dk[1] = d4;
     dk[2] = d6;
@@ -580,6 +582,13 @@ static double sum_ll(const rad_ff_poly *a, const rad_ff_poly *b)
             pp += dot >= 1e-14 ? dot * a->edges[p].len * b->edges[q].len : 0;
         }
     return pp;
+}
+
+/* A guess at S, only to choose the rule: both polygons as points,
+ * S ~ 2 A_a A_b cos_a cos_b / c^2 = 2 G / c^4; returns G. */
+static inline double guess_g(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 sep)
+{
+    return a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
 }
 
 /* The K-point rule's S: from the batch, or (large polygons) afresh */
@@ -601,12 +610,9 @@ static int tiers_general(const rad_ff_poly *a, const rad_ff_poly *b, const pair_
     if (!bounds_apart(a, b, sep2, scale2, inv_s2, dmin, &g))
         return 0;
     g.pp = pp;
-    /* A guess at S, only to choose the rule: both polygons as points,
-     * S ~ 2 A_a A_b cos_a cos_b / c^2 = 2 G / c^4.  The first rule whose
-     * bound is within rel / 2 of it is tried (or the 8 x 8 rule if its
-     * bound is within 4 rel of it). */
-    const double sep4 = sep2 * sep2;
-    const double G = a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
+    /* The first rule whose bound is within rel / 2 of the guess at S is
+     * tried (or the 8 x 8 rule if its bound is within 4 rel of it). */
+    const double sep4 = sep2 * sep2, G = guess_g(a, b, sep);
     int t = 0;
     while (t < 3 && !(bound_k(&g, tier_k[t]) * sep4 <= rel * G))
         t++;
@@ -675,8 +681,7 @@ tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, do
             double tk[4], dk[4];
             fast_bounds(d, mu, z, pp, short_log ? LOG_SHORT_ERR : 0, tk, dk);
             /* the guess at S (as in tiers_general), times sep^4 */
-            const double sep4 = sep2 * sep2;
-            const double G = a->area * b->area * v3_dot(a->normal, sep) * -v3_dot(b->normal, sep);
+            const double sep4 = sep2 * sep2, G = guess_g(a, b, sep);
             const double rg = rel * G;
             int t = tk[0] * sep4 <= rg * dk[0]   ? 0
                     : tk[1] * sep4 <= rg * dk[1] ? 1

@@ -56,10 +56,7 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
         double t = 0.5 * v3_dot(v3_cross(e1, e2), nrm);
         c = v3_add(c, v3_scale(v3_add(e1, e2), t / 3.0));
     }
-    for (int k = 1; k < n; k++) {
-        lo = v3(fmin(lo.x, v[k].x), fmin(lo.y, v[k].y), fmin(lo.z, v[k].z));
-        hi = v3(fmax(hi.x, v[k].x), fmax(hi.y, v[k].y), fmax(hi.z, v[k].z));
-    }
+    v3_bounds(v, n, &lo, &hi);
     poly->v = v;
     poly->n = n;
     poly->normal = nrm;

@@ -274,14 +274,7 @@ static double classic_sum(const ff_edge *ea, int na, const ff_edge *eb, int nb, 
 /* Squared distance between the bounding boxes of a and b (0 if they meet). */
 static double box_gap2(const rad_ff_poly *a, const rad_ff_poly *b)
 {
-    const double lo[3] = {b->lo.x - a->hi.x, b->lo.y - a->hi.y, b->lo.z - a->hi.z};
-    const double hi[3] = {a->lo.x - b->hi.x, a->lo.y - b->hi.y, a->lo.z - b->hi.z};
-    double g2 = 0;
-    for (int k = 0; k < 3; k++) {
-        const double gk = lo[k] > hi[k] ? lo[k] : hi[k];
-        g2 += gk > 0 ? gk * gk : 0;
-    }
-    return g2;
+    return v3_box_gap2(a->lo, a->hi, b->lo, b->hi);
 }
 
 /* Store S and its estimate; F from a to b. */

@@ -476,15 +476,6 @@ static int clear_of_shaft(const occ_space *sp, int nh, const rad_vec3 *all, int 
     return 0;
 }
 
-static void bounds(const rad_vec3 *p, int n, rad_vec3 *lo, rad_vec3 *hi)
-{
-    *lo = *hi = p[0];
-    for (int k = 1; k < n; k++) {
-        *lo = v3(fmin(lo->x, p[k].x), fmin(lo->y, p[k].y), fmin(lo->z, p[k].z));
-        *hi = v3(fmax(hi->x, p[k].x), fmax(hi->y, p[k].y), fmax(hi->z, p[k].z));
-    }
-}
-
 static int boxes_meet(rad_vec3 alo, rad_vec3 ahi, rad_vec3 blo, rad_vec3 bhi, double tol)
 {
     return alo.x <= bhi.x + tol && blo.x <= ahi.x + tol && alo.y <= bhi.y + tol &&
@@ -549,7 +540,7 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
         if (ne > 0) {
             int n = surface_outline(m, s, o->sv + at);
             o->snormal[s] = m->elements[e0].normal;
-            bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
+            v3_bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
             at += n;
         } else {
             o->snormal[s] = o->slo[s] = o->shi[s] = v3(0, 0, 0);
@@ -582,7 +573,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
             owners[nc++] = c;
     } else {
         rad_vec3 lo, hi, pad = v3(o->touch, o->touch, o->touch);
-        bounds(all, nall, &lo, &hi);
+        v3_bounds(all, nall, &lo, &hi);
         nc = rad_vis_box_polygons(vis, v3_sub(lo, pad), v3_add(hi, pad), owners);
         if (nc < 0)
             return -1;
@@ -661,7 +652,7 @@ static double scene_size(const rad_mesh *m)
     if (m->nvertices < 1)
         return 1.0;
     rad_vec3 lo, hi;
-    bounds(m->vertices, m->nvertices, &lo, &hi);
+    v3_bounds(m->vertices, m->nvertices, &lo, &hi);
     double L = v3_norm(v3_sub(hi, lo));
     return L > 0 ? L : 1.0;
 }
@@ -1298,7 +1289,7 @@ static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const 
             return -1;
     }
     rad_vec3 lo, hi;
-    bounds(all, nall, &lo, &hi);
+    v3_bounds(all, nall, &lo, &hi);
     ps_clear(&sp->blk);
     int nb = 0;
     for (int k = 0; k < ncand; k++) {

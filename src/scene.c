@@ -164,11 +164,8 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
                              const char *file, int line, rad_error *err)
 {
     line_ctx c = {file, line, NULL, 0, err};
-    rad_vec3 lo = p[0], hi = p[0];
-    for (int k = 1; k < n; k++) {
-        lo = v3(fmin(lo.x, p[k].x), fmin(lo.y, p[k].y), fmin(lo.z, p[k].z));
-        hi = v3(fmax(hi.x, p[k].x), fmax(hi.y, p[k].y), fmax(hi.z, p[k].z));
-    }
+    rad_vec3 lo, hi;
+    v3_bounds(p, n, &lo, &hi);
     double diam = v3_norm(v3_sub(hi, lo));
     if (!(diam > 0) || !isfinite(diam))
         return fail_at(&c, "%s has zero area (all vertices coincide)", what);

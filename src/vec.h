@@ -31,6 +31,28 @@ static inline double v3_maxabs(rad_vec3 a)
     double m = x > y ? x : y;
     return m > z ? m : z;
 }
+/* Bounding box of p[0..n), n >= 1. */
+static inline void v3_bounds(const rad_vec3 *p, int n, rad_vec3 *lo, rad_vec3 *hi)
+{
+    *lo = *hi = p[0];
+    for (int k = 1; k < n; k++) {
+        *lo = v3(fmin(lo->x, p[k].x), fmin(lo->y, p[k].y), fmin(lo->z, p[k].z));
+        *hi = v3(fmax(hi->x, p[k].x), fmax(hi->y, p[k].y), fmax(hi->z, p[k].z));
+    }
+}
+/* Squared distance between two boxes (0 if they meet).  Comparisons, not
+ * fmax: the pair kernel calls it for every pair. */
+static inline double v3_box_gap2(rad_vec3 alo, rad_vec3 ahi, rad_vec3 blo, rad_vec3 bhi)
+{
+    const double lo[3] = {blo.x - ahi.x, blo.y - ahi.y, blo.z - ahi.z};
+    const double hi[3] = {alo.x - bhi.x, alo.y - bhi.y, alo.z - bhi.z};
+    double g2 = 0;
+    for (int k = 0; k < 3; k++) {
+        const double g = lo[k] > hi[k] ? lo[k] : hi[k];
+        g2 += g > 0 ? g * g : 0;
+    }
+    return g2;
+}
 /* a + t (b - a) */
 static inline rad_vec3 v3_lerp(rad_vec3 a, rad_vec3 b, double t)
 {
