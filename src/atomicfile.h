@@ -2,11 +2,13 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * rad_afile_open writes to a temporary file beside the target;
- * rad_afile_commit flushes, syncs and renames it over the target;
- * rad_afile_abort removes it.  A run that fails or is killed never leaves a
- * truncated output or clobbers an existing one.  The path "-" is standard
- * output (written directly).
+ * rad_afile_open prepares an output: a regular file (or an absent path) is
+ * written to a temporary file beside it, which rad_afile_commit flushes,
+ * syncs and renames over the target and rad_afile_abort removes; a device,
+ * FIFO or held descriptor ("-", /dev/stdout, /dev/fd/N) is written directly;
+ * a symbolic link is followed and its target replaced, the link kept.
+ * atomicfile.c spells out every case.  A run that fails or is killed never
+ * leaves a truncated output, and never replaces what is not a regular file.
  */
 #ifndef RAD_ATOMICFILE_H
 #define RAD_ATOMICFILE_H
@@ -17,12 +19,20 @@
 
 typedef struct rad_afile {
     FILE *fp;
-    char *path;     /* target */
-    char *tmp;      /* temporary name, NULL for standard output */
+    char *user_path; /* as given, for messages */
+    char *path;      /* the target, links followed; NULL when written directly */
+    char *tmp;       /* temporary name, NULL when written directly */
+    int direct;      /* written in place (device, FIFO, held descriptor) */
 } rad_afile;
 
 rad_status rad_afile_open(rad_afile *f, const char *path, rad_error *err);
 rad_status rad_afile_commit(rad_afile *f, rad_error *err);
 void rad_afile_abort(rad_afile *f);
+
+/* Could path be written?  Checks, without creating anything, what can be
+ * known before a long computation: the directory of a file to be replaced
+ * exists and takes new files; a device or FIFO is writable; the path is not
+ * a directory or a broken link chain. */
+rad_status rad_afile_check(const char *path, rad_error *err);
 
 #endif /* RAD_ATOMICFILE_H */

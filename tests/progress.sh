@@ -30,7 +30,7 @@ head -c 8 "$work/race.png" | od -An -c | grep -q 'P   N   G'; ok $? "the plot is
 grep -q 'first step within 1e-06' "$work/summary"; ok $? "the summary says when each method is within 1e-6"
 "$RADIOSITY" progress -q --mesh 2x2 --steps 20 --patches -o "$work/p.tsv" "$cube"
 ok $? "--patches"
-"$RADIOSITY" progress -q --mesh 2x2 --steps 8 --snapshots 4 --snapshot-prefix "$work/snap" -o /dev/null "$cube"
+"$RADIOSITY" progress -q --mesh 2x2 --steps 8 --snapshots 4 --snapshot-prefix "$work/snap" -o "$work/discard.tsv" "$cube"
 [ "$(ls "$work" | grep -c '^snap-.*-00000[048]\.png$')" -eq 12 ]; ok $? "--snapshots 4: 3 images of each of the 4 methods"
 [ -s "$work/snap-sorted_ambient-000004.png" ]; ok $? "snapshots are named PREFIX-METHOD-STEP.png"
 
