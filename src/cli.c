@@ -138,26 +138,6 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
     }
 }
 
-int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx)
-{
-    rad_afile f;
-    rad_error err;
-    if (rad_afile_open(&f, path, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    if (fn(f.fp, ctx) != 0) {
-        rad_afile_abort(&f);
-        cli_error("%s: write error", path);
-        return 1;
-    }
-    if (rad_afile_commit(&f, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    return 0;
-}
-
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
 {
     rad_error err;
@@ -254,6 +234,7 @@ static void usage(FILE *out)
 int main(int argc, char **argv)
 {
     rad_blas_park_threads(); /* see blasthreads.c */
+    cli_signals_install();   /* outputs are never left half-written */
     if (argc < 2) {
         usage(stderr);
         return EXIT_USAGE;

@@ -11,6 +11,7 @@
 #include <getopt.h>
 #include <stdio.h>
 
+#include "pipeline.h"
 #include "radiosity.h"
 
 #define EXIT_USAGE 2
@@ -69,9 +70,29 @@ int cli_parse_double(const char *arg, double *out);
 /* Parse "X,Y,Z". */
 int cli_parse_vec3(const char *arg, rad_vec3 *out);
 
-/* Write an output through fn, atomically (atomicfile.h): 0, or 1 with the
- * error printed.  fn returns 0, or -1 on a write error. */
+/* ---- outputs (cli_output.c) --------------------------------------------- */
+
+/* A writer prints ctx to out and returns 0, or -1 on a write error. */
 typedef int (*cli_writer_fn)(FILE *out, const void *ctx);
+
+/* One output of a run; a NULL path is skipped. */
+typedef struct cli_output {
+    const char *path;
+    cli_writer_fn write;
+    const void *ctx;
+} cli_output;
+
+#define CLI_MAX_OUTPUTS 16
+
+/* Remove registered temporaries and exit 128 + signal on SIGINT, SIGTERM
+ * and SIGHUP (those not ignored at start-up). */
+void cli_signals_install(void);
+/* Before any work: could every path be written?  0, or 1 (printed). */
+int cli_outputs_check(const cli_output *o, int n);
+/* Write every output to its temporary, then rename them all together
+ * (atomicfile.h): 0, or 1 with the error printed and nothing replaced. */
+int cli_outputs_write(const cli_output *o, int n);
+/* One output alone. */
 int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx);
 
 /* Load the scene and apply --mesh; prints the error and returns 1 on
@@ -104,6 +125,8 @@ typedef struct cli_solve {
     const char *report;         /* --report FILE (JSON), or NULL */
     const char *elements;       /* --elements FILE, or NULL */
     const char *form_factors;   /* --form-factors FILE, or NULL */
+    const char *trace;          /* --trace FILE (progressive), or NULL */
+    int given_solver, given_tolerance, given_max_iterations, given_bounces;
 } cli_solve;
 
 #define CLI_SOLVE_LONGOPTS                                                \
@@ -123,37 +146,55 @@ typedef struct cli_solve {
     "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
     "                          jacobi, gauss-seidel or progressive (shooting,\n"  \
     "                          Cohen et al. 1988)\n"                              \
-    "      --trace FILE        progressive: one TSV row per shooting step\n"       \
+    "      --trace FILE        progressive: one TSV row per shooting step (step\n" \
+    "                          shooter shot unshot rms rms_ambient)\n"           \
     "      --patches           progressive: each surface shoots as one patch\n"    \
-    "      --tolerance T       iterative solvers: stop when the relative change\n"\
-    "                          of B between sweeps is below T (default 1e-12;\n"  \
-    "                          progressive: unshot power / emitted power)\n"      \
-    "      --max-iterations N  iterative solvers: give up after N sweeps (or\n"     \
-    "                          shooting steps)\n"                                 \
-    "                          (default 100000)\n"                                \
+    "      --tolerance T       jacobi, gauss-seidel, progressive: stop when the\n" \
+    "                          relative change of B between sweeps is below T\n" \
+    "                          (default 1e-12; progressive: unshot power /\n"    \
+    "                          emitted power)\n"                                 \
+    "      --max-iterations N  jacobi, gauss-seidel, progressive: give up after\n" \
+    "                          N sweeps or shooting steps (default 100000)\n"    \
     "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\
+    "                          (a solver of its own: no --solver, --tolerance)\n"\
     "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\
     "      --report FILE       full diagnostics as JSON\n"                         \
     "      --elements FILE     per-element table (TSV)\n"                          \
     "      --form-factors FILE the form-factor matrix (Matrix Market)\n"          \
     CLI_COMMON_HELP
 
-/* The solution of a scene, as the pipeline leaves it. */
-typedef struct cli_result {
+/* One run of the pipeline (pipeline.h) as a command sees it. */
+typedef struct cli_run {
     rad_scene scene;
-    rad_mesh mesh;
-    double *B;                  /* nelements x RAD_BANDS, column-major */
-    double *Bv;                 /* nvertices x RAD_BANDS, column-major */
-} cli_result;
+    rad_result res;
+    rad_status status;          /* of rad_pipeline_run */
+    double t_parse, t_output;
+    rad_shot *shots;            /* the --trace rows */
+    int nshots, cap;
+    cli_solve *s;
+} cli_run;
 
 void cli_solve_init(cli_solve *s);
 /* 0 handled, 1 not a solve/common option, 2 usage error (printed). */
 int cli_solve_option(cli_solve *s, int opt, const char *arg);
-/* Load, mesh, form factors, solve, smooth, and write --report, --elements
- * and --form-factors; prints the summary unless quiet.  0 on success, 1 on
- * an error (printed).  On success the caller owns r (cli_result_free). */
-int cli_solve_run(cli_solve *s, const char *scene_path, cli_result *r);
-void cli_result_free(cli_result *r);
+/* Options that contradict each other or that the chosen solver would
+ * ignore: 0, or 2 (printed). */
+int cli_solve_check(const cli_solve *s);
+/* Load the scene and apply --mesh: 0, or 1 (printed). */
+int cli_run_load(cli_run *run, cli_solve *s, const char *path);
+/* The outputs the solve options ask for (--report, --elements,
+ * --form-factors, --trace), appended at o; returns how many.  Before the
+ * run (done = 0) all of them, for cli_outputs_check; after a failed run
+ * only what says why (the report, and the trace of a solve that did not
+ * converge). */
+int cli_run_outputs(const cli_run *run, int done, cli_output *o);
+/* The pipeline on the loaded scene; prints the summary unless quiet.  0,
+ * or 1 with the error printed (run->status says which). */
+int cli_run_solve(cli_run *run);
+/* Write the run's outputs together with the command's own (extra, written
+ * only when the run succeeded; cli_outputs_write): 0, or 1 (printed). */
+int cli_run_write(cli_run *run, const cli_output *extra, int n_extra);
+void cli_run_free(cli_run *run);
 
 int cmd_formfactor(int argc, char **argv);
 int cmd_solve(int argc, char **argv);

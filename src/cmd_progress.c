@@ -72,9 +72,10 @@ static void help(void)
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
            CLI_COMMON_HELP
            "\n"
-           "Outputs are written to a temporary file and renamed: a failed run never\n"
-           "leaves a partial file.  Exit status: 0 on success, 1 on an error, 2 on a\n"
-           "usage error.\n",
+           "A regular file is written to a temporary beside it and renamed at the end:\n"
+           "a failed or interrupted run leaves the old file whole; a device or FIFO is\n"
+           "written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"
+           "usage error; 128 + signal when interrupted.\n",
            DEFAULT_STEPS_CAP);
 }
 
@@ -128,6 +129,16 @@ typedef struct snap_ctx {
     int failed;
 } snap_ctx;
 
+static int write_png(FILE *out, const void *img)
+{
+    rad_error err;
+    if (rad_image_write_png(img, out, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return -1;
+    }
+    return 0;
+}
+
 static int snapshot(void *user, int method, int step, const double *B)
 {
     snap_ctx *c = user;
@@ -141,8 +152,11 @@ static int snapshot(void *user, int method, int step, const double *B)
         return 1;
     }
     if (rad_render(&model, &c->ropt, &img, &c->err) == RAD_OK) {
-        if (rad_image_write_png(&img, path, &c->err) != RAD_OK)
+        if (cli_write_atomic(path, write_png, &img)) {
             c->failed = 1;
+            snprintf(c->err.message, sizeof c->err.message, "the snapshots stop at step %d",
+                     step);
+        }
         rad_image_free(&img);
     } else {
         c->failed = 1;
@@ -175,10 +189,22 @@ static int write_table_to(FILE *out, const void *ctx)
     return ferror(out) ? -1 : 0;
 }
 
-static int write_table(const char *path, const double *rms, int steps)
+typedef struct plot_ctx {
+    const double *rms;
+    int steps;
+    const char *title;
+} plot_ctx;
+
+static int write_plot_to(FILE *out, const void *ctx)
 {
-    table_ctx t = {rms, steps};
-    return cli_write_atomic(path, write_table_to, &t);
+    const plot_ctx *p = ctx;
+    rad_error err;
+    if (rad_race_plot(p->rms, p->steps, p->title, PLOT_WIDTH, PLOT_HEIGHT, out, &err) !=
+        RAD_OK) {
+        cli_error_rec(&err);
+        return -1;
+    }
+    return 0;
 }
 
 /* Shooters that emit: elements, or surfaces with --patches. */
@@ -322,20 +348,16 @@ static int race(progress_args *a, pipeline *p)
 
 static int outputs(const progress_args *a, const pipeline *p)
 {
-    rad_error err;
     char title[512];
-    if (write_table(a->output ? a->output : "-", p->rms, a->race.steps))
+    const char *name = strrchr(p->scene.filename, '/');
+    snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
+             name ? name + 1 : p->scene.filename);
+    const table_ctx t = {p->rms, a->race.steps};
+    const plot_ctx pl = {p->rms, a->race.steps, title};
+    const cli_output o[2] = {{a->output ? a->output : "-", write_table_to, &t},
+                             {a->plot, write_plot_to, &pl}};
+    if (cli_outputs_write(o, 2))
         return 1;
-    if (a->plot) {
-        const char *name = strrchr(p->scene.filename, '/');
-        snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
-                 name ? name + 1 : p->scene.filename);
-        if (rad_race_plot(p->rms, a->race.steps, title, PLOT_WIDTH, PLOT_HEIGHT, a->plot,
-                          &err) != RAD_OK) {
-            cli_error_rec(&err);
-            return 1;
-        }
-    }
     if (!a->common.quiet)
         summary(&p->mesh, &a->race, p->rms, p->reached);
     return 0;

@@ -2,8 +2,8 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * The input is either a scene (solved here through cli_solve_run, so every
- * solve option applies) or a solution PLY written by `radiosity solve
+ * The input is either a scene (solved here through the library's pipeline,
+ * cmd_solve.c's cli_run, so every solve option applies) or a solution PLY written by `radiosity solve
  * --output` (read by plyread.c).  The camera comes from the scene's camera
  * line or the PLY's camera comment; --eye, --at, --up and --fov override
  * it piece by piece.  Every output goes through a temporary file, so it
@@ -17,7 +17,6 @@
 #include <string.h>
 #include <strings.h>
 
-#include "atomicfile.h"
 #include "cli.h"
 #include "plot.h"
 #include "plyread.h"
@@ -233,54 +232,35 @@ static int make_camera(const render_args *a, const rad_camera *base, rad_camera 
     return 0;
 }
 
-/* Read or solve the input into a model; 0 or 1 (printed). */
-static int load_model(cli_solve *s, const char *input, rad_render_model *model,
-                      rad_camera *cam)
+/* The solve's model: its mesh with element and vertex radiosity. */
+static int model_from_run(const cli_run *run, rad_render_model *model)
 {
     rad_error err;
-    if (ends_with_ply(input)) {
-        if (rad_ply_read(model, cam, input, &err) != RAD_OK) {
-            cli_error_rec(&err);
-            return 1;
-        }
-        return 0;
-    }
-    cli_result res;
-    memset(&res, 0, sizeof res);
-    if (cli_solve_run(s, input, &res) != 0)
-        return 1;
-    *cam = res.scene.camera;
-    rad_status st = rad_render_model_from_mesh(model, &res.mesh, res.B, res.Bv, &err);
-    cli_result_free(&res);
-    if (st != RAD_OK) {
+    if (rad_render_model_from_mesh(model, &run->res.mesh, run->res.B, run->res.Bv, &err) !=
+        RAD_OK) {
         cli_error_rec(&err);
         return 1;
     }
     return 0;
 }
 
-static int write_profile(const char *path, const double *row, int width)
+/* ---- the outputs ---------------------------------------------------------- */
+
+typedef struct picture {
+    const render_args *a;
+    const cli_solve *s;
+    rad_image img;
+} picture;
+
+static int w_profile(FILE *out, const void *c)
 {
-    rad_afile out;
-    rad_error err;
-    if (rad_afile_open(&out, path, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    fprintf(out.fp, "x\tr\tg\tb\n");
-    for (int x = 0; x < width; x++)
-        fprintf(out.fp, "%d\t%.17g\t%.17g\t%.17g\n", x, row[3 * x], row[3 * x + 1],
+    const picture *p = c;
+    const double *row = rad_image_row(&p->img, p->a->scanline);
+    fprintf(out, "x\tr\tg\tb\n");
+    for (int x = 0; x < p->img.width; x++)
+        fprintf(out, "%d\t%.17g\t%.17g\t%.17g\n", x, row[3 * x], row[3 * x + 1],
                 row[3 * x + 2]);
-    if (ferror(out.fp)) {
-        rad_afile_abort(&out);
-        cli_error("%s: write error", path);
-        return 1;
-    }
-    if (rad_afile_commit(&out, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    return 0;
+    return ferror(out) ? -1 : 0;
 }
 
 static void plot_title(const render_args *a, const cli_solve *s, char *buf, size_t n)
@@ -296,29 +276,95 @@ static void plot_title(const render_args *a, const cli_solve *s, char *buf, size
                  s->solve.bounces == 1 ? "" : "s");
 }
 
-/* Profile, plot, picture, in that order; 0 or 1 (printed). */
-static int write_outputs(const render_args *a, const cli_solve *s, const rad_image *img)
+/* A library call that failed is reported here; the writer then says only
+ * that it failed (cli_output.c adds the path). */
+static int report(rad_status st, const rad_error *err)
 {
-    rad_error err;
-    if (a->scanline >= 0) {
-        const double *row = rad_image_row(img, a->scanline);
-        if (a->profile && write_profile(a->profile, row, img->width))
-            return 1;
-        if (a->plot) {
-            char title[256];
-            plot_title(a, s, title, sizeof title);
-            if (rad_plot_scanline(row, img->width, title, RAD_PLOT_WIDTH, RAD_PLOT_HEIGHT,
-                                  a->plot, &err) != RAD_OK) {
-                cli_error_rec(&err);
-                return 1;
-            }
-        }
-    }
-    if (rad_image_write_png(img, a->output, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
+    if (st != RAD_OK) {
+        cli_error_rec(err);
+        return -1;
     }
     return 0;
+}
+
+static int w_plot(FILE *out, const void *c)
+{
+    const picture *p = c;
+    char title[256];
+    rad_error err;
+    plot_title(p->a, p->s, title, sizeof title);
+    return report(rad_plot_scanline(rad_image_row(&p->img, p->a->scanline), p->img.width,
+                                    title, RAD_PLOT_WIDTH, RAD_PLOT_HEIGHT, out, &err),
+                  &err);
+}
+
+static int w_png(FILE *out, const void *c)
+{
+    const picture *p = c;
+    rad_error err;
+    return report(rad_image_write_png(&p->img, out, &err), &err);
+}
+
+/* The picture, the profile and the plot, as outputs; returns how many. */
+static int picture_outputs(const picture *p, cli_output *o)
+{
+    int n = 0;
+    o[n++] = (cli_output){p->a->output, w_png, p};
+    if (p->a->scanline >= 0) {
+        o[n++] = (cli_output){p->a->profile, w_profile, p};
+        o[n++] = (cli_output){p->a->plot, w_plot, p};
+    }
+    return n;
+}
+
+/* Camera first, then every output path, then the work: nothing that can
+ * be found wrong is found after the solve. */
+static int render_input(const render_args *a, cli_solve *s, picture *pic)
+{
+    rad_render_model model;
+    rad_camera base = {0};
+    rad_error err;
+    cli_run run;
+    cli_output o[CLI_MAX_OUTPUTS], own[3];
+    const int is_ply = ends_with_ply(a->input);
+    int status = 1, n = 0;
+    const int nown = picture_outputs(pic, own);
+    memset(&model, 0, sizeof model);
+    memset(&run, 0, sizeof run);
+    if (is_ply) {
+        if (rad_ply_read(&model, &base, a->input, &err) != RAD_OK) {
+            cli_error_rec(&err);
+            return 1;
+        }
+    } else {
+        if (cli_run_load(&run, s, a->input))
+            return 1;
+        base = run.scene.camera;
+        n = cli_run_outputs(&run, 0, o);
+    }
+    for (int k = 0; k < nown; k++)
+        o[n++] = own[k];
+    rad_render_options ropt = a->ropt;
+    if (make_camera(a, &base, &ropt.camera) || cli_outputs_check(o, n))
+        goto done;
+    if (!is_ply) {
+        if (cli_run_solve(&run)) {
+            cli_run_write(&run, NULL, 0); /* the report says why */
+            goto done;
+        }
+        if (model_from_run(&run, &model))
+            goto done;
+    }
+    if (rad_render(&model, &ropt, &pic->img, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        goto done;
+    }
+    status = is_ply ? cli_outputs_write(own, nown) : cli_run_write(&run, own, nown);
+done:
+    rad_render_model_free(&model);
+    if (!is_ply)
+        cli_run_free(&run);
+    return status;
 }
 
 int cmd_render(int argc, char **argv)
@@ -368,31 +414,18 @@ int cmd_render(int argc, char **argv)
         return cli_usage_hint("render");
     }
     a.input = argv[optind];
-    if (check_args(&a))
+    if (check_args(&a) || cli_solve_check(&s))
         return cli_usage_hint("render");
     if (ends_with_ply(a.input) && a.solve_opt) {
         cli_error("--%s applies to a scene, not to a solution PLY",
                   option_name(longopts, a.solve_opt));
         return cli_usage_hint("render");
     }
-    rad_render_model model;
-    rad_camera base;
-    rad_image img;
-    rad_error err;
-    int status = 1;
-    memset(&model, 0, sizeof model);
-    memset(&img, 0, sizeof img);
-    if (load_model(&s, a.input, &model, &base))
-        return 1;
-    if (make_camera(&a, &base, &a.ropt.camera))
-        goto done;
-    if (rad_render(&model, &a.ropt, &img, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        goto done;
-    }
-    status = write_outputs(&a, &s, &img);
-done:
-    rad_image_free(&img);
-    rad_render_model_free(&model);
+    picture pic;
+    memset(&pic, 0, sizeof pic);
+    pic.a = &a;
+    pic.s = &s;
+    int status = render_input(&a, &s, &pic);
+    rad_image_free(&pic.img);
     return status;
 }

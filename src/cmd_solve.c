@@ -1,9 +1,13 @@
-/* cmd_solve.c -- `radiosity solve` and the pipeline render and sweep share.
+/* cmd_solve.c -- `radiosity solve`, and the solve options every command
+ * that solves a scene shares (render, and later animate).
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * scene -> mesh -> form factors -> solve per band -> smooth -> outputs.
- * Only parsing, dispatch, timing and messages live here.
+ * The run itself is one library call (pipeline.h); here are only the
+ * options, the checks that can be made before any work (options that
+ * contradict each other, outputs that could not be written), the summary
+ * on standard error and the writers of the output files, which are all
+ * written together at the end (cli_output.c).
  */
 #include <config.h>
 
@@ -13,7 +17,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "atomicfile.h"
 #include "cli.h"
 #include "export.h"
 
@@ -23,6 +26,9 @@ static double seconds(void)
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
+
+static const char *const solver_names[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
+static const char *const accuracy_names[] = {"classic", "default", "reference"};
 
 void cli_solve_init(cli_solve *s)
 {
@@ -35,6 +41,7 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
 {
     switch (opt) {
     case OPT_SOLVER:
+        s->given_solver = 1;
         if (strcmp(arg, "gauss") == 0)
             s->solve.solver = RAD_SOLVER_GAUSS;
         else if (strcmp(arg, "jacobi") == 0)
@@ -49,6 +56,7 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         }
         return 0;
     case OPT_TOLERANCE:
+        s->given_tolerance = 1;
         if (cli_parse_double(arg, &s->solve.tolerance) || !(s->solve.tolerance > 0) ||
             s->solve.tolerance >= 1) {
             cli_error("--tolerance takes a number between 0 and 1, not '%s'", arg);
@@ -56,12 +64,14 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         }
         return 0;
     case OPT_MAX_ITERATIONS:
+        s->given_max_iterations = 1;
         if (cli_parse_int(arg, 1, 1000000000, &s->solve.max_iterations)) {
             cli_error("--max-iterations takes a positive whole number, not '%s'", arg);
             return 2;
         }
         return 0;
     case OPT_BOUNCES:
+        s->given_bounces = 1;
         if (cli_parse_int(arg, 0, 1000000000, &s->solve.bounces)) {
             cli_error("--bounces takes a whole number >= 0, not '%s'", arg);
             return 2;
@@ -80,7 +90,7 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         s->form_factors = arg;
         return 0;
     case OPT_TRACE:
-        s->solve.trace = arg;
+        s->trace = arg;
         return 0;
     case OPT_PATCHES:
         s->solve.patches = 1;
@@ -90,56 +100,163 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
     }
 }
 
-void cli_result_free(cli_result *r)
+int cli_solve_check(const cli_solve *s)
 {
-    free(r->B);
-    free(r->Bv);
-    rad_mesh_free(&r->mesh);
-    rad_scene_free(&r->scene);
-    memset(r, 0, sizeof *r);
+    const rad_solver v = s->solve.solver;
+    const char *name = solver_names[v];
+    const char *bad = NULL;
+    if (s->given_bounces && s->given_solver)
+        bad = "--bounces K is its own solver (Jacobi from B = E, exactly K reflections): "
+              "give it without --solver";
+    else if (s->given_bounces && (s->given_tolerance || s->given_max_iterations))
+        bad = "--bounces K runs exactly K reflections: --tolerance and --max-iterations do "
+              "not apply";
+    else if (s->trace && v != RAD_SOLVER_PROGRESSIVE)
+        bad = "--trace traces the shooting steps of --solver progressive";
+    else if (s->solve.patches && v != RAD_SOLVER_PROGRESSIVE)
+        bad = "--patches applies to --solver progressive";
+    else if (s->solve.error_bounds && (v != RAD_SOLVER_GAUSS || s->given_bounces))
+        bad = "--error-bounds applies to --solver gauss (LU) only";
+    else if ((s->given_tolerance || s->given_max_iterations) && v == RAD_SOLVER_GAUSS &&
+             !s->given_bounces)
+        bad = "--tolerance and --max-iterations apply to the iterative solvers, not to gauss";
+    if (bad) {
+        cli_error("%s%s%s", bad, s->given_solver ? "; the solver is " : "",
+                  s->given_solver ? name : "");
+        return 2;
+    }
+    return 0;
 }
 
-typedef struct out_ctx {
-    const cli_result *r;
-    const double *F;
-    const rad_run_info *info;
-} out_ctx;
+int cli_run_load(cli_run *run, cli_solve *s, const char *path)
+{
+    memset(run, 0, sizeof *run);
+    run->s = s;
+    run->status = RAD_OK;
+    double t0 = seconds();
+    if (cli_load_scene(path, &s->common, &run->scene))
+        return 1;
+    run->t_parse = seconds() - t0;
+    return 0;
+}
+
+void cli_run_free(cli_run *run)
+{
+    rad_result_free(&run->res);
+    rad_scene_free(&run->scene);
+    free(run->shots);
+    memset(run, 0, sizeof *run);
+}
+
+/* ---- the outputs ---------------------------------------------------------- */
 
 static int w_elements(FILE *out, const void *c)
 {
-    const out_ctx *o = c;
-    return rad_export_elements(out, &o->r->mesh, o->r->B);
+    const cli_run *r = c;
+    return rad_export_elements(out, &r->res.mesh, r->res.B);
 }
 
 static int w_matrix(FILE *out, const void *c)
 {
-    const out_ctx *o = c;
+    const cli_run *r = c;
     char comment[512];
     snprintf(comment, sizeof comment, "form factors of %s; row i = from element i",
-             o->r->scene.filename);
-    return rad_export_matrix_market(out, o->F, o->r->mesh.nelements, comment);
+             r->scene.filename);
+    return rad_export_matrix_market(out, r->res.F, r->res.mesh.nelements, comment);
+}
+
+static void run_info(const cli_run *r, rad_run_info *in)
+{
+    const rad_result *res = &r->res;
+    memset(in, 0, sizeof *in);
+    in->scene = r->scene.filename;
+    in->accuracy = accuracy_names[r->s->common.ff.accuracy];
+    in->quadrature = r->s->common.ff.quadrature;
+    in->nelements = res->mesh.nelements;
+    in->memory_bytes = res->memory_bytes;
+    in->memory_available = res->memory_available;
+    in->t_parse = r->t_parse;
+    in->t_mesh = res->t_mesh;
+    in->t_formfactor = res->t_formfactor;
+    in->t_solve = res->t_solve;
+    in->t_smooth = res->t_smooth;
+    in->t_output = r->t_output;
+    in->ff_pairs_per_second = res->t_formfactor > 0 ? res->ff.pairs / res->t_formfactor : 0;
+    in->ff = res->ff_done ? &res->ff : NULL;
+    in->solve = res->solve_done ? &res->solve : NULL;
+    in->status = r->status == RAD_OK             ? "ok"
+                 : r->status == RAD_ERR_SINGULAR ? "singular"
+                 : r->status == RAD_ERR_NOCONV   ? "not converged"
+                                                 : "error";
 }
 
 static int w_report(FILE *out, const void *c)
 {
-    const out_ctx *o = c;
-    return rad_export_report(out, o->info);
+    rad_run_info in;
+    run_info(c, &in);
+    return rad_export_report(out, &in);
 }
 
-static void summary(const rad_run_info *in)
+static int w_trace(FILE *out, const void *c)
 {
-    const rad_solve_report *s = in->solve;
-    static const char *const solvers[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
+    const cli_run *r = c;
+    fputs("step\tshooter\tshot\tunshot\trms\trms_ambient\n", out);
+    for (int k = 0; k < r->nshots; k++) {
+        const rad_shot *t = &r->shots[k];
+        fprintf(out, "%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", t->step, t->shooter, t->shot,
+                t->unshot, t->rms, t->rms_ambient);
+    }
+    return ferror(out) ? -1 : 0;
+}
+
+int cli_run_outputs(const cli_run *run, int done, cli_output *o)
+{
+    const cli_solve *s = run->s;
+    const int ok = !done || run->status == RAD_OK;
+    int n = 0;
+    if (ok && s->elements)
+        o[n++] = (cli_output){s->elements, w_elements, run};
+    if (ok && s->form_factors)
+        o[n++] = (cli_output){s->form_factors, w_matrix, run};
+    if (s->trace && (ok || run->status == RAD_ERR_NOCONV)) /* it says why */
+        o[n++] = (cli_output){s->trace, w_trace, run};
+    if (s->report && (!done || run->res.ff_done))
+        o[n++] = (cli_output){s->report, w_report, run};
+    return n;
+}
+
+/* ---- the run -------------------------------------------------------------- */
+
+static int keep_shot(void *user, const rad_shot *row)
+{
+    cli_run *r = user;
+    if (r->nshots == r->cap) {
+        int cap = r->cap ? 2 * r->cap : 1024;
+        rad_shot *p = realloc(r->shots, sizeof *p * (size_t)cap);
+        if (!p)
+            return 1; /* stops the solve: "interrupted" */
+        r->shots = p;
+        r->cap = cap;
+    }
+    r->shots[r->nshots++] = *row;
+    return 0;
+}
+
+static void summary(const cli_run *r)
+{
+    rad_run_info in;
+    run_info(r, &in);
+    const rad_solve_report *s = in.solve;
     fprintf(stderr, "radiosity: %d elements, %.1f MiB of matrices; form factors %.3g s "
                     "(%.3g pairs/s, %s), solve %.3g s\n",
-            in->nelements, in->memory_bytes / 1048576.0, in->t_formfactor,
-            in->ff_pairs_per_second, in->accuracy, in->t_solve);
-    if (in->ff && in->ff->vis_needed)
+            in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
+            in.ff_pairs_per_second, in.accuracy, in.t_solve);
+    if (in.ff && in.ff->vis_needed)
         fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
                         "%.0f partly; %.3g s\n",
-                in->ff->vis_pairs_blockable, in->ff->vis_pairs_tested, in->ff->vis_pairs_blocked,
-                in->ff->vis_pairs_partial, in->ff->vis_seconds);
-    else if (in->ff)
+                in.ff->vis_pairs_blockable, in.ff->vis_pairs_tested, in.ff->vis_pairs_blocked,
+                in.ff->vis_pairs_partial, in.ff->vis_seconds);
+    else if (in.ff)
         fprintf(stderr, "radiosity: visibility: no pair can be blocked, none computed\n");
     if (!s)
         return;
@@ -154,8 +271,8 @@ static void summary(const rad_run_info *in)
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
     else
-        fprintf(stderr, "radiosity: %s, %d sweeps, convergence factor %.6g", solvers[s->solver],
-                s->sweeps, s->spectral_radius);
+        fprintf(stderr, "radiosity: %s, %d sweeps, convergence factor %.6g",
+                solver_names[s->solver], s->sweeps, s->spectral_radius);
     fprintf(stderr, "; residual %.3g; F row sums [%.15g, %.15g]\n", s->residual,
             s->row_sum_min, s->row_sum_max);
     fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted: "
@@ -163,103 +280,48 @@ static void summary(const rad_run_info *in)
             s->balance[0], s->balance[1], s->balance[2]);
 }
 
-/* Refuse before allocating what the machine cannot hold. */
-static int check_memory(double need, double have, int n)
+int cli_run_solve(cli_run *run)
 {
-    if (have > 0 && need > have) {
-        cli_error("%d elements need %.0f MiB for the matrices (2 x 8 N^2 bytes), but only "
-                  "%.0f MiB are available; use a coarser --mesh",
-                  n, need / 1048576.0, have / 1048576.0);
+    cli_solve *s = run->s;
+    rad_pipeline_options po;
+    rad_error err;
+    rad_pipeline_options_init(&po);
+    cli_progress_attach(&s->common);
+    po.ff = s->common.ff;
+    po.solve = s->solve;
+    po.keep_form_factors = s->form_factors != NULL;
+    if (s->trace) {
+        po.solve.on_shot = keep_shot;
+        po.solve.shot_user = run;
+    }
+    run->status = rad_pipeline_run(&run->scene, &po, &run->res, &err);
+    const rad_ff_stats *ffs = &run->res.ff;
+    if (run->res.ff_done && (ffs->negative || ffs->above_one))
+        cli_error("warning: %ld form factors below 0 and %ld above 1 (min %.3g, max %.3g): "
+                  "the %s rule is unreliable for this geometry",
+                  ffs->negative, ffs->above_one, ffs->min_value, ffs->max_value,
+                  accuracy_names[s->common.ff.accuracy]);
+    if (run->status != RAD_OK) {
+        cli_error_rec(&err);
         return 1;
     }
+    if (!s->common.quiet)
+        summary(run);
     return 0;
 }
 
-int cli_solve_run(cli_solve *s, const char *path, cli_result *r)
+/* Write what the run produced together with the command's own outputs
+ * (extra, n_extra; written only when the run succeeded); 0 or 1. */
+int cli_run_write(cli_run *run, const cli_output *extra, int n_extra)
 {
-    rad_error err;
-    rad_ff_stats ffs;
-    rad_solve_report rep;
-    rad_run_info info;
-    double *F = NULL;
-    int status = 1;
-    const char *accuracy[] = {"classic", "default", "reference"};
-    memset(r, 0, sizeof *r);
-    memset(&info, 0, sizeof info);
-    info.scene = path;
-    info.accuracy = accuracy[s->common.ff.accuracy];
-    info.quadrature = s->common.ff.quadrature;
-    info.status = "ok";
+    cli_output o[CLI_MAX_OUTPUTS];
+    int n = cli_run_outputs(run, 1, o);
+    for (int k = 0; k < n_extra && run->status == RAD_OK; k++)
+        o[n++] = extra[k];
     double t0 = seconds();
-    if (cli_load_scene(path, &s->common, &r->scene))
-        return 1;
-    double t1 = seconds();
-    if (rad_mesh_build(&r->mesh, &r->scene, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        goto fail;
-    }
-    const int n = r->mesh.nelements;
-    const size_t nn = (size_t)n * n;
-    double t2 = seconds();
-    info.nelements = n;
-    info.memory_bytes = rad_solve_bytes(n, s->solve.error_bounds);
-    info.memory_available = rad_memory_available();
-    if (check_memory(info.memory_bytes, info.memory_available, n))
-        goto fail;
-    F = malloc(sizeof *F * (nn ? nn : 1));
-    r->B = malloc(sizeof *r->B * (size_t)n * RAD_BANDS);
-    r->Bv = malloc(sizeof *r->Bv * (size_t)(r->mesh.nvertices ? r->mesh.nvertices : 1) * RAD_BANDS);
-    if (!F || !r->B || !r->Bv) {
-        cli_error("out of memory for %d elements", n);
-        goto fail;
-    }
-    cli_progress_attach(&s->common);
-    if (rad_ff_matrix(&r->mesh, &s->common.ff, F, NULL, &ffs, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        goto fail;
-    }
-    double t3 = seconds();
-    info.ff = &ffs;
-    info.t_formfactor = t3 - t2;
-    info.ff_pairs_per_second = info.t_formfactor > 0 ? ffs.pairs / info.t_formfactor : 0;
-    if (ffs.negative || ffs.above_one)
-        cli_error("warning: %ld form factors below 0 and %ld above 1 (min %.3g, max %.3g): "
-                  "the %s rule is unreliable for this geometry",
-                  ffs.negative, ffs.above_one, ffs.min_value, ffs.max_value, info.accuracy);
-    s->solve.progress = s->common.ff.progress;
-    s->solve.progress_user = s->common.ff.progress_user;
-    s->solve.ff_row_error = ffs.max_row_error; /* NaN in classic: no bound */
-    rad_status st = rad_solve(&r->mesh, F, &s->solve, r->B, &rep, &err);
-    double t4 = seconds();
-    info.solve = &rep;
-    info.t_parse = t1 - t0;
-    info.t_mesh = t2 - t1;
-    info.t_solve = t4 - t3;
-    out_ctx ctx = {r, F, &info};
-    if (st != RAD_OK) {
-        cli_error_rec(&err);
-        info.status = st == RAD_ERR_SINGULAR ? "singular" : st == RAD_ERR_NOCONV ? "not converged" : "error";
-        if (s->report) /* the report says why; no solution file is written */
-            cli_write_atomic(s->report, w_report, &ctx);
-        goto fail;
-    }
-    rad_smooth_vertices(&r->mesh, r->B, r->Bv);
-    double t5 = seconds();
-    info.t_smooth = t5 - t4;
-    if ((s->elements && cli_write_atomic(s->elements, w_elements, &ctx)) ||
-        (s->form_factors && cli_write_atomic(s->form_factors, w_matrix, &ctx)))
-        goto fail;
-    info.t_output = seconds() - t5;
-    if (s->report && cli_write_atomic(s->report, w_report, &ctx))
-        goto fail;
-    if (!s->common.quiet)
-        summary(&info);
-    status = 0;
-fail:
-    free(F);
-    if (status)
-        cli_result_free(r);
-    return status;
+    int st = cli_outputs_write(o, n);
+    run->t_output = seconds() - t0;
+    return st;
 }
 
 /* ---- radiosity solve ------------------------------------------------------ */
@@ -276,19 +338,20 @@ static void help(void)
            "                          radiosity, element radiosity); '-' is stdout\n"
            CLI_SOLVE_HELP
            "\n"
-           "Outputs are written to a temporary file and renamed: a failed run never\n"
-           "leaves a partial file.  Exit status: 0 on success, 1 on an error\n"
-           "(including a singular or non-converged system), 2 on a usage error.\n");
+           "Output paths are checked before any work.  A regular file is written to\n"
+           "a temporary beside it, and all outputs are renamed together at the end:\n"
+           "a failed or interrupted run (SIGINT, SIGTERM, SIGHUP: exit 128 + signal)\n"
+           "leaves the old files whole.  A device or FIFO is written in place; a\n"
+           "symbolic link is followed and its target replaced.  An option that the\n"
+           "chosen solver would ignore is a usage error.  Exit status: 0 on success,\n"
+           "1 on an error (including a singular or non-converged system, or a mesh\n"
+           "that does not fit in memory, refused before meshing), 2 on a usage error.\n");
 }
-
-typedef struct ply_ctx {
-    const cli_result *r;
-} ply_ctx;
 
 static int w_ply(FILE *out, const void *c)
 {
-    const ply_ctx *p = c;
-    return rad_export_ply(out, &p->r->scene, &p->r->mesh, p->r->B, p->r->Bv);
+    const cli_run *r = c;
+    return rad_export_ply(out, &r->scene, &r->res.mesh, r->res.B, r->res.Bv);
 }
 
 int cmd_solve(int argc, char **argv)
@@ -296,7 +359,7 @@ int cmd_solve(int argc, char **argv)
     static const struct option longopts[] = {
         {"output", required_argument, NULL, 'o'}, CLI_SOLVE_LONGOPTS, {NULL, 0, NULL, 0}};
     cli_solve s;
-    cli_result r;
+    cli_run run;
     const char *output = NULL;
     int opt;
     cli_solve_init(&s);
@@ -316,10 +379,19 @@ int cmd_solve(int argc, char **argv)
         cli_error(optind >= argc ? "solve needs a SCENE" : "solve takes one SCENE");
         return cli_usage_hint("solve");
     }
-    if (cli_solve_run(&s, argv[optind], &r))
+    if (cli_solve_check(&s))
+        return cli_usage_hint("solve");
+    if (cli_run_load(&run, &s, argv[optind]))
         return 1;
-    ply_ctx p = {&r};
-    int status = output ? cli_write_atomic(output, w_ply, &p) : 0;
-    cli_result_free(&r);
+    cli_output o[CLI_MAX_OUTPUTS];
+    const cli_output ply = {output, w_ply, &run};
+    int n = cli_run_outputs(&run, 0, o);
+    o[n++] = ply;
+    int status = cli_outputs_check(o, n);
+    if (!status) {
+        status = cli_run_solve(&run);
+        status = cli_run_write(&run, &ply, 1) || status;
+    }
+    cli_run_free(&run);
     return status;
 }

@@ -23,7 +23,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "atomicfile.h"
 #include "cli.h"
 #include "lapack.h"
 #include "plotxy.h"
@@ -334,6 +333,20 @@ typedef struct row {
     double t_ff, t_solve, rms, max;
 } row;
 
+typedef struct table_out {
+    const row *r;
+    int nr;
+    const char *truth;
+} table_out;
+
+static int write_table(FILE *out, const row *r, int nr, const char *truth);
+
+static int write_table_to(FILE *out, const void *ctx)
+{
+    const table_out *t = ctx;
+    return write_table(out, t->r, t->nr, t->truth);
+}
+
 static int write_table(FILE *out, const row *r, int nr, const char *truth)
 {
     fprintf(out, "mesh\telements\taccuracy\tsolver\tseconds_formfactor\tseconds_solve\t"
@@ -345,13 +358,29 @@ static int write_table(FILE *out, const row *r, int nr, const char *truth)
     return ferror(out) ? -1 : 0;
 }
 
+typedef struct xy_plot {
+    const rad_series *s;
+    int ns;
+    const rad_plot_spec *spec;
+} xy_plot;
+
+static int write_xy(FILE *out, const void *ctx)
+{
+    const xy_plot *p = ctx;
+    rad_error err;
+    if (rad_plot_xy(p->s, p->ns, p->spec, out, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return -1;
+    }
+    return 0;
+}
+
 static int plot(const sweep_args *a, const row *r, int nr, const char *title)
 {
     rad_series s[12];
     double x[12][MAX_LIST], y[12][MAX_LIST];
     char labels[12][48];
     int ns = 0;
-    rad_error err;
     for (int i = 0; i < a->nacc; i++)
         for (int j = 0; j < a->nsolvers && ns < 12; j++, ns++) {
             s[ns].n = 0;
@@ -366,12 +395,10 @@ static int plot(const sweep_args *a, const row *r, int nr, const char *title)
             s[ns].x = x[ns];
             s[ns].y = y[ns];
         }
-    rad_plot_spec spec = {title, "time, form factors + solve (s)", "RMS error of B", 1, 1, 0, 0};
-    if (rad_plot_xy(s, ns, &spec, a->plot, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    return 0;
+    const rad_plot_spec spec = {title, "time, form factors + solve (s)", "RMS error of B",
+                                1, 1, 0, 0};
+    const xy_plot p = {s, ns, &spec};
+    return cli_write_atomic(a->plot, write_xy, &p);
 }
 
 int cmd_sweep(int argc, char **argv)
@@ -381,7 +408,8 @@ int cmd_sweep(int argc, char **argv)
     int r = parse_args(&a, argc, argv);
     if (r >= 0)
         return r == 2 ? cli_usage_hint("sweep") : r;
-    if (cli_load_scene(argv[optind], &a.common, &scene))
+    const cli_output outs[2] = {{a.output, write_table_to, NULL}, {a.plot, write_xy, NULL}};
+    if (cli_outputs_check(outs, 2) || cli_load_scene(argv[optind], &a.common, &scene))
         return 1;
     double closed[RAD_BANDS];
     int have_closed = furnace_truth(&scene, closed) && is_closed(&scene);
@@ -427,21 +455,9 @@ int cmd_sweep(int argc, char **argv)
                 free(sol.B);
                 rad_mesh_free(&sol.mesh);
             }
-    rad_afile out;
-    rad_error err;
-    if (rad_afile_open(&out, a.output, &err) != RAD_OK) {
-        cli_error_rec(&err);
+    const table_out t = {rows, nr, tname};
+    if (cli_write_atomic(a.output, write_table_to, &t))
         goto done;
-    }
-    if (write_table(out.fp, rows, nr, tname) != 0) {
-        rad_afile_abort(&out);
-        cli_error("%s: write error", a.output);
-        goto done;
-    }
-    if (rad_afile_commit(&out, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        goto done;
-    }
     if (a.plot && plot(&a, rows, nr, scene.filename))
         goto done;
     status = 0;

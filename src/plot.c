@@ -21,7 +21,6 @@
 
 #include <cairo.h>
 
-#include "atomicfile.h"
 #include "plot.h"
 #include "radiosity.h"
 #include "status.h"
@@ -36,31 +35,25 @@ static cairo_status_t write_to_file(void *closure, const unsigned char *data,
                                                  : CAIRO_STATUS_WRITE_ERROR;
 }
 
-rad_status rad_png_write_surface(cairo_surface_t *surface, const char *path, rad_error *err)
+rad_status rad_png_write_surface(cairo_surface_t *surface, FILE *out, rad_error *err)
 {
-    rad_afile out;
-    rad_status st = rad_afile_open(&out, path, err);
-    if (st)
-        return st;
     cairo_surface_flush(surface);
-    cairo_status_t cs = cairo_surface_write_to_png_stream(surface, write_to_file, out.fp);
-    if (cs != CAIRO_STATUS_SUCCESS) {
-        rad_afile_abort(&out);
+    cairo_status_t cs = cairo_surface_write_to_png_stream(surface, write_to_file, out);
+    if (cs != CAIRO_STATUS_SUCCESS)
         return rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_IO,
-                        "%s: %s", path, cairo_status_to_string(cs));
-    }
-    return rad_afile_commit(&out, err);
+                        "PNG: %s", cairo_status_to_string(cs));
+    return RAD_OK;
 }
 
-rad_status rad_plot_finish(cairo_t *cr, cairo_surface_t *s, const char *path, rad_error *err)
+rad_status rad_plot_finish(cairo_t *cr, cairo_surface_t *s, FILE *out, rad_error *err)
 {
     rad_status st;
     cairo_status_t cs = cairo_status(cr);
     if (cs != CAIRO_STATUS_SUCCESS)
         st = rad_fail(err, cs == CAIRO_STATUS_NO_MEMORY ? RAD_ERR_NOMEM : RAD_ERR_INVALID,
-                      "%s: %s", path, cairo_status_to_string(cs));
+                      "plot: %s", cairo_status_to_string(cs));
     else
-        st = rad_png_write_surface(s, path, err);
+        st = rad_png_write_surface(s, out, err);
     cairo_destroy(cr);
     cairo_surface_destroy(s);
     return st;
@@ -246,7 +239,7 @@ static void draw_legend(cairo_t *cr, const frame *fr)
 }
 
 rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int width,
-                             int height, const char *path, rad_error *err)
+                             int height, FILE *out, rad_error *err)
 {
     if (n < 1)
         return rad_fail(err, RAD_ERR_INVALID, "a scanline plot needs at least one pixel");
@@ -264,5 +257,5 @@ rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int wi
     draw_curves(cr, &fr, rgb, n);
     draw_legend(cr, &fr);
     draw_labels(cr, &fr, width, title);
-    return rad_plot_finish(cr, s, path, err);
+    return rad_plot_finish(cr, s, out, err);
 }

@@ -2,11 +2,14 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * The one place that writes PNG files: render.c hands its picture here,
- * so the atomic-write logic exists once.
+ * The one place that encodes PNG: render.c hands its picture here.  Every
+ * writer prints to a stream the caller opened (the program makes it
+ * atomic); nothing here opens a file.
  */
 #ifndef RAD_PLOT_H
 #define RAD_PLOT_H
+
+#include <stdio.h>
 
 #include "radiosity.h"
 
@@ -23,19 +26,16 @@ struct _cairo;
  * (the layout of rad_image_row), as three curves R, G, B in red, green and
  * blue over x = 0 .. n-1 ("pixel column") against "radiosity", with ticks,
  * a legend and the title (may be NULL).  Written as a PNG of width x height
- * pixels to path, atomically.  Deterministic: same input, same bytes. */
+ * pixels to out.  Deterministic: same input, same bytes. */
 rad_status rad_plot_scanline(const double *rgb, int n, const char *title, int width,
-                             int height, const char *path, rad_error *err);
+                             int height, FILE *out, rad_error *err);
 
-/* Write a cairo image surface as a PNG to path (or standard output for
- * "-"): through a temporary file renamed over the target, so a failure
- * never leaves a truncated file. */
-rad_status rad_png_write_surface(struct _cairo_surface *surface, const char *path,
-                                 rad_error *err);
+/* Write a cairo image surface as a PNG to out. */
+rad_status rad_png_write_surface(struct _cairo_surface *surface, FILE *out, rad_error *err);
 
 /* Finish a drawing: check cairo's status, write the surface as a PNG
  * (rad_png_write_surface), and destroy the context and the surface. */
-rad_status rad_plot_finish(struct _cairo *cr, struct _cairo_surface *surface, const char *path,
+rad_status rad_plot_finish(struct _cairo *cr, struct _cairo_surface *surface, FILE *out,
                            rad_error *err);
 
 #endif /* RAD_PLOT_H */

@@ -101,7 +101,7 @@ static void ticks(cairo_t *cr, const axis *a, int vertical, double x0, double y0
 }
 
 rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
-                       const char *path, rad_error *err)
+                       FILE *out, rad_error *err)
 {
     const int w = spec->width > 0 ? spec->width : 900, h = spec->height > 0 ? spec->height : 520;
     axis ax = {spec->logx, 0, 0}, ay = {spec->logy, 0, 0};
@@ -112,7 +112,7 @@ rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
     if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
         cairo_destroy(cr);
         cairo_surface_destroy(surf);
-        return rad_fail(err, RAD_ERR_NOMEM, "%s: cannot draw the plot", path);
+        return rad_fail(err, RAD_ERR_NOMEM, "cannot draw the plot");
     }
     const double pw = w - ML - MR, ph = h - MT - MB;
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -179,5 +179,5 @@ rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
         cairo_move_to(cr, ML + pw + 34, ly - 2);
         cairo_show_text(cr, s[k].label ? s[k].label : "");
     }
-    return rad_plot_finish(cr, surf, path, err);
+    return rad_plot_finish(cr, surf, out, err);
 }

@@ -5,6 +5,8 @@
 #ifndef RAD_PLOTXY_H
 #define RAD_PLOTXY_H
 
+#include <stdio.h>
+
 #include "radiosity.h"
 
 typedef struct rad_series {
@@ -19,8 +21,8 @@ typedef struct rad_plot_spec {
     int width, height;          /* 0: 900 x 520 */
 } rad_plot_spec;
 
-/* Draw the series and write a PNG atomically. */
-rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
-                       const char *path, rad_error *err);
+/* Draw the series and write the plot to out as a PNG. */
+rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec, FILE *out,
+                       rad_error *err);
 
 #endif /* RAD_PLOTXY_H */

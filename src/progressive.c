@@ -54,11 +54,13 @@
  * area-weighted RMS difference from the converged solution, averaged over
  * the three bands; with the ambient term B' replaces B.
  *
- * The trace (opt->trace) has one row per step: step, shooter (element or
- * patch), shot (power shot, summed over the bands), unshot (unshot power
- * left), rms and rms_ambient against opt->reference, or against a gauss
- * solve of the mesh's own reflectances and emissions when that is NULL.
- * It is also written when the iteration gives up: it says what happened.
+ * The trace: when opt->on_shot is set it receives one rad_shot per step:
+ * step, shooter (element or patch), shot (power shot, summed over the
+ * bands), unshot (unshot power left), rms and rms_ambient against
+ * opt->reference, or against a gauss solve of the mesh's own reflectances
+ * and emissions when that is NULL.  The solver writes nothing itself: the
+ * caller keeps or prints the rows (the command writes them as a TSV file,
+ * also when the iteration gives up: they say what happened).
  *
  * The race of figure 7 (progressive.h) runs the gathering method of
  * Gauss-Seidel, one element row per step, B_i <- E_i + rho_i sum_j F_ij B_j
@@ -75,7 +77,6 @@
 
 #include <cairo.h>
 
-#include "atomicfile.h"
 #include "plot.h"
 #include "progressive.h"
 #include "radiosity.h"
@@ -325,9 +326,9 @@ static double rms_error(int n, const double *area, double total_area, const doub
 
 /* ---- the trace ----------------------------------------------------------- */
 
+/* The per-step rows handed to opt->on_shot, and their reference. */
 typedef struct trace {
     int on;
-    rad_afile file;
     const double *Bref;
     double *own;                /* the reference when we solved for it */
 } trace;
@@ -336,13 +337,13 @@ static rad_status trace_open(trace *tr, const rad_mesh *m, const double *F,
                              const rad_solve_options *opt, rad_error *err)
 {
     memset(tr, 0, sizeof *tr);
-    if (!opt->trace)
+    if (!opt->on_shot)
         return RAD_OK;
     tr->Bref = opt->reference;
     if (!tr->Bref) { /* the converged solution, by gauss */
         rad_solve_options g = *opt;
         g.solver = RAD_SOLVER_GAUSS;
-        g.trace = NULL;
+        g.on_shot = NULL;
         g.reference = NULL;
         g.bounces = -1;
         tr->own = malloc(sizeof *tr->own * (size_t)(m->nelements ? m->nelements : 1) * NB);
@@ -356,37 +357,14 @@ static rad_status trace_open(trace *tr, const rad_mesh *m, const double *F,
         }
         tr->Bref = tr->own;
     }
-    rad_status st = rad_afile_open(&tr->file, opt->trace, err);
-    if (st) {
-        free(tr->own);
-        tr->own = NULL;
-        return st;
-    }
     tr->on = 1;
-    fputs("step\tshooter\tshot\tunshot\trms\trms_ambient\n", tr->file.fp);
     return RAD_OK;
 }
 
-static void trace_row(const trace *tr, int step, int who, double shot, double unshot,
-                      double rms, double rms_ambient)
+static void trace_close(trace *tr)
 {
-    fprintf(tr->file.fp, "%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", step, who, shot, unshot, rms,
-            rms_ambient);
-}
-
-/* Commit (keep) or abort; returns the commit's status. */
-static rad_status trace_close(trace *tr, int keep, rad_error *err)
-{
-    rad_status st = RAD_OK;
-    if (tr->on) {
-        if (keep)
-            st = rad_afile_commit(&tr->file, err);
-        else
-            rad_afile_abort(&tr->file);
-    }
     free(tr->own);
     memset(tr, 0, sizeof *tr);
-    return st;
 }
 
 /* ---- the solver ---------------------------------------------------------- */
@@ -420,20 +398,22 @@ typedef struct run {
     double *area;
 } run;
 
-/* One shooting step and its trace row. */
-static void run_step(run *r, int step)
+/* One shooting step and its trace row; non-zero when the caller's
+ * on_shot asks to stop. */
+static int run_step(run *r, int step)
 {
     double shot[NB], a[NB];
     int s = shooter_pick(&r->sh);
     shooter_shoot(&r->sh, s, shot);
     unshot_power(&r->sh, r->U);
     if (!r->tr.on)
-        return;
+        return 0;
     const int n = r->sh.n;
     ambient_value(&r->amb, r->U, a);
-    trace_row(&r->tr, step, s, shot[0] + shot[1] + shot[2], r->U[0] + r->U[1] + r->U[2],
-              rms_error(n, r->area, r->amb.total_area, r->rho, NULL, r->sh.B, r->tr.Bref),
-              rms_error(n, r->area, r->amb.total_area, r->rho, a, r->sh.B, r->tr.Bref));
+    rad_shot row = {step, s, shot[0] + shot[1] + shot[2], r->U[0] + r->U[1] + r->U[2],
+                    rms_error(n, r->area, r->amb.total_area, r->rho, NULL, r->sh.B, r->tr.Bref),
+                    rms_error(n, r->area, r->amb.total_area, r->rho, a, r->sh.B, r->tr.Bref)};
+    return r->opt->on_shot(r->opt->shot_user, &row);
 }
 
 /* Report progress; non-zero when the caller asks to stop. */
@@ -497,24 +477,17 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
             st = no_convergence(&r, at_half, err);
             break;
         }
-        run_step(&r, ++steps);
+        int stop = run_step(&r, ++steps);
         if (steps == (opt->max_iterations + 1) / 2)
             at_half = r.U[0] + r.U[1] + r.U[2];
-        if (run_progress(&r, steps))
+        if (stop || run_progress(&r, steps))
             st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
     }
     if (report)
         report->sweeps = steps; /* for progressive, 'sweeps' counts shooting steps */
     if (opt->progress && st == RAD_OK)
         opt->progress(opt->progress_user, "shoot", 1, 1);
-    /* the trace is kept when the iteration gave up too: it shows why */
-    rad_error terr;
-    rad_status tst = trace_close(&r.tr, st == RAD_OK || st == RAD_ERR_NOCONV, &terr);
-    if (tst && st == RAD_OK) {
-        st = tst;
-        if (err)
-            *err = terr;
-    }
+    trace_close(&r.tr);
     shooter_free(&r.sh);
     free(r.area);
     return st;
@@ -845,7 +818,7 @@ static void race_legend(cairo_t *cr, const lframe *fr)
 }
 
 rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
-                         int height, const char *path, rad_error *err)
+                         int height, FILE *out, rad_error *err)
 {
     if (steps < 1)
         return rad_fail(err, RAD_ERR_INVALID, "a race plot needs at least one step");
@@ -864,5 +837,5 @@ rad_status rad_race_plot(const double *rms, int steps, const char *title, int wi
     race_curves(cr, &fr, rms, steps);
     race_legend(cr, &fr);
     race_labels(cr, &fr, width, title);
-    return rad_plot_finish(cr, s, path, err);
+    return rad_plot_finish(cr, s, out, err);
 }

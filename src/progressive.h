@@ -12,6 +12,8 @@
 #ifndef RAD_PROGRESSIVE_H
 #define RAD_PROGRESSIVE_H
 
+#include <stdio.h>
+
 #include "radiosity.h"
 
 /* The four methods of the race, in the order of the table's columns. */
@@ -54,9 +56,8 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
                         rad_error *err);
 
 /* Plot the race (rms as rad_race_run leaves it) as a PNG of width x height
- * pixels: log-scale error axis, one labelled curve per method.  Written
- * atomically; "-" is standard output. */
+ * pixels to out: log-scale error axis, one labelled curve per method. */
 rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
-                         int height, const char *path, rad_error *err);
+                         int height, FILE *out, rad_error *err);
 
 #endif /* RAD_PROGRESSIVE_H */

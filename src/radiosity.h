@@ -226,6 +226,21 @@ typedef enum rad_solver {
     RAD_SOLVER_PROGRESSIVE      /* shooting, Cohen et al. 1988 (progressive.c) */
 } rad_solver;
 
+/* One step of progressive refinement, for a trace (rad_solve_options.on_shot). */
+typedef struct rad_shot {
+    int step;                   /* 1, 2, ... */
+    int shooter;                /* element (or patch, with patches) that shot */
+    double shot;                /* power shot, summed over the bands */
+    double unshot;              /* unshot power left, summed over the bands */
+    double rms, rms_ambient;    /* area-weighted RMS error against the reference
+                                   (Cohen et al. 1988, eq. 14), without and with
+                                   the ambient term */
+} rad_shot;
+
+/* Called after each shooting step; return non-zero to stop the solve
+ * (RAD_ERR_INVALID, "interrupted"). */
+typedef int (*rad_shot_fn)(void *user, const rad_shot *row);
+
 typedef struct rad_solve_options {
     rad_solver solver;
     double tolerance;           /* iterative: relative change of B between sweeps */
@@ -240,8 +255,10 @@ typedef struct rad_solve_options {
     int patches;                /* 0: elements shoot; 1: each surface shoots as a patch */
     int sort;                   /* 1: shoot the largest unshot power first (default) */
     int ambient;                /* 1: trace/display with the ambient term */
-    const char *trace;          /* path of the per-step TSV trace, or NULL */
-    const double *reference;    /* converged B for the trace's rms columns, or NULL */
+    rad_shot_fn on_shot;        /* progressive: called with each step, or NULL */
+    void *shot_user;
+    const double *reference;    /* converged B for the rms of on_shot, or NULL
+                                   (then a gauss solve of the same mesh) */
     double ff_row_error;        /* a bound on ||dF||_inf, the error of F
                                    (rad_ff_stats.max_row_error), or NaN if
                                    unknown: gauss then bounds the error it

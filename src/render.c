@@ -715,12 +715,12 @@ void rad_image_to_rgb8(const rad_image *img, unsigned char *rgb)
                                  : rad_tone_byte(img->rgb[3 * p + b], img->exposure);
 }
 
-rad_status rad_image_write_png(const rad_image *img, const char *path, rad_error *err)
+rad_status rad_image_write_png(const rad_image *img, FILE *out, rad_error *err)
 {
     const int w = img->width, h = img->height;
     const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_RGB24, w);
     if (stride <= 0)
-        return rad_fail(err, RAD_ERR_INVALID, "%s: a PNG cannot be %d pixels wide", path, w);
+        return rad_fail(err, RAD_ERR_INVALID, "a PNG cannot be %d pixels wide", w);
     unsigned char *data = calloc((size_t)stride * (size_t)h, 1);
     unsigned char *rgb = malloc((size_t)3 * (size_t)w * (size_t)h);
     if (!data || !rgb) {
@@ -742,10 +742,10 @@ rad_status rad_image_write_png(const rad_image *img, const char *path, rad_error
         cairo_image_surface_create_for_data(data, CAIRO_FORMAT_RGB24, w, h, stride);
     rad_status st;
     if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS)
-        st = rad_fail(err, RAD_ERR_NOMEM, "%s: %s", path,
+        st = rad_fail(err, RAD_ERR_NOMEM, "PNG: %s",
                       cairo_status_to_string(cairo_surface_status(s)));
     else
-        st = rad_png_write_surface(s, path, err);
+        st = rad_png_write_surface(s, out, err);
     cairo_surface_destroy(s);
     free(data);
     return st;

@@ -17,6 +17,8 @@
 #ifndef RAD_RENDER_H
 #define RAD_RENDER_H
 
+#include <stdio.h>
+
 #include "radiosity.h"
 
 /* A polygon model with radiosity.  Arrays are owned by the model
@@ -110,8 +112,7 @@ unsigned char rad_tone_byte(double radiosity, double exposure);
  * (3 * width * height bytes), with the edges in black when img->edges. */
 void rad_image_to_rgb8(const rad_image *img, unsigned char *rgb);
 
-/* Write the tone-mapped picture as a PNG (through cairo), atomically: the
- * file appears whole or not at all.  "-" writes to standard output. */
-rad_status rad_image_write_png(const rad_image *img, const char *path, rad_error *err);
+/* Write the tone-mapped picture to out as a PNG (through cairo). */
+rad_status rad_image_write_png(const rad_image *img, FILE *out, rad_error *err);
 
 #endif /* RAD_RENDER_H */

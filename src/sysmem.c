@@ -2,16 +2,25 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * MemAvailable from /proc/meminfo (Linux 3.14+: the kernel's estimate of
- * memory available without swapping), else the physical pages available
- * from sysconf.  Returns bytes, or 0 when unknown.
+ * Four limits can stop an allocation, and the smallest one decides:
+ *   - MemAvailable from /proc/meminfo (Linux 3.14+: the kernel's estimate of
+ *     memory available without swapping), else the physical pages
+ *     available from sysconf;
+ *   - RLIMIT_AS and RLIMIT_DATA (`ulimit -v`, `ulimit -d`), taken whole:
+ *     the estimate they are held against is the run's peak, which dwarfs
+ *     what the process holds before it;
+ *   - the cgroup (v2) the process runs in: memory.max less memory.current,
+ *     read from /sys/fs/cgroup + the path in /proc/self/cgroup.
+ * Figures are bytes; 0 means unknown.
  */
 #include <config.h>
 
 #include <stdio.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include "pipeline.h"
 #include "radiosity.h"
 
 double rad_memory_available(void)
@@ -30,4 +39,64 @@ double rad_memory_available(void)
     }
     long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
     return pages > 0 && size > 0 ? (double)pages * (double)size : 0.0;
+}
+
+/* One number from a cgroup file ("max" and absent files give 0). */
+static double cgroup_value(const char *dir, const char *name)
+{
+    char path[4096 + 64];
+    snprintf(path, sizeof path, "/sys/fs/cgroup%s/%s", dir, name);
+    FILE *f = fopen(path, "r");
+    unsigned long long v = 0;
+    if (!f)
+        return 0;
+    if (fscanf(f, "%llu", &v) != 1)
+        v = 0;
+    fclose(f);
+    return (double)v;
+}
+
+/* memory.max - memory.current of this process's cgroup v2, or 0. */
+static double cgroup_room(void)
+{
+    FILE *f = fopen("/proc/self/cgroup", "r");
+    char line[4096];
+    double room = 0;
+    if (!f)
+        return 0;
+    while (fgets(line, sizeof line, f)) {
+        if (strncmp(line, "0::", 3) != 0)
+            continue; /* the v2 hierarchy is "0::PATH" */
+        line[strcspn(line, "\n")] = '\0';
+        const char *dir = strcmp(line + 3, "/") == 0 ? "" : line + 3;
+        double max = cgroup_value(dir, "memory.max");
+        if (max > 0) {
+            double cur = cgroup_value(dir, "memory.current");
+            room = max > cur ? max - cur : 1;
+        }
+        break;
+    }
+    fclose(f);
+    return room;
+}
+
+static double smaller(double a, double b)
+{
+    if (a <= 0)
+        return b;
+    if (b <= 0)
+        return a;
+    return a < b ? a : b;
+}
+
+double rad_memory_limit(void)
+{
+    double have = rad_memory_available();
+    const int which[] = {RLIMIT_AS, RLIMIT_DATA};
+    for (int k = 0; k < 2; k++) {
+        struct rlimit rl;
+        if (getrlimit(which[k], &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
+            have = smaller(have, (double)rl.rlim_cur);
+    }
+    return smaller(have, cgroup_room());
 }

@@ -44,7 +44,7 @@ if mkfifo "$work/fifo" 2> /dev/null; then
   [ "$(rows "$work/from-fifo")" -eq 2 ]; ok $? "the reader got the whole table through the FIFO"
   no_debris "$work"; ok $? "no temporary beside the FIFO"
 else
-  for k in 1 2 3 4; do echo "ok - # SKIP mkfifo failed"; done
+  for k in 1 2 3 4; do skip "mkfifo failed"; done
 fi
 
 # a character device (a private null device, made with mknod as root)
@@ -59,10 +59,10 @@ if [ "$(id -u)" -eq 0 ] && mknod -m 666 "$work/null" c 1 3 2> /dev/null; then
     [ $rc -eq 1 ] && [ -c "$work/full" ] && grep -q 'full: No space left on device' "$work/err"
     ok $? "a full device: exit 1 with the reason, and it stays a device"
   else
-    echo "ok - # SKIP mknod of a full device failed"
+    skip "mknod of a full device failed"
   fi
 else
-  for k in 1 2 3 4 5; do echo "ok - # SKIP not root, no private device"; done
+  for k in 1 2 3 4 5; do skip "not root, no private device"; done
 fi
 
 # descriptors the process holds are written directly

@@ -1,0 +1,135 @@
+/* pipeline.c -- the whole run, scene to smoothed radiosity, as one call.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The order is the data flow of DESIGN.md section 2; each stage owns its
+ * data structure and hands it on.  The memory check comes first and from
+ * the scene alone: element counts follow from the mesh specifications, so
+ * a mesh that cannot be solved is refused before it is built (a 4000x4000
+ * mesh of the cube would otherwise take 24 s and 16 GB to mesh, only to be
+ * refused).  Times are wall-clock seconds (CLOCK_MONOTONIC).
+ */
+#include <config.h>
+
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "pipeline.h"
+#include "status.h"
+
+static double seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+void rad_pipeline_options_init(rad_pipeline_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    rad_ff_options_init(&opt->ff);
+    rad_solve_options_init(&opt->solve);
+}
+
+double rad_scene_element_count(const rad_scene *scene)
+{
+    double n = 0;
+    for (int s = 0; s < scene->nsurfaces; s++) {
+        const rad_surface *f = &scene->surfaces[s];
+        n += f->kind == RAD_SURFACE_QUAD ? (double)f->mesh_n * (double)f->mesh_m : 1.0;
+    }
+    return n;
+}
+
+rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err)
+{
+    double limit = rad_memory_limit();
+    if (have)
+        *have = limit;
+    if (limit > 0 && need > limit)
+        return rad_fail(err, RAD_ERR_TOOBIG,
+                        "%s need %.0f MiB, but only %.0f MiB are available (the least of "
+                        "free memory, the process limits and the cgroup's); use a coarser "
+                        "--mesh",
+                        what, need / 1048576.0, limit / 1048576.0);
+    return RAD_OK;
+}
+
+/* The estimate of rad_solve_bytes checked before meshing. */
+static rad_status check_size(const rad_scene *scene, const rad_pipeline_options *opt,
+                             rad_result *r, rad_error *err)
+{
+    double n = rad_scene_element_count(scene);
+    if (n > INT_MAX)
+        return rad_fail(err, RAD_ERR_TOOBIG, "the scene's meshes make %.0f elements, more "
+                        "than %d; use a coarser --mesh", n, INT_MAX);
+    r->memory_bytes = rad_solve_bytes((int)n, opt->solve.error_bounds);
+    char what[96];
+    snprintf(what, sizeof what, "%.0f elements (2 x 8 N^2 bytes of matrices)", n);
+    return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
+}
+
+static rad_status allocate(rad_result *r, rad_error *err)
+{
+    const size_t n = (size_t)r->mesh.nelements;
+    const size_t nv = (size_t)r->mesh.nvertices;
+    r->F = malloc(sizeof *r->F * (n ? n * n : 1));
+    r->B = malloc(sizeof *r->B * (n ? n : 1) * RAD_BANDS);
+    r->Bv = malloc(sizeof *r->Bv * (nv ? nv : 1) * RAD_BANDS);
+    if (!r->F || !r->B || !r->Bv)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %zu elements", n);
+    return RAD_OK;
+}
+
+rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
+                            rad_result *r, rad_error *err)
+{
+    memset(r, 0, sizeof *r);
+    rad_status st = check_size(scene, opt, r, err);
+    double t0 = seconds();
+    if (st == RAD_OK)
+        st = rad_mesh_build(&r->mesh, scene, err);
+    double t1 = seconds();
+    r->t_mesh = t1 - t0;
+    if (st == RAD_OK)
+        st = allocate(r, err);
+    if (st == RAD_OK)
+        st = rad_ff_matrix(&r->mesh, &opt->ff, r->F, NULL, &r->ff, err);
+    double t2 = seconds();
+    r->t_formfactor = t2 - t1;
+    if (st != RAD_OK)
+        return st;
+    r->ff_done = 1;
+    rad_solve_options so = opt->solve;
+    if (!so.progress) {
+        so.progress = opt->ff.progress;
+        so.progress_user = opt->ff.progress_user;
+    }
+    so.ff_row_error = r->ff.max_row_error; /* NaN in classic: no bound */
+    st = rad_solve(&r->mesh, r->F, &so, r->B, &r->solve, err);
+    double t3 = seconds();
+    r->t_solve = t3 - t2;
+    r->solve_done = 1;
+    if (st == RAD_OK) {
+        rad_smooth_vertices(&r->mesh, r->B, r->Bv);
+        r->t_smooth = seconds() - t3;
+    }
+    if (!opt->keep_form_factors) {
+        free(r->F);
+        r->F = NULL;
+    }
+    return st;
+}
+
+void rad_result_free(rad_result *r)
+{
+    free(r->F);
+    free(r->B);
+    free(r->Bv);
+    rad_mesh_free(&r->mesh);
+    memset(r, 0, sizeof *r);
+}

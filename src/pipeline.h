@@ -1,0 +1,64 @@
+/* pipeline.h -- the whole run, scene to smoothed radiosity, as one call.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * scene -> mesh -> form factors -> solve per band -> smooth (DESIGN.md
+ * section 2).  Every command that solves a scene goes through
+ * rad_pipeline_run; it prints nothing and opens no file: progress and
+ * cancellation go through the callback in the options, and the result
+ * record carries what the summary and the JSON report say.
+ */
+#ifndef RAD_PIPELINE_H
+#define RAD_PIPELINE_H
+
+#include "radiosity.h"
+
+typedef struct rad_pipeline_options {
+    rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
+    rad_solve_options solve;    /* solver and its options (progress is
+                                   taken from ff when not set) */
+    int keep_form_factors;      /* 1: leave F in the result (--form-factors) */
+} rad_pipeline_options;
+
+void rad_pipeline_options_init(rad_pipeline_options *opt);
+
+/* What one run produced.  Filled as far as the run got: after a failed
+ * solve the statistics are there for the report, B is not. */
+typedef struct rad_result {
+    rad_mesh mesh;
+    double *F;                  /* n x n when keep_form_factors, else NULL */
+    double *B;                  /* nelements x RAD_BANDS, column-major */
+    double *Bv;                 /* nvertices x RAD_BANDS, column-major */
+    rad_ff_stats ff;
+    rad_solve_report solve;
+    int ff_done, solve_done;    /* which of ff, solve hold figures */
+    double memory_bytes;        /* the estimate checked before allocating */
+    double memory_available;    /* what the machine allowed (rad_memory_limit) */
+    double t_mesh, t_formfactor, t_solve, t_smooth;  /* seconds */
+} rad_result;
+
+/* Mesh, form factors, solve and smooth `scene` (which must outlive the
+ * result: the mesh refers to its materials by index only, but callers
+ * print its name).  The memory the run needs is computed from the scene's
+ * mesh specification and checked before anything is meshed or allocated
+ * (RAD_ERR_TOOBIG, with both numbers).  On failure the result holds what
+ * was done so far; free it with rad_result_free in every case. */
+rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
+                            rad_result *result, rad_error *err);
+void rad_result_free(rad_result *result);
+
+/* Elements the scene's mesh specification makes (a double: it may exceed
+ * any int), without meshing. */
+double rad_scene_element_count(const rad_scene *scene);
+
+/* Refuse (RAD_ERR_TOOBIG) when `need` bytes exceed what the machine allows
+ * now (rad_memory_limit); `what` names the need in the message.  *have
+ * (may be NULL) receives the limit, 0 if unknown. */
+rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err);
+
+/* The smallest of the memory available now (MemAvailable), the address
+ * space and data limits (RLIMIT_AS, RLIMIT_DATA) and the cgroup's
+ * memory.max less its memory.current; 0 if none is known. */
+double rad_memory_limit(void);
+
+#endif /* RAD_PIPELINE_H */

@@ -1,0 +1,58 @@
+#!/bin/bash
+# signals.sh -- SIGINT, SIGTERM and SIGHUP while outputs are being written
+# leave the old outputs whole and no temporary file, and the program ends
+# with status 128 + signal (cli_output.c).  The form-factor matrix of the
+# cube at 16x16 elements per wall (1536 elements, 2.4 million entries) takes
+# long enough to write that the signal lands while its temporary exists.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+. "${top_srcdir:-.}/tests/lib.sh"
+cube="$top_srcdir/data/goral1984-cube.scene"
+
+# A shell starts background jobs with SIGINT ignored, and the program keeps
+# an ignored signal ignored (as nohup wants); restore its default first.
+run_bg() { exec python3 -c 'import os, signal, sys
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+os.execv(sys.argv[1], sys.argv[1:])' "$@"; }
+
+# wait_tmp DIR: until a temporary output appears (at most 120 s)
+wait_tmp() {
+  for _ in $(seq 1 12000); do
+    ls -a "$1" | grep -q '\.tmp' && return 0
+    kill -0 "$pid" 2> /dev/null || return 1
+    sleep 0.01
+  done
+  return 1
+}
+
+for sig in INT TERM HUP; do
+  d="$work/$sig"; mkdir "$d"
+  echo old-elements > "$d/e.tsv"; echo old-matrix > "$d/f.mtx"; echo old-report > "$d/r.json"
+  run_bg "$RADIOSITY" solve -q --mesh 16x16 --elements "$d/e.tsv" --form-factors "$d/f.mtx" \
+    --report "$d/r.json" "$cube" 2> "$d/err" &
+  pid=$!
+  if wait_tmp "$d"; then
+    kill -s "$sig" "$pid"; wait "$pid"; rc=$?
+    want=$((128 + $(kill -l "$sig")))
+    [ $rc -eq $want ]; ok $? "SIG$sig while writing: exit $want (got $rc)"
+    [ "$(cat "$d/e.tsv")" = old-elements ] && [ "$(cat "$d/f.mtx")" = old-matrix ] &&
+      [ "$(cat "$d/r.json")" = old-report ]
+    ok $? "SIG$sig: the old outputs are whole, none half new"
+    ! ls -a "$d" | grep -q '\.tmp'; ok $? "SIG$sig: no temporary file is left"
+  else
+    wait "$pid"
+    for k in 1 2 3; do skip "the run ended before its outputs were written"; done
+  fi
+done
+
+# a signal during the solve, before any output: nothing is touched
+d="$work/early"; mkdir "$d"; echo old > "$d/e.tsv"
+run_bg "$RADIOSITY" solve -q --mesh 16x16 --elements "$d/e.tsv" "$cube" 2> /dev/null &
+pid=$!
+for _ in $(seq 1 500); do # until the program itself runs (not libtool's wrapper script)
+  case "$(readlink "/proc/$pid/exe" 2> /dev/null)" in *radiosity*) break ;; esac
+  sleep 0.01
+done
+sleep 0.2; kill -s INT "$pid"; wait "$pid"; rc=$?
+[ $rc -eq 130 ] && [ "$(cat "$d/e.tsv")" = old ] && ! ls -a "$d" | grep -q '\.tmp'
+ok $? "SIGINT during the solve: exit 130, the old output untouched"
+done_testing
