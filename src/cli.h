@@ -11,7 +11,7 @@
 #include <getopt.h>
 #include <stdio.h>
 
-#include "pipeline.h"
+#include "radiosity/pipeline.h"
 #include "radiosity.h"
 
 #define EXIT_USAGE 2

@@ -20,7 +20,7 @@
 
 #include "cli.h"
 #include "progressive.h"
-#include "render.h"
+#include "radiosity/render.h"
 
 #define DEFAULT_STEPS_CAP 10000 /* default --steps: 2 x elements, at most this */
 #define MAX_STEPS 10000000

@@ -19,8 +19,8 @@
 
 #include "cli.h"
 #include "plot.h"
-#include "plyread.h"
-#include "render.h"
+#include "radiosity/plyread.h"
+#include "radiosity/render.h"
 
 enum {
     OPT_WIDTH = 1200,

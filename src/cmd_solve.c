@@ -18,7 +18,7 @@
 #include <time.h>
 
 #include "cli.h"
-#include "export.h"
+#include "radiosity/export.h"
 
 static double seconds(void)
 {

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "export.h"
+#include "radiosity/export.h"
 #include "radiosity.h"
 
 unsigned char rad_srgb8(double linear, double exposure)

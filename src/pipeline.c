@@ -18,7 +18,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "pipeline.h"
+#include "radiosity/pipeline.h"
 #include "status.h"
 
 static double seconds(void)

@@ -25,9 +25,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "plyread.h"
+#include "radiosity/plyread.h"
 #include "radiosity.h"
-#include "render.h"
+#include "radiosity/render.h"
 #include "scene.h"
 #include "readfile.h"
 #include "status.h"

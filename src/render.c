@@ -58,7 +58,7 @@
 
 #include "plot.h"
 #include "radiosity.h"
-#include "render.h"
+#include "radiosity/render.h"
 #include "status.h"
 #include "vec.h"
 

@@ -20,7 +20,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "pipeline.h"
+#include "radiosity/pipeline.h"
 #include "radiosity.h"
 
 double rad_memory_available(void)

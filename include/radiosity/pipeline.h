@@ -20,7 +20,7 @@ typedef struct rad_pipeline_options {
     int keep_form_factors;      /* 1: leave F in the result (--form-factors) */
 } rad_pipeline_options;
 
-void rad_pipeline_options_init(rad_pipeline_options *opt);
+RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);
 
 /* What one run produced.  Filled as far as the run got: after a failed
  * solve the statistics are there for the report, B is not. */
@@ -43,22 +43,22 @@ typedef struct rad_result {
  * mesh specification and checked before anything is meshed or allocated
  * (RAD_ERR_TOOBIG, with both numbers).  On failure the result holds what
  * was done so far; free it with rad_result_free in every case. */
-rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
+RAD_API rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
                             rad_result *result, rad_error *err);
-void rad_result_free(rad_result *result);
+RAD_API void rad_result_free(rad_result *result);
 
 /* Elements the scene's mesh specification makes (a double: it may exceed
  * any int), without meshing. */
-double rad_scene_element_count(const rad_scene *scene);
+RAD_API double rad_scene_element_count(const rad_scene *scene);
 
 /* Refuse (RAD_ERR_TOOBIG) when `need` bytes exceed what the machine allows
  * now (rad_memory_limit); `what` names the need in the message.  *have
  * (may be NULL) receives the limit, 0 if unknown. */
-rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err);
+RAD_API rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err);
 
 /* The smallest of the memory available now (MemAvailable), the address
  * space and data limits (RLIMIT_AS, RLIMIT_DATA) and the cgroup's
  * memory.max less its memory.current; 0 if none is known. */
-double rad_memory_limit(void);
+RAD_API double rad_memory_limit(void);
 
 #endif /* RAD_PIPELINE_H */

@@ -75,44 +75,44 @@ typedef struct rad_image {
 } rad_image;
 
 /* 512 x 512, smooth, no edges, automatic exposure, no camera. */
-void rad_render_options_init(rad_render_options *opt);
+RAD_API void rad_render_options_init(rad_render_options *opt);
 
 /* The model of a solved mesh: its faces are the elements, its vertices the
  * mesh's shared vertices.  B is nelements x RAD_BANDS and Bv nvertices x
  * RAD_BANDS, both column-major; Bv may be NULL (flat shading only). */
-rad_status rad_render_model_from_mesh(rad_render_model *model, const rad_mesh *mesh,
+RAD_API rad_status rad_render_model_from_mesh(rad_render_model *model, const rad_mesh *mesh,
                                       const double *B, const double *Bv, rad_error *err);
-void rad_render_model_free(rad_render_model *model);
+RAD_API void rad_render_model_free(rad_render_model *model);
 
 /* The largest element radiosity over all faces and bands (0 if none). */
-double rad_render_max_radiosity(const rad_render_model *model);
+RAD_API double rad_render_max_radiosity(const rad_render_model *model);
 
 /* Is the camera usable: fov in (0, 180), eye != at, up not parallel to the
  * view direction, all finite? */
-rad_status rad_camera_check(const rad_camera *camera, rad_error *err);
+RAD_API rad_status rad_camera_check(const rad_camera *camera, rad_error *err);
 
 /* Render the model.  On success the caller owns img (rad_image_free). */
-rad_status rad_render(const rad_render_model *model, const rad_render_options *opt,
+RAD_API rad_status rad_render(const rad_render_model *model, const rad_render_options *opt,
                       rad_image *img, rad_error *err);
-void rad_image_free(rad_image *img);
+RAD_API void rad_image_free(rad_image *img);
 
 /* The linear values of image row y (0 = top): 3 * width doubles, pixel x
  * band b at [3*x + b]; NULL if y is outside the image. */
-const double *rad_image_row(const rad_image *img, int y);
+RAD_API const double *rad_image_row(const rad_image *img, int y);
 
 /* The sRGB transfer curve (IEC 61966-2-1:1999, section 5.2) from linear
  * [0, 1] to encoded [0, 1]; values outside [0, 1] are clamped first. */
-double rad_srgb_encode(double linear);
+RAD_API double rad_srgb_encode(double linear);
 /* Its inverse, encoded [0, 1] to linear [0, 1]. */
-double rad_srgb_decode(double encoded);
+RAD_API double rad_srgb_decode(double encoded);
 /* One 8-bit channel: round(255 * srgb(clamp(exposure * radiosity))). */
-unsigned char rad_tone_byte(double radiosity, double exposure);
+RAD_API unsigned char rad_tone_byte(double radiosity, double exposure);
 
 /* The tone-mapped picture as 8-bit R G B triples, row-major from the top
  * (3 * width * height bytes), with the edges in black when img->edges. */
-void rad_image_to_rgb8(const rad_image *img, unsigned char *rgb);
+RAD_API void rad_image_to_rgb8(const rad_image *img, unsigned char *rgb);
 
 /* Write the tone-mapped picture to out as a PNG (through cairo). */
-rad_status rad_image_write_png(const rad_image *img, FILE *out, rad_error *err);
+RAD_API rad_status rad_image_write_png(const rad_image *img, FILE *out, rad_error *err);
 
 #endif /* RAD_RENDER_H */

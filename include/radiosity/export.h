@@ -29,19 +29,19 @@ typedef struct rad_run_info {
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */
-int rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
+RAD_API int rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
 /* Matrix Market "array real general", column-major, %.17g. */
-int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
+RAD_API int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
 /* Solution PLY: vertices with smoothed radiosity (linear doubles and sRGB
  * bytes), faces with element radiosity and surface index; the camera, when
  * the scene has one, in a comment. */
-int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *mesh, const double *B,
+RAD_API int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *mesh, const double *B,
                    const double *Bv);
 /* The JSON report. */
-int rad_export_report(FILE *out, const rad_run_info *info);
+RAD_API int rad_export_report(FILE *out, const rad_run_info *info);
 
 /* Linear radiosity to an 8-bit sRGB value, after scaling by `exposure`
  * (IEC 61966-2-1 transfer curve; values above 1 clip to 255). */
-unsigned char rad_srgb8(double linear, double exposure);
+RAD_API unsigned char rad_srgb8(double linear, double exposure);
 
 #endif /* RAD_EXPORT_H */

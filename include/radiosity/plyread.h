@@ -23,14 +23,14 @@
 #include <stddef.h>
 
 #include "radiosity.h"
-#include "render.h"
+#include "radiosity/render.h"
 
 /* Parse PLY text held in memory; `name` is used in messages.  camera (may
  * be NULL) receives the camera of the comment, or defined = 0. */
-rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
+RAD_API rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
                          size_t len, const char *name, rad_error *err);
 /* Read a PLY file ("-" is standard input). */
-rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
+RAD_API rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
                         rad_error *err);
 
 #endif /* RAD_PLYREAD_H */

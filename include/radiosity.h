@@ -34,6 +34,15 @@
 extern "C" {
 #endif
 
+/* RAD_API marks what the shared library exports; it is built with hidden
+ * visibility, so nothing else leaves it (Drepper, "How to Write Shared
+ * Libraries", 2011, section 2.2). */
+#if defined(__GNUC__) && __GNUC__ >= 4
+#define RAD_API __attribute__((visibility("default")))
+#else
+#define RAD_API
+#endif
+
 #define RAD_BANDS 3
 
 /* ---- status and errors ------------------------------------------------ */
@@ -57,7 +66,7 @@ typedef struct rad_error {
 } rad_error;
 
 /* A short English name of a status ("singular system", ...). */
-const char *rad_strstatus(rad_status status);
+RAD_API const char *rad_strstatus(rad_status status);
 
 /* ---- geometry ----------------------------------------------------------- */
 
@@ -107,13 +116,13 @@ typedef struct rad_scene {
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
  * input.  On failure *scene is left empty and err says FILE:LINE: why. */
-rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
+RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
 /* Parse scene text held in memory; `name` is used in messages. */
-rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
+RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err);
-void rad_scene_free(rad_scene *scene);
+RAD_API void rad_scene_free(rad_scene *scene);
 /* Override the mesh of every quad (the --mesh option). */
-void rad_scene_set_mesh(rad_scene *scene, int n, int m);
+RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
 
 /* ---- mesh (mesh.c) ------------------------------------------------------ */
 
@@ -142,10 +151,10 @@ typedef struct rad_mesh {
     int *surface_n, *surface_m; /* grid size per surface (1 x 1 for polygons) */
 } rad_mesh;
 
-rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
-void rad_mesh_free(rad_mesh *mesh);
+RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
+RAD_API void rad_mesh_free(rad_mesh *mesh);
 /* The vertex v (0..nverts-1) of element e. */
-rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
+RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
 
 /* ---- form factors (formfactor.c) ---------------------------------------- */
 
@@ -171,12 +180,12 @@ typedef struct rad_ff_options {
 
 #define RAD_GAUSS_MAX 20
 
-void rad_ff_options_init(rad_ff_options *opt);
+RAD_API void rad_ff_options_init(rad_ff_options *opt);
 
 /* Form factor from polygon a (na vertices, area computed) to polygon b, both
  * planar and convex, counter-clockwise about their fronts.  If errest is not
  * NULL it receives an estimate of the absolute error of the result. */
-double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+RAD_API double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
                        const rad_ff_options *opt, double *errest);
 
 /* What a fill of the form-factor matrix found. */
@@ -201,18 +210,18 @@ typedef struct rad_ff_stats {
  * by reciprocity A_i F_ij = A_j F_ji.  errest (n x n, may be NULL) receives
  * the estimated absolute error of each entry; stats (may be NULL) what the
  * fill found. */
-rad_status rad_ff_matrix(const rad_mesh *mesh, const rad_ff_options *opt, double *F,
+RAD_API rad_status rad_ff_matrix(const rad_mesh *mesh, const rad_ff_options *opt, double *F,
                          double *errest, rad_ff_stats *stats, rad_error *err);
 
 /* Gauss-Legendre nodes on [-1, 1] and weights for k = 1..RAD_GAUSS_MAX
  * points (Abramowitz & Stegun 1964, 25.4.29 and table 25.4). */
-const double *rad_gauss_nodes(int k);
-const double *rad_gauss_weights(int k);
+RAD_API const double *rad_gauss_nodes(int k);
+RAD_API const double *rad_gauss_weights(int k);
 
 /* I = integral over s in [a1, a2], t in [b1, b2] of ln sqrt((s-t)^2 + d^2):
  * two parallel segments on lines a distance d >= 0 apart, parameterised by
  * the same unit direction (d = 0: colinear). */
-double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
+RAD_API double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
 
 /* ---- the radiosity system (solve.c) ------------------------------------- */
 
@@ -266,7 +275,7 @@ typedef struct rad_solve_options {
                                    when F's error could make it so */
 } rad_solve_options;
 
-void rad_solve_options_init(rad_solve_options *opt);
+RAD_API void rad_solve_options_init(rad_solve_options *opt);
 
 typedef struct rad_solve_report {
     rad_solver solver;
@@ -291,40 +300,40 @@ typedef struct rad_solve_report {
  * not modified.  RAD_ERR_SINGULAR for a (numerically) singular system,
  * RAD_ERR_NOCONV for an iteration that did not converge (B then holds the
  * last iterate, which the caller must not present as the answer). */
-rad_status rad_solve(const rad_mesh *mesh, const double *F, const rad_solve_options *opt,
+RAD_API rad_status rad_solve(const rad_mesh *mesh, const double *F, const rad_solve_options *opt,
                      double *B, rad_solve_report *report, rad_error *err);
 
 /* Progressive refinement (Cohen, Chen, Wallace & Greenberg 1988): called by
  * rad_solve for RAD_SOLVER_PROGRESSIVE; rho and E are n x 3 column-major. */
-rad_status rad_solve_progressive(const rad_mesh *mesh, const double *F, const double *rho,
+RAD_API rad_status rad_solve_progressive(const rad_mesh *mesh, const double *F, const double *rho,
                                  const double *E, const rad_solve_options *opt, double *B,
                                  rad_solve_report *report, rad_error *err);
 
 /* Bytes the solve of n elements needs at its peak (F plus one working
  * matrix, plus O(n)), for the memory check before allocating. */
-double rad_solve_bytes(int n, int with_errest);
+RAD_API double rad_solve_bytes(int n, int with_errest);
 
 /* Bytes of memory available now (Linux MemAvailable), 0 if unknown. */
-double rad_memory_available(void);
+RAD_API double rad_memory_available(void);
 
 /* ---- vertex radiosity (smooth.c) ---------------------------------------- */
 
 /* Vertex radiosity from element radiosity (Goral et al. 1984, section 3;
  * Gouraud 1971), never across surfaces.  B is nelements x RAD_BANDS and Bv
  * nvertices x RAD_BANDS, both column-major. */
-void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
+RAD_API void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
 
 /* ---- closed forms (analytic.c) ------------------------------------------ */
 
 /* Differential area to a coaxial parallel disk of radius r at distance h. */
-double rad_analytic_point_disk(double r, double h);
+RAD_API double rad_analytic_point_disk(double r, double h);
 /* Disk of radius r1 to a coaxial parallel disk of radius r2, h apart. */
-double rad_analytic_disk_disk(double r1, double r2, double h);
+RAD_API double rad_analytic_disk_disk(double r1, double r2, double h);
 /* Directly opposed parallel a x b rectangles, c apart. */
-double rad_analytic_parallel_rectangles(double a, double b, double c);
+RAD_API double rad_analytic_parallel_rectangles(double a, double b, double c);
 /* From the l x w rectangle to the l x h rectangle sharing its edge of
  * length l at a right angle. */
-double rad_analytic_perpendicular_rectangles(double l, double w, double h);
+RAD_API double rad_analytic_perpendicular_rectangles(double l, double w, double h);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,35 @@
+#!/bin/sh
+# install.sh -- the library as a user meets it: `make install` into a
+# staging directory, `pkg-config --cflags --libs radiosity` alone builds the
+# example against it, and the shared library exports exactly the functions
+# that the installed headers declare (nm -D against the headers).
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+. "${top_srcdir:-.}/tests/lib.sh"
+if ! command -v pkg-config > /dev/null 2>&1 || ! command -v nm > /dev/null 2>&1; then
+  echo "1..0 # SKIP pkg-config or nm not found"; exit 0
+fi
+stage="$work/stage"
+# a make of our own, outside the jobserver of the `make check` that runs us
+env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL ${MAKE:-make} -C "${top_builddir:-.}" install \
+  DESTDIR="$stage" > "$work/install.log" 2>&1
+ok $? "make install DESTDIR=... ($(tail -n 1 "$work/install.log"))"
+pc=$(find "$stage" -name radiosity.pc | head -n 1)
+[ -n "$pc" ]; ok $? "radiosity.pc is installed"
+export PKG_CONFIG_PATH="$(dirname "$pc")"
+flags=$(pkg-config --cflags --libs radiosity); ok $? "pkg-config --cflags --libs radiosity: $flags"
+${CC:-cc} -o "$work/solve_cube" "$top_srcdir/examples/solve_cube.c" $flags 2> "$work/cc.err"
+ok $? "the example builds with pkg-config's flags alone $(head -c 300 "$work/cc.err")"
+libdir=$(pkg-config --variable=libdir radiosity)
+LD_LIBRARY_PATH="$libdir" "$work/solve_cube" "$top_srcdir/data/goral1984-cube.scene" > "$work/out"
+[ $? -eq 0 ] && [ "$(wc -l < "$work/out")" -eq 7 ]; ok $? "and runs against the installed library"
+so=$(ls "$libdir"/libradiosity.so.* | head -n 1)
+nm -D --defined-only "$so" | awk '$2 != "A" { print $3 }' | sort -u > "$work/exported"
+incdir=$(pkg-config --variable=includedir radiosity)
+# every function declaration in the installed headers: `[RAD_API] TYPE rad_NAME(`
+cat "$incdir/radiosity.h" "$incdir"/radiosity/*.h |
+  sed -n -E 's/^(RAD_API )?(const |unsigned )?[a-z_0-9]+[ *]+\**(rad_[a-z_0-9]+)\(.*/\3/p' |
+  sort -u > "$work/declared"
+[ -s "$work/declared" ] && diff "$work/declared" "$work/exported" > "$work/diff"
+ok $? "nm -D lists exactly the $(wc -l < "$work/declared") functions the headers declare $(tr '\n' ' ' < "$work/diff" | head -c 400)"
+grep -q '^RAD_API' "$incdir/radiosity.h"; ok $? "the headers mark what is exported (RAD_API)"
+done_testing
