@@ -30,9 +30,9 @@
 #include <unistd.h>
 
 #include "plot.h"
-#include "plyread.h"
+#include "radiosity/plyread.h"
 #include "radiosity.h"
-#include "render.h"
+#include "radiosity/render.h"
 #include "tap.h"
 #include "vec.h"
 
