@@ -154,6 +154,20 @@ static double atan_ratio(double x)
     return x == 0.0 ? 1.0 : atan(x) / x;
 }
 
+/* ln(x/y) for x, y > 0: log of the quotient while the quotient is a normal
+ * double (its rounding then moves the logarithm by an ulp-sized absolute
+ * amount), log(x) - log(y) when it would overflow or underflow (then
+ * |ln(x/y)| > 708 and the two logarithms, each within an ulp of <= 745,
+ * differ by at most twice that relatively).  A plain log(x) - log(y)
+ * would lose up to 25x near the 2^40 switch-over with x, y near 1e-308. */
+static double log_ratio(double x, double y)
+{
+    const double q = x / y;
+    if (q >= DBL_MIN && q <= DBL_MAX)
+        return log(q);
+    return log(x) - log(y);
+}
+
 /* ---- point to disk ------------------------------------------------------- */
 
 /* Differential area on the axis of a coaxial parallel disk ([H] section B,
@@ -312,13 +326,13 @@ static double pr_long_strip(double u, double y)
  *     ln(1 + q) = log1p(u^2) + log1p(v^2) - 2 ln(v) - log1p(r^2 (1 + v^2)).
  * Here pi F >= pi F(2^K, 1) > 1.3, and the terms that partly cancel
  * (the two atan(r ...) terms, pi u) sum to at most 3 pi in magnitude:
- * a loss of at most 8 ulps.  ln(v) is taken as ln(c) - ln(b), which stays
- * finite when c/b underflows. */
+ * a loss of at most 8 ulps.  ln(v) is log_ratio(c, b), finite when c/b
+ * underflows. */
 static double pr_near(double a, double b, double c)
 {
     const double u = c / a, v = c / b, r = b / a;
     const double su = hypot(1.0, u), sv = hypot(1.0, v);
-    const double ln_v = log(c) - log(b);
+    const double ln_v = log_ratio(c, b);
     const double ln1q = log1p(u * u) + log1p(v * v) - 2.0 * ln_v
                         - log1p(r * r * (1.0 + v * v));
     const double g1 = M_PI / (sv + v) - 2.0 * sv * atan(r * sv)
@@ -388,7 +402,7 @@ static double pp_psi_diff_over_m(double m, double M, double r)
            - M * delta_m / (1.0 + M * r) * atan_ratio(x);
 }
 
-/* B/m for 2^-K <= M <= 2^K, 0 < m <= M, ln_m = ln(m) (taken from the
+/* B/m for 2^-K <= M <= 2^K, 0 < m <= M, ln_m = ln(m) (log_ratio of the
  * arguments, finite even when m underflows).  Written as
  *   B/m = atan(1/m) - [psi(R) - psi(M)]/m
  *         + 1/4 [ L1/m + m ln(1 - tm) + (M^2/m) ln(1 - tM) ],
@@ -513,12 +527,12 @@ double rad_analytic_perpendicular_rectangles(double l, double w, double h)
     s = mn / mx;
     if (far_above(mn, l))
         /* F = B/(pi W) = B (l/w)/pi; l/w last, as it may be subnormal */
-        return pp_wide(l / mn, l / mx, s, log(l) - log(mn)) / M_PI * l / w;
+        return pp_wide(l / mn, l / mx, s, log_ratio(l, mn)) / M_PI * l / w;
     if (far_above(mx, l))
-        b_m = pp_tall(mn / l, l / mx, s, log(mn) - log(l));
+        b_m = pp_tall(mn / l, l / mx, s, log_ratio(mn, l));
     else if (far_above(l, mx))
         return pp_long_strips(mx / l, s, w_is_min);
     else
-        b_m = pp_moderate(mn / l, mx / l, log(mn) - log(l));
+        b_m = pp_moderate(mn / l, mx / l, log_ratio(mn, l));
     return (w_is_min ? b_m : b_m * s) / M_PI;
 }
