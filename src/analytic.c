@@ -249,7 +249,7 @@ double rad_analytic_disk_disk(double r1, double r2, double h)
  *   X > 2^K, Y < 1      pr_long_strip: u = 1/X, an asymptotic form;
  *   X > 2^K, Y >= 1     pr_near: u = 1/X, v = 1/Y, exact. */
 
-/* G(x, y) / 2 = g(x, y) / y for x <= 2^K, y <= x, y > 0.  With
+/* G(x, y) / 2 = g(x, y) / y for 0 < x, y <= 2^K (either the larger).  With
  * d = s - 1 = y^2 / (s + 1), p = x / s and the exact identities
  *     atan(x) - atan(p) = atan(z),   z = x d / (s + x^2) = d p / (1 + p^2 s),
  *     atan(p) - p / (1 + p^2 s) = phi(p) + p^3 d / ((1 + p^2)(1 + p^2 s)),
@@ -257,9 +257,11 @@ double rad_analytic_disk_disk(double r1, double r2, double h)
  *     g = d atan(p) - atan(z) = d [atan(p) - z/d] + tau(z)
  *       = d [phi(p) + p^3 d / ((1 + p^2)(1 + p^2 s))] + tau(z),
  * a sum of non-negative terms with the relative error of phi and tau, a
- * few ulps.  Divided by y: d/y = y/(s + 1) is formed without squaring y,
- * and tau(z)/y <= z^3/y ~ x^3 y^5 may underflow only where it is below
- * 2^-1000 of the whole. */
+ * few ulps.  Divided by y: d/y = y/(s + 1) is formed without squaring y.
+ * Against pi F (>= L of pr_moderate) the last term tau(z)/y is at most
+ * about m^2, m = min(X, Y), and tau(z) underflows only for z < 1e-103,
+ * which with X, Y <= 2^K needs m < 1e-30: what its underflow drops is
+ * then below 1e-60 of F. */
 static double pr_half_g(double x, double y)
 {
     const double s = hypot(1.0, y);
