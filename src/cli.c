@@ -222,13 +222,84 @@ static void usage(FILE *out)
             "  analytic CASE ARGS...   closed-form form factors\n"
             "\n"
             "Options:\n"
-            "      --help              show this help and exit\n"
-            "      --version           show the version and exit\n"
+            "  -h, --help              show this help and exit\n"
+            "  -V, --version           show the version and exit\n"
             "\n"
             "'radiosity COMMAND --help' describes each command.  The scene file\n"
             "format is described in radiosity-scene(5).\n"
             "\n"
             "Report bugs to the project's issue tracker.\n");
+}
+
+/* Standard output must reach its file: a full disk or a closed pipe after
+ * a value was printed is an error, not a success (GNU coding standards on
+ * --help and --version; gnulib's close_stdout).  Closes stdout and returns
+ * rc, or 1 with the reason when rc was 0 and a write failed.  With rc != 0
+ * the command has reported its error already (a failed "-" output is
+ * reported by atomicfile.c), and one message is enough.  The reason is
+ * the errno of the failing close (which flushes what is left, so a
+ * stream that failed earlier fails again there with the same cause). */
+static int finish_stdout(int rc)
+{
+    const int earlier = ferror(stdout);
+    int closed, e;
+    errno = 0;
+    closed = fclose(stdout) == 0;
+    e = errno;
+    if (rc == 0 && (!closed || earlier)) {
+        cli_error("write error on standard output: %s",
+                  e ? strerror(e) : "a write failed before the end");
+        return 1;
+    }
+    return rc;
+}
+
+static void version(void)
+{
+    printf("radiosity %s\n"
+           "Copyright (C) 2026 The radiosity authors.\n"
+           "License GPLv3+: GNU GPL version 3 or later <https://gnu.org/licenses/gpl.html>.\n"
+           "This is free software: you are free to change and redistribute it.\n"
+           "There is NO WARRANTY, to the extent permitted by law.\n",
+           PACKAGE_VERSION);
+}
+
+/* Run subcommand fn with argv[0] = "radiosity CMD": getopt prefixes its
+ * own messages ("unrecognized option") with argv[0], so they name the
+ * program and the command as every other message does. */
+static int run_command(int (*fn)(int, char **), int argc, char **argv)
+{
+    char name[64];
+    snprintf(name, sizeof name, "radiosity %s", argv[0]);
+    argv[0] = name;
+    return fn(argc, argv);
+}
+
+static int dispatch(int argc, char **argv)
+{
+    static const struct {
+        const char *name;
+        int (*fn)(int, char **);
+    } commands[] = {
+        {"formfactor", cmd_formfactor}, {"analytic", cmd_analytic},
+        {"solve", cmd_solve},           {"render", cmd_render},
+        {"progress", cmd_progress},     {"sweep", cmd_sweep},
+    };
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
+        version();
+        return 0;
+    }
+    /* each subcommand sees argv[0] = "radiosity NAME" */
+    for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)
+        if (strcmp(cmd, commands[k].name) == 0)
+            return run_command(commands[k].fn, argc - 1, argv + 1);
+    cli_error("unknown command '%s'", cmd);
+    return cli_usage_hint(NULL);
 }
 
 int main(int argc, char **argv)
@@ -239,33 +310,5 @@ int main(int argc, char **argv)
         usage(stderr);
         return EXIT_USAGE;
     }
-    const char *cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
-        usage(stdout);
-        return 0;
-    }
-    if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
-        printf("radiosity %s\n"
-               "Copyright (C) 2026 The radiosity authors.\n"
-               "License GPLv3+: GNU GPL version 3 or later <https://gnu.org/licenses/gpl.html>.\n"
-               "This is free software: you are free to change and redistribute it.\n"
-               "There is NO WARRANTY, to the extent permitted by law.\n",
-               PACKAGE_VERSION);
-        return 0;
-    }
-    /* each subcommand sees argv[0] = its name */
-    if (strcmp(cmd, "formfactor") == 0)
-        return cmd_formfactor(argc - 1, argv + 1);
-    if (strcmp(cmd, "analytic") == 0)
-        return cmd_analytic(argc - 1, argv + 1);
-    if (strcmp(cmd, "solve") == 0)
-        return cmd_solve(argc - 1, argv + 1);
-    if (strcmp(cmd, "render") == 0)
-        return cmd_render(argc - 1, argv + 1);
-    if (strcmp(cmd, "progress") == 0)
-        return cmd_progress(argc - 1, argv + 1);
-    if (strcmp(cmd, "sweep") == 0)
-        return cmd_sweep(argc - 1, argv + 1);
-    cli_error("unknown command '%s'", cmd);
-    return cli_usage_hint(NULL);
+    return finish_stdout(dispatch(argc, argv));
 }

@@ -50,7 +50,7 @@ enum {
     "                          rule made safe) or reference (error-controlled)\n"\
     "      --threads N         OpenMP threads (default: all cores)\n"            \
     "  -q, --quiet             no progress bar or summary\n"                     \
-    "      --help              show this help and exit\n"
+    "  -h, --help              show this help and exit\n"
 
 void cli_common_init(cli_common *c);
 /* Handle a common option: 0 handled, 1 not a common option, 2 usage error

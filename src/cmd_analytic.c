@@ -41,13 +41,13 @@ static void help(void)
         printf("  %s %s\n                        %s\n", cases[k].name, cases[k].args,
                cases[k].what);
     printf("\nOptions:\n"
-           "      --help              show this help and exit\n"
+           "  -h, --help              show this help and exit\n"
            "\nExit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
 int cmd_analytic(int argc, char **argv)
 {
-    if (argc >= 2 && strcmp(argv[1], "--help") == 0) {
+    if (argc >= 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         help();
         return 0;
     }
@@ -88,6 +88,8 @@ int cmd_analytic(int argc, char **argv)
         cli_error("analytic %s: no finite value for these parameters", c->name);
         return 1;
     }
+    /* a failed write (full disk, closed pipe) is caught when main closes
+     * standard output (cli.c) */
     printf("%.17g\n", f);
     return 0;
 }

@@ -57,8 +57,8 @@ int cmd_formfactor(int argc, char **argv)
     const char *output = "-";
     int opt, r;
     cli_common_init(&c);
-    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
-        if (opt == OPT_HELP) {
+    while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP || opt == 'h') {
             help();
             return 0;
         }

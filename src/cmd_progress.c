@@ -405,8 +405,8 @@ int cmd_progress(int argc, char **argv)
     cli_common_init(&a.common);
     rad_race_options_init(&a.race);
     a.race.steps = 0; /* the default depends on the mesh */
-    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
-        if (opt == OPT_HELP) {
+    while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP || opt == 'h') {
             help();
             return 0;
         }

@@ -392,8 +392,8 @@ int cmd_render(int argc, char **argv)
     rad_render_options_init(&a.ropt);
     a.scanline = -1;
     cli_solve_init(&s);
-    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
-        if (opt == OPT_HELP) {
+    while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP || opt == 'h') {
             help();
             return 0;
         }

@@ -363,8 +363,8 @@ int cmd_solve(int argc, char **argv)
     const char *output = NULL;
     int opt;
     cli_solve_init(&s);
-    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
-        if (opt == OPT_HELP) {
+    while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
+        if (opt == OPT_HELP || opt == 'h') {
             help();
             return 0;
         }

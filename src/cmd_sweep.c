@@ -146,9 +146,10 @@ static int parse_args(sweep_args *a, int argc, char **argv)
         a->acc[k] = k;
     a->nsolvers = 1;
     a->output = "-";
-    while ((opt = getopt_long(argc, argv, "o:q", longopts, NULL)) != -1) {
+    while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
         switch (opt) {
         case OPT_HELP:
+        case 'h':
             help();
             return 0;
         case OPT_MESHES:

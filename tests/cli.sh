@@ -36,10 +36,79 @@ close_to "$v" 0.20004377607540316 1e-14; ok $? "perpendicular-rectangles 1 1 1 =
 "$RADIOSITY" analytic point-disk 1 -1 > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "negative parameter: exit 2"
 "$RADIOSITY" analytic cone 1 > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown case: exit 2"
 
-# usage and help
-for cmd in formfactor analytic; do
-  "$RADIOSITY" $cmd --help | grep -q "Usage: radiosity $cmd"; ok $? "$cmd --help"
+# analytic at extreme ratios (issue 14): values from limits derived apart
+# from analytic.c.
+# Two opposed strips eps x 1, 1 apart: F = (2 eps/pi) int_0^1 (1 - u)/(1 + u^2)^2 du
+# = (2 eps/pi)(pi/8 + 1/4 - 1/4) = eps/4 (the kernel convolved along the
+# length; the eps^3 term is below 1e-400).
+v=$("$RADIOSITY" analytic parallel-rectangles 1e-200 1 1); ok $? "analytic parallel-rectangles 1e-200 1 1 exits 0"
+close_to "$v" 2.5e-201 1e-13; ok $? "parallel-rectangles 1e-200 1 1 = eps/4 ($v)"
+# a >> b = c: Hottel's crossed strings for infinite strips, sqrt(2) - 1,
+# with an end correction of relative size c/a = 1e-150.
+v=$("$RADIOSITY" analytic parallel-rectangles 1e150 1 1)
+close_to "$v" 0.41421356237309505 1e-13; ok $? "parallel-rectangles 1e150 1 1 = sqrt 2 - 1 ($v)"
+# c -> 0: everything but the loss through the gap, 1 - c/a - c/b.
+v=$("$RADIOSITY" analytic parallel-rectangles 1 1 1e-150)
+close_to "$v" 1 1e-13; ok $? "parallel-rectangles 1 1 1e-150 = 1 ($v)"
+# l << w = h = 1: the large-W, H expansion of C-14,
+# B = 3/4 + ln(W H / R)/2 + O(1/W^2), F = B/(pi W), W = H = 1e100.
+v=$("$RADIOSITY" analytic perpendicular-rectangles 1e-100 1 1)
+want=$(awk 'BEGIN { printf "%.17g", (0.75 + 0.5 * log(1e100 / sqrt(2))) / (3.141592653589793 * 1e100) }')
+close_to "$v" "$want" 1e-13; ok $? "perpendicular-rectangles 1e-100 1 1 = $want ($v)"
+# a small disk very close to a huge one sees it all; reciprocity gives the
+# other way round (r1/r2)^2 = 1e-200.
+v=$("$RADIOSITY" analytic disk-disk 1e-100 1 1e-100)
+close_to "$v" 1 1e-13; ok $? "disk-disk 1e-100 1 1e-100 = 1 ($v)"
+v=$("$RADIOSITY" analytic disk-disk 1 1e-100 1e-100)
+close_to "$v" 1e-200 1e-13; ok $? "disk-disk 1 1e-100 1e-100 = 1e-200 ($v)"
+# point to disk far away: F = (r/h)^2 / (1 + (r/h)^2) = 1e-300
+v=$("$RADIOSITY" analytic point-disk 1 1e150)
+close_to "$v" 1e-300 1e-13; ok $? "point-disk 1 1e150 = 1e-300 ($v)"
+
+# standard output that fails (a full disk): exit 1 with the reason, for the
+# value, the help and the version alike
+for args in "analytic point-disk 1 1" "--help" "--version" "-h" "analytic --help" "solve --help" "formfactor -h"; do
+  "$RADIOSITY" $args > /dev/full 2> "$work/err"; rc=$?
+  msg=$(head -n 1 "$work/err")
+  case "$msg" in
+    "radiosity: write error on standard output: "?*) m=0 ;;
+    *) m=1 ;;
+  esac
+  [ $rc -eq 1 ] && [ $m -eq 0 ]; ok $? "'radiosity $args' > /dev/full: exit $rc, '$msg'"
 done
+"$RADIOSITY" formfactor -o - "$work/two.scene" > /dev/full 2> "$work/err"; rc=$?
+msg=$(head -n 1 "$work/err")
+case "$msg" in *": "?*) m=0 ;; *) m=1 ;; esac
+[ $rc -eq 1 ] && [ $m -eq 0 ] && [ "$(wc -l < "$work/err")" -eq 1 ]
+ok $? "formfactor -o - > /dev/full: exit $rc, one message with a reason: '$msg'"
+# a write error on a regular file names the file and the reason: a file
+# size limit of one block (EFBIG, the signal ignored) stands in for a full
+# disk; no output file may be left behind
+printf 'material w reflect 0.5\nquad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 10x10\nquad w 0 0 1  0 1 1  1 1 1  1 0 1 mesh 10x10\n' > "$work/big.scene"
+(trap '' XFSZ; ulimit -f 1 && exec "$RADIOSITY" formfactor -o "$work/big.tsv" "$work/big.scene") 2> "$work/err"; rc=$?
+msg=$(head -n 1 "$work/err")
+case "$msg" in "radiosity: $work/big.tsv"*": "?*) m=0 ;; *) m=1 ;; esac
+[ $rc -eq 1 ] && [ $m -eq 0 ] && [ ! -e "$work/big.tsv" ] && [ -z "$(ls "$work" | grep '^big\.tsv.')" ]
+ok $? "write error on a file: exit $rc, '$msg', no file left"
+
+# usage and help: --help and -h alike for every command; getopt's own
+# messages name the program and the command
+for cmd in formfactor analytic solve render progress sweep; do
+  "$RADIOSITY" $cmd --help | grep -q "Usage: radiosity $cmd"; ok $? "$cmd --help"
+  "$RADIOSITY" $cmd -h > "$work/h" 2>&1; rc=$?
+  [ $rc -eq 0 ] && grep -q "Usage: radiosity $cmd" "$work/h"; ok $? "$cmd -h works like --help (exit $rc)"
+done
+for cmd in formfactor solve render progress sweep; do
+  "$RADIOSITY" $cmd --no-such-option "$work/two.scene" > /dev/null 2> "$work/err"; rc=$?
+  msg=$(head -n 1 "$work/err")
+  case "$msg" in "radiosity $cmd: "*"no-such-option"*) m=0 ;; *) m=1 ;; esac
+  [ $rc -eq 2 ] && [ $m -eq 0 ]; ok $? "$cmd --no-such-option: exit $rc, '$msg'"
+  "$RADIOSITY" $cmd -Z "$work/two.scene" > /dev/null 2> "$work/err"; rc=$?
+  msg=$(head -n 1 "$work/err")
+  case "$msg" in "radiosity $cmd: "*"'Z'"*) m=0 ;; *) m=1 ;; esac
+  [ $rc -eq 2 ] && [ $m -eq 0 ]; ok $? "$cmd -Z: exit $rc, '$msg'"
+done
+"$RADIOSITY" -h | grep -q '^Usage: radiosity'; ok $? "-h"
 "$RADIOSITY" --version | head -n 1 | grep -q '^radiosity [0-9]'; ok $? "--version"
 "$RADIOSITY" --help | grep -q '^Usage: radiosity'; ok $? "--help"
 "$RADIOSITY" frobnicate > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown command: exit 2"

@@ -20,8 +20,11 @@
  *   (e) Gauss-Legendre quadrature of the area-area kernel
  *       cos t1 cos t2 / (pi r^2) in long double for moderate geometries.
  *
- * The required accuracy of analytic.c is 1e-13 relative for parameters in
- * 1e-4..1e4.  Every comparison states where its tolerance comes from.  The
+ * The required accuracy of analytic.c is 1e-13 relative for all positive
+ * finite parameters (absolute 1e-13 DBL_MIN where F is subnormal): the
+ * sweeps below cover 1e-4..1e4 with the references above and
+ * 1e-300..1e300 with limits (test_wide_range); tests/analytic.py compares
+ * a denser grid with mpmath.  Every comparison states where its tolerance comes from.  The
  * sweeps print one TAP line each (the worst point) and a diagnostic line for
  * every failing point.
  */
@@ -858,6 +861,237 @@ static void test_perpendicular(void)
     }
 }
 
+/* ---- the whole double range ------------------------------------------------ */
+
+/* Arguments 1e-300, 1e-250, ..., 1e300: two different ones differ by a
+ * factor of at least 1e50, so every triple of them that is not a scaled
+ * copy of a moderate one lies deep in an asymptotic regime with a limit
+ * derived below, independently of analytic.c, whose neglected terms are
+ * far below 1e-20 relative.  The references are evaluated in long double,
+ * whose exponent (to 1e4932 on x86) holds products of such ratios; where
+ * the reference is below DBL_MIN the result can only be held to an
+ * absolute TOL * DBL_MIN (a subnormal has fewer digits). */
+#define NWIDE 13
+static double wide(int i)
+{
+    return pow(10.0, -300 + 50 * i);
+}
+
+/* Like sweep_add, for references that may be subnormal or out of range. */
+static void wide_add(sweep *s, double got, ld want, double p, double q,
+                     double r)
+{
+    ld err;
+    if (want >= DBL_MIN)
+        err = rel_err(got, want);
+    else
+        err = fabsl((ld)got - want) / DBL_MIN;
+    if (!isfinite(got) || got < 0)
+        err = HUGE_VALL;
+    s->points++;
+    if ((double)err > s->worst || s->points == 1) {
+        s->worst = (double)err;
+        s->at[0] = p;
+        s->at[1] = q;
+        s->at[2] = r;
+    }
+    if (!(err <= TOL)) {
+        s->failed++;
+        tap_diag("%s: at (%g, %g, %g) got %.17g want %.20Lg", s->what, p, q,
+                 r, got, want);
+    }
+}
+
+/* Hottel's crossed strings for two infinite parallel strips of width b,
+ * c apart: sqrt(1 + t^2) - t, t = c/b, rationalised. */
+static ld strips_2d(ld t)
+{
+    return 1 / (sqrtl(1 + t * t) + t);
+}
+
+/* Parallel rectangles, X = a/c, Y = b/c, ratios 1 or >= 1e50 apart:
+ *   X, Y <= 1e-20: far apart, F = (XY/pi)(1 - (X^2 + Y^2)/3) + O(X^4)
+ *     (the kernel series of test_parallel's far sweep);
+ *   min(X, Y) = e <= 1e-20: a thin strip, the first term of the thin
+ *     series above (K_0 = X atan(X)/2 after I_2(T) = T/2 + sin(2T)/4):
+ *     F = e atan(other)/pi (1 + O(e^2)); at X = 1 it is e/4, the kernel
+ *     int_0^1 (1 - u)/(1 + u^2)^2 du = pi/8 convolved along the strips;
+ *   X, Y >= 1e20: nearly touching, F = 1 - 1/X - 1/Y + O(ln X / X^2):
+ *     all but what leaves through the gap band of area 2(a + b)c, which
+ *     sees each plate with factor 1/2, so by reciprocity the loss is
+ *     (a + b)c/(ab);
+ *   otherwise one ratio >= 1e50 times the other and >= 1: an infinite
+ *     strip, crossed strings with relative end correction O(1/max). */
+static ld parallel_limit(ld X, ld Y)
+{
+    const ld lo = X < Y ? X : Y, hi = X < Y ? Y : X;
+    if (hi <= 1e-20L)
+        return X * Y / PI_L * (1 - (X * X + Y * Y) / 3);
+    if (lo <= 1e-20L)
+        return lo * atanl(hi) / PI_L;
+    if (lo >= 1e20L)
+        return 1 - 1 / X - 1 / Y;
+    return strips_2d(1 / lo);
+}
+
+/* Perpendicular rectangles, W = w/l, H = h/l, m = min, M = max:
+ *   M <= 1e-20: long strips, pi W F = pi/2 (W + H - R) + (W^2 ln(W^2/R^2)
+ *     + H^2 ln(H^2/R^2))/4 + W^2 H^2/12 (test_perpendicular's strips);
+ *   m >= 1e20: l << w, h.  psi(t) = 1 - 1/(3t^2) + ..., the first
+ *     logarithm of C-14 tends to ln(W^2 H^2/R^2), the two others to
+ *     -H^2/R^2 and -W^2/R^2 (ln(1 + x) = x + O(x^2)):
+ *     B = 3/4 + ln(W H/R)/2 + O(1/m^2);
+ *   M >= 1e20 max(1, m): a tall receiver or a deep emitter,
+ *     B = B_inf(m) (test_perpendicular's tall limit, remainder
+ *     (m^2 + m^4)/(M^4 B));
+ *   otherwise m <= 1e-20 min(1, M) <= M <= 1e20: a strip along the
+ *     common edge, B/m = atan(1/m) + O(m ln m): F = 1/2 from the narrow
+ *     one (a point on the edge sees half its hemisphere filled), and
+ *     F = (m/M)/2 the other way (reciprocity). */
+static ld perpendicular_limit(ld W, ld H)
+{
+    const ld m = W < H ? W : H, M = W < H ? H : W;
+    const ld R = sqrtl(W * W + H * H);
+    ld B;
+    if (M <= 1e-20L)
+        B = PI_L * W * H / (W + H + R) +
+            (W * W * logl(W * W / (R * R)) + H * H * logl(H * H / (R * R))) /
+                4 +
+            W * W * H * H / 12;
+    else if (m >= 1e20L)
+        B = 0.75L + (logl(W) + logl(H) - logl(R)) / 2;
+    else if (M >= 1e20L * (m > 1 ? m : 1))
+        B = m * atanl(1 / m) +
+            (log1pl(m * m) - m * m * log1pl(1 / (m * m))) / 4;
+    else
+        B = m * PI_L / 2;
+    return B / (PI_L * W);
+}
+
+/* Coaxial disks, ratios 1 or >= 1e50 apart:
+ *   h >= 1e20 max(r1, r2): far, (r2/h)^2 (1 - (r1^2 + r2^2)/h^2);
+ *   r1 <= 1e-20 min(r2, h): disk 1 a point, r2^2/(h^2 + r2^2) (1 -
+ *     r1^2 h^2/(h^2 + r2^2)^2) (test_disk_disk's r1 -> 0 limit);
+ *   r2 <= 1e-20 min(r1, h): disk 2 a point seen from disk 1, the same by
+ *     reciprocity: (r2^2/r1^2) F21;
+ *   h <= 1e-20 min(r1, r2): touching.  Equal radii: 1 - t + t^2/2
+ *     (t = h/r); else the smaller disk sees all of the larger, the larger
+ *     the smaller's area: min(1, r2^2/r1^2), corrections O(h^2/r^2). */
+static ld disk_limit(ld r1, ld r2, ld h, int *known)
+{
+    *known = 1;
+    if (h >= 1e20L * (r1 > r2 ? r1 : r2))
+        return r2 * r2 / (h * h) * (1 - (r1 * r1 + r2 * r2) / (h * h));
+    if (r1 <= 1e-20L * (r2 < h ? r2 : h)) {
+        const ld A = h * h + r2 * r2;
+        return r2 * r2 / A * (1 - r1 * r1 * h * h / (A * A));
+    }
+    if (r2 <= 1e-20L * (r1 < h ? r1 : h)) {
+        const ld A = h * h + r1 * r1;
+        return r2 * r2 / (r1 * r1) * (r1 * r1 / A) *
+               (1 - r2 * r2 * h * h / (A * A));
+    }
+    if (h <= 1e-20L * (r1 < r2 ? r1 : r2)) {
+        const ld t = h / r1;
+        if (r1 == r2)
+            return 1 - t + t * t / 2;
+        return r2 < r1 ? r2 * r2 / (r1 * r1) : 1;
+    }
+    *known = 0;
+    return 0;
+}
+
+static void test_wide_range(void)
+{
+    sweep pd = {"point-disk over 1e-300..1e300 vs r^2/(r^2 + h^2)", 0, 0, 0,
+                0, {0, 0, 0}};
+    sweep dd = {"disk-disk over 1e-300..1e300 vs limits", 0, 0, 0, 0,
+                {0, 0, 0}};
+    sweep pr = {"parallel over 1e-300..1e300 vs limits", 0, 0, 0, 0,
+                {0, 0, 0}};
+    sweep pp = {"perpendicular over 1e-300..1e300 vs limits", 0, 0, 0, 0,
+                {0, 0, 0}};
+    sweep rd = {"disk-disk reciprocity r1^2 F12 = r2^2 F21 over 1e-300..1e300",
+                0, 0, 0, 0, {0, 0, 0}};
+    sweep rp = {"perpendicular reciprocity w F(l,w,h) = h F(l,h,w) over "
+                "1e-300..1e300", 0, 0, 0, 0, {0, 0, 0}};
+    sweep sc = {"scale invariance F(k a, k b, k c) = F(a, b, c), k = 2^e to "
+                "the ends of the double range", 0, 0, 0, 0, {0, 0, 0}};
+    int i, j, k, known;
+
+    for (i = 0; i < NWIDE; i++)
+        for (j = 0; j < NWIDE; j++) {
+            const ld r = wide(i), h = wide(j);
+            wide_add(&pd, rad_analytic_point_disk(wide(i), wide(j)),
+                     r * r / (r * r + h * h), wide(i), wide(j), 0);
+        }
+    for (i = 0; i < NWIDE; i++)
+        for (j = 0; j < NWIDE; j++)
+            for (k = 0; k < NWIDE; k++) {
+                const double a = wide(i), b = wide(j), c = wide(k);
+                const ld want = disk_limit(a, b, c, &known);
+                const double f12 = rad_analytic_disk_disk(a, b, c);
+                const double f21 = rad_analytic_disk_disk(b, a, c);
+                const double g = rad_analytic_perpendicular_rectangles(a, b, c);
+                const double gr = rad_analytic_perpendicular_rectangles(a, c, b);
+                if (known)
+                    wide_add(&dd, f12, want, a, b, c);
+                if (!(i == j && j == k)) {
+                    wide_add(&pr, rad_analytic_parallel_rectangles(a, b, c),
+                             parallel_limit((ld)a / c, (ld)b / c), a, b, c);
+                    wide_add(&pp, g, perpendicular_limit((ld)b / a, (ld)c / a),
+                             a, b, c);
+                }
+                /* reciprocity, both sides from the library; the products
+                 * in long double are exact to 1e-19 */
+                if (f12 >= DBL_MIN && f21 >= DBL_MIN)
+                    wide_add(&rd, f12, (ld)b * b * f21 / ((ld)a * a), a, b, c);
+                if (g >= DBL_MIN && gr >= DBL_MIN)
+                    wide_add(&rp, g, (ld)c * gr / b, a, b, c);
+            }
+    sweep_done(&pd, TOL, 0);
+    sweep_done(&dd, TOL, 0);
+    sweep_done(&pr, TOL, 0);
+    sweep_done(&pp, TOL, 0);
+    sweep_done(&rd, TOL, 0);
+    sweep_done(&rp, TOL, 0);
+
+    /* Only ratios matter: scaling every length by 2^e (exact), with e
+     * taking the largest length to 2^1015 or the smallest to 2^-1015,
+     * must leave F unchanged up to the rounding of the logarithms of
+     * ratios (a few ulps; 8 allowed), for moderate and extreme shapes. */
+    {
+        static const double shapes[][3] = {
+            {1, 1, 1}, {2, 3, 0.5}, {1, 1e-8, 1e8}, {1e-60, 1, 1e-70},
+            {1e60, 1e50, 1}, {1, 1e-100, 1e-90}};
+        const int n = (int)(sizeof shapes / sizeof shapes[0]);
+        for (i = 0; i < n; i++)
+            for (k = -1; k <= 1; k += 2) {
+                const double a = shapes[i][0], b = shapes[i][1],
+                             c = shapes[i][2];
+                const int e = k > 0 ? 1015 - ilogb(fmax(fmax(a, b), c))
+                                    : -1015 - ilogb(fmin(fmin(a, b), c));
+                const double sa = ldexp(a, e), sb = ldexp(b, e),
+                             scc = ldexp(c, e);
+                sweep_add(&sc, rad_analytic_disk_disk(sa, sb, scc),
+                          (ref){rad_analytic_disk_disk(a, b, c), 0},
+                          8 * DBL_EPSILON, sa, sb, scc);
+                sweep_add(&sc, rad_analytic_parallel_rectangles(sa, sb, scc),
+                          (ref){rad_analytic_parallel_rectangles(a, b, c), 0},
+                          8 * DBL_EPSILON, sa, sb, scc);
+                sweep_add(&sc,
+                          rad_analytic_perpendicular_rectangles(sa, sb, scc),
+                          (ref){rad_analytic_perpendicular_rectangles(a, b, c),
+                                0},
+                          8 * DBL_EPSILON, sa, sb, scc);
+                sweep_add(&sc, rad_analytic_point_disk(sa, sb),
+                          (ref){rad_analytic_point_disk(a, b), 0},
+                          8 * DBL_EPSILON, sa, sb, 0);
+            }
+        sweep_done(&sc, 8 * DBL_EPSILON, 0);
+    }
+}
+
 /* ---- invalid input ------------------------------------------------------------ */
 
 static void test_invalid(void)
@@ -892,5 +1126,6 @@ int main(void)
     test_disk_disk();
     test_parallel();
     test_perpendicular();
+    test_wide_range();
     return tap_done();
 }
