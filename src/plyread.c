@@ -8,9 +8,12 @@
  * the elements' instances in header order, one per line, their values in
  * property order.  What this reader takes from it is in plyread.h.
  *
- * Robustness: the whole file is read first, so an element count larger
- * than the file could hold is refused before anything is allocated for it;
- * every number must be finite and, for integer types, whole and within the
+ * Robustness: lines come from the line reader the scene parser shares
+ * (readfile.h), one at a time, within its limits on line and file length;
+ * an element count larger than the rest of the input could hold (what is
+ * left of a regular file or of text in memory, else of the file limit) is
+ * refused before anything is allocated for it; outside comment and
+ * obj_info lines only printable ASCII is allowed; every number must be finite and, for integer types, whole and within the
  * type's range; every vertex index must exist; every face must pass the
  * scene file's polygon check.  Errors name the file and line and leave the
  * model empty.
@@ -65,16 +68,8 @@ typedef struct ply_element {
 /* Where each band's radiosity comes from. */
 typedef enum source { SRC_NONE = 0, SRC_RAD, SRC_COLOUR } source;
 
-typedef struct reader {
-    char *buf;
-    size_t len, pos;
-    int line;
-    const char *name;
-    rad_error *err;
-    rad_status status;          /* of a failed next_line */
-    char **tok;
-    int ntok, cap;
-} reader;
+/* The reader's current line is all the parse needs of it. */
+typedef rad_lines reader;
 
 /* Everything the parse builds. */
 typedef struct ply_state {
@@ -102,50 +97,17 @@ static rad_status fail_at(const reader *r, const char *fmt, ...)
 
 /* ---- lines and tokens ----------------------------------------------------- */
 
-static int is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
-
 /* The next line, split into tokens.  1: a line, 0: end of file, -1: error
- * (reported). */
+ * (reported, r->status).  Comments may hold any text; other lines only
+ * printable ASCII. */
 static int next_line(reader *r)
 {
-    if (r->pos >= r->len)
-        return 0;
-    char *s = r->buf + r->pos;
-    char *nl = memchr(s, '\n', r->len - r->pos);
-    size_t n = nl ? (size_t)(nl - s) : r->len - r->pos;
-    r->line++;
-    r->pos += n + (nl ? 1 : 0);
-    if (memchr(s, '\0', n)) {
-        r->status = fail_at(r, "line contains a NUL character");
+    int got = rad_lines_next(r);
+    if (got <= 0 || r->ntok == 0 || strcmp(r->tok[0], "comment") == 0 ||
+        strcmp(r->tok[0], "obj_info") == 0)
+        return got;
+    if ((r->status = rad_lines_ascii(r, 0)) != RAD_OK)
         return -1;
-    }
-    s[n] = '\0'; /* the buffer has a spare byte at the end */
-    r->ntok = 0;
-    for (char *p = s;;) {
-        while (is_space(*p))
-            p++;
-        if (!*p)
-            break;
-        if (r->ntok == r->cap) {
-            int ncap = r->cap ? 2 * r->cap : 64;
-            char **g = realloc(r->tok, sizeof *g * (size_t)ncap);
-            if (!g) {
-                r->status = rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name,
-                                     r->line);
-                return -1;
-            }
-            r->tok = g;
-            r->cap = ncap;
-        }
-        r->tok[r->ntok++] = p;
-        while (*p && !is_space(*p))
-            p++;
-        if (*p)
-            *p++ = '\0';
-    }
     return 1;
 }
 
@@ -477,7 +439,7 @@ static rad_status check_header(reader *r, ply_state *s)
     if (f->count == 0)
         return fail_at(r, "the PLY has no faces to draw");
     /* refuse counts the rest of the file cannot hold before allocating */
-    size_t left = r->len - r->pos;
+    size_t left = rad_lines_left(r);
     for (int k = 0; k < s->nelem; k++) {
         const ply_element *e = &s->elem[k];
         /* at least one byte per value (one per instance without any) */
@@ -719,33 +681,19 @@ static rad_status fill_missing(reader *r, ply_state *s)
     return RAD_OK;
 }
 
-rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
-                         size_t len, const char *name, rad_error *err)
+/* Parse what r reads into *model (and *camera); on failure both empty. */
+static rad_status parse_ply(rad_render_model *model, rad_camera *camera, reader *r)
 {
     ply_state *s = calloc(1, sizeof *s);
-    reader r;
     rad_status st;
     memset(model, 0, sizeof *model);
     if (camera)
         memset(camera, 0, sizeof *camera);
-    memset(&r, 0, sizeof r);
-    r.name = name ? name : "-";
-    r.err = err;
-    r.len = len;
-    r.buf = malloc(len + 1);
-    if (!s || !r.buf) {
-        free(s);
-        free(r.buf);
-        return rad_fail(err, RAD_ERR_NOMEM, "%s: out of memory", r.name);
-    }
-    if (len)
-        memcpy(r.buf, text, len);
-    r.buf[len] = '\0';
-    if (!(st = parse_header(&r, s)) && !(st = check_header(&r, s)) &&
-        !(st = alloc_model(&r, s)) && !(st = read_data(&r, s)) && !(st = check_faces(&r, s)))
-        st = fill_missing(&r, s);
-    free(r.buf);
-    free(r.tok);
+    if (!s)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    if (!(st = parse_header(r, s)) && !(st = check_header(r, s)) &&
+        !(st = alloc_model(r, s)) && !(st = read_data(r, s)) && !(st = check_faces(r, s)))
+        st = fill_missing(r, s);
     free(s->face_line);
     if (st) {
         rad_render_model_free(&s->m);
@@ -758,18 +706,26 @@ rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char
     return st;
 }
 
+rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
+                         size_t len, const char *name, rad_error *err)
+{
+    reader r;
+    rad_lines_mem(&r, text, len, name ? name : "-", '\0', err);
+    rad_status st = parse_ply(model, camera, &r);
+    rad_lines_close(&r);
+    return st;
+}
+
 rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
                         rad_error *err)
 {
+    reader r;
     memset(model, 0, sizeof *model);
     if (camera)
         memset(camera, 0, sizeof *camera);
-    char *text;
-    size_t len;
-    rad_status rs = rad_read_file(path, &text, &len, err);
-    if (rs != RAD_OK)
-        return rs;
-    rad_status st = rad_ply_parse(model, camera, text, len, path, err);
-    free(text);
+    rad_status st = rad_lines_open(&r, path, '\0', err);
+    if (st == RAD_OK)
+        st = parse_ply(model, camera, &r);
+    rad_lines_close(&r);
     return st;
 }
