@@ -81,6 +81,8 @@ typedef struct ply_state {
     rad_render_model m;
     size_t nindex, capindex;
     int *face_line;             /* input line of each face */
+    size_t vcap, fcap;          /* vertices and faces the arrays hold so far */
+    double *vband, *fband;      /* radiosity as read, interleaved: [3 * i + band] */
     rad_camera camera;
 } ply_state;
 
@@ -453,28 +455,91 @@ static rad_status check_header(reader *r, ply_state *s)
     return RAD_OK;
 }
 
+/* The arrays grow with the lines actually read, never ahead of them, so
+ * memory follows the input and not the counts its header claims. */
 static rad_status alloc_model(const reader *r, ply_state *s)
 {
     rad_render_model *m = &s->m;
-    const size_t nv = (size_t)s->elem[s->vertex].count, nf = (size_t)s->elem[s->face].count;
-    m->nvertices = (int)nv;
-    m->nfaces = (int)nf;
-    m->pos = calloc(nv ? nv : 1, sizeof *m->pos);
-    m->vrad = calloc(RAD_BANDS * (nv ? nv : 1), sizeof *m->vrad);
-    m->face_first = calloc(nf + 1, sizeof *m->face_first);
-    m->frad = calloc(RAD_BANDS * nf, sizeof *m->frad);
-    m->face_surface = calloc(nf, sizeof(int));
-    m->face_gi = calloc(nf, sizeof(int));
-    m->face_gj = calloc(nf, sizeof(int));
-    s->face_line = calloc(nf, sizeof(int));
-    s->capindex = 4 * nf;
+    m->nvertices = (int)s->elem[s->vertex].count;
+    m->nfaces = (int)s->elem[s->face].count;
+    m->face_first = calloc(1, sizeof *m->face_first);
+    s->capindex = 1024;
     m->face_index = malloc(sizeof *m->face_index * s->capindex);
-    if (!m->pos || !m->vrad || !m->face_first || !m->frad || !m->face_surface ||
-        !m->face_gi || !m->face_gj || !s->face_line || !m->face_index)
-        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory for %zu vertices and %zu faces",
-                        r->name, nv, nf);
-    for (size_t f = 0; f < nf; f++)
+    if (!m->face_first || !m->face_index)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    return RAD_OK;
+}
+
+static int grow(void *pp, size_t n, size_t size)
+{
+    void **p = pp;
+    void *g = realloc(*p, n * size);
+    if (!g)
+        return -1;
+    *p = g;
+    return 0;
+}
+
+/* Capacity for instance i: doubled, at most the declared count. */
+static size_t next_cap(size_t cap, size_t i, size_t count)
+{
+    size_t n = cap ? 2 * cap : 1024;
+    if (n < i + 1)
+        n = i + 1;
+    return n < count ? n : count;
+}
+
+static rad_status vertex_room(const reader *r, ply_state *s, size_t i)
+{
+    if (i < s->vcap)
+        return RAD_OK;
+    rad_render_model *m = &s->m;
+    size_t n = next_cap(s->vcap, i, (size_t)m->nvertices);
+    if (grow(&m->pos, n, sizeof *m->pos) || grow(&s->vband, RAD_BANDS * n, sizeof(double)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory for %zu vertices",
+                        r->name, r->line, n);
+    memset(m->pos + s->vcap, 0, (n - s->vcap) * sizeof *m->pos);
+    memset(s->vband + RAD_BANDS * s->vcap, 0, RAD_BANDS * (n - s->vcap) * sizeof(double));
+    s->vcap = n;
+    return RAD_OK;
+}
+
+static rad_status face_room(const reader *r, ply_state *s, size_t i)
+{
+    if (i < s->fcap)
+        return RAD_OK;
+    rad_render_model *m = &s->m;
+    size_t n = next_cap(s->fcap, i, (size_t)m->nfaces);
+    if (grow(&m->face_first, n + 1, sizeof(int)) || grow(&m->face_surface, n, sizeof(int)) ||
+        grow(&m->face_gi, n, sizeof(int)) || grow(&m->face_gj, n, sizeof(int)) ||
+        grow(&s->face_line, n, sizeof(int)) || grow(&s->fband, RAD_BANDS * n, sizeof(double)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory for %zu faces", r->name,
+                        r->line, n);
+    for (size_t f = s->fcap; f < n; f++)
         m->face_surface[f] = m->face_gi[f] = m->face_gj[f] = -1;
+    memset(s->fband + RAD_BANDS * s->fcap, 0, RAD_BANDS * (n - s->fcap) * sizeof(double));
+    s->fcap = n;
+    return RAD_OK;
+}
+
+/* Every instance is in: the model's band-major radiosity from what was read. */
+static rad_status finish_model(const reader *r, ply_state *s)
+{
+    rad_render_model *m = &s->m;
+    const size_t nv = (size_t)m->nvertices, nf = (size_t)m->nfaces;
+    if (!m->pos && !(m->pos = calloc(1, sizeof *m->pos)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    m->vrad = calloc(RAD_BANDS * (nv ? nv : 1), sizeof *m->vrad);
+    m->frad = calloc(RAD_BANDS * (nf ? nf : 1), sizeof *m->frad);
+    if (!m->vrad || !m->frad)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory for %zu vertices and %zu "
+                        "faces", r->name, nv, nf);
+    for (int b = 0; b < RAD_BANDS; b++) {
+        for (size_t v = 0; v < nv; v++)
+            m->vrad[v + b * nv] = s->vband[RAD_BANDS * v + b];
+        for (size_t f = 0; f < nf; f++)
+            m->frad[f + b * nf] = s->fband[RAD_BANDS * f + b];
+    }
     return RAD_OK;
 }
 
@@ -492,6 +557,9 @@ static rad_status read_vertex(reader *r, ply_state *s, const ply_element *e, siz
     rad_render_model *m = &s->m;
     int k = 0;
     char what[48];
+    rad_status st0 = vertex_room(r, s, i);
+    if (st0)
+        return st0;
     snprintf(what, sizeof what, "vertex %zu", i);
     for (int j = 0; j < e->nprops; j++) {
         const ply_prop *p = &e->props[j];
@@ -510,7 +578,7 @@ static rad_status read_vertex(reader *r, ply_state *s, const ply_element *e, siz
         case R_Z: m->pos[i].z = v; break;
         case R_RAD:
         case R_COLOUR:
-            m->vrad[i + (size_t)p->band * m->nvertices] = band_value(s->vsrc, v, p->type);
+            s->vband[RAD_BANDS * i + (size_t)p->band] = band_value(s->vsrc, v, p->type);
             break;
         default: break;
         }
@@ -562,6 +630,9 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
     rad_render_model *m = &s->m;
     int k = 0, have_indices = 0;
     char what[48];
+    rad_status st0 = face_room(r, s, i);
+    if (st0)
+        return st0;
     snprintf(what, sizeof what, "face %zu", i);
     m->face_first[i] = (int)s->nindex;
     s->face_line[i] = r->line;
@@ -585,7 +656,7 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
         if (p->role == R_SURFACE)
             m->face_surface[i] = v >= 0 && v <= INT_MAX ? (int)v : -1;
         else if (p->role == R_RAD || p->role == R_COLOUR)
-            m->frad[i + (size_t)p->band * m->nfaces] = band_value(s->fsrc, v, p->type);
+            s->fband[RAD_BANDS * i + (size_t)p->band] = band_value(s->fsrc, v, p->type);
     }
     if (k < r->ntok)
         return fail_at(r, "unexpected '%s' after the %d properties of %s", r->tok[k],
@@ -692,9 +763,12 @@ static rad_status parse_ply(rad_render_model *model, rad_camera *camera, reader 
     if (!s)
         return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
     if (!(st = parse_header(r, s)) && !(st = check_header(r, s)) &&
-        !(st = alloc_model(r, s)) && !(st = read_data(r, s)) && !(st = check_faces(r, s)))
+        !(st = alloc_model(r, s)) && !(st = read_data(r, s)) && !(st = finish_model(r, s)) &&
+        !(st = check_faces(r, s)))
         st = fill_missing(r, s);
     free(s->face_line);
+    free(s->vband);
+    free(s->fband);
     if (st) {
         rad_render_model_free(&s->m);
     } else {
