@@ -207,6 +207,14 @@ static int tokenize(rad_lines *r)
     }
 }
 
+/* Does the input start with a UTF-16 byte order mark (FF FE or FE FF)? */
+static int utf16_start(const rad_lines *r)
+{
+    const unsigned char *t = (const unsigned char *)r->text;
+    return r->line == 1 && r->len >= 2 &&
+           ((t[0] == 0xFF && t[1] == 0xFE) || (t[0] == 0xFE && t[1] == 0xFF));
+}
+
 static int read_error(rad_lines *r)
 {
     return fail_line(r, rad_fail(r->err, RAD_ERR_IO, "%s: %s", r->name,
@@ -244,7 +252,9 @@ int rad_lines_next(rad_lines *r)
             return over_limit(r);
         if (c == '\0')
             return fail_line(r, rad_lines_fail(r, "line contains a NUL character (byte 0x00 "
-                                                  "at column %zu)", r->len + 1));
+                                                  "at column %zu%s)", r->len + 1,
+                                               utf16_start(r) ? "; a UTF-16 file? save it "
+                                                                "as ASCII or UTF-8" : ""));
         if (r->len >= r->line_max)
             return fail_line(r, rad_lines_fail(r, "line longer than %zu bytes (the limit)",
                                                r->line_max));

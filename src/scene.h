@@ -9,7 +9,7 @@
 
 /* What one scene may ask for (radiosity-scene(5) documents them).  A
  * polygon's form factors cost K_a * K_b edge pairs, so two polygons of
- * RAD_POLYGON_MAX vertices cost about 16.8 million pairs, a second or so;
+ * RAD_POLYGON_MAX vertices cost about 16.8 million pairs, about 2 s;
  * a 4096-gon's area is within 4e-7 of its disk's.  RAD_ELEMENTS_MAX keeps
  * every count and index of the mesh in an int, whatever the scene. */
 #define RAD_MESH_MAX 100000         /* largest N or M in `mesh NxM` */
