@@ -251,7 +251,7 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
 
 static size_t name_hash(const char *name)
 {
-    size_t h = 2166136261u; /* FNV-1a */
+    size_t h = 2166136261u; /* FNV-1a, its 32-bit constants */
     for (const unsigned char *p = (const unsigned char *)name; *p; p++)
         h = (h ^ *p) * 16777619u;
     return h;
