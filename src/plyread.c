@@ -8,9 +8,12 @@
  * the elements' instances in header order, one per line, their values in
  * property order.  What this reader takes from it is in plyread.h.
  *
- * Robustness: the whole file is read first, so an element count larger
- * than the file could hold is refused before anything is allocated for it;
- * every number must be finite and, for integer types, whole and within the
+ * Robustness: lines come from the line reader the scene parser shares
+ * (readfile.h), one at a time, within its limits on line and file length;
+ * an element count larger than the rest of the input could hold (what is
+ * left of a regular file or of text in memory, else of the file limit) is
+ * refused before anything is allocated for it; outside comment and
+ * obj_info lines only printable ASCII is allowed; every number must be finite and, for integer types, whole and within the
  * type's range; every vertex index must exist; every face must pass the
  * scene file's polygon check.  Errors name the file and line and leave the
  * model empty.
@@ -65,16 +68,8 @@ typedef struct ply_element {
 /* Where each band's radiosity comes from. */
 typedef enum source { SRC_NONE = 0, SRC_RAD, SRC_COLOUR } source;
 
-typedef struct reader {
-    char *buf;
-    size_t len, pos;
-    int line;
-    const char *name;
-    rad_error *err;
-    rad_status status;          /* of a failed next_line */
-    char **tok;
-    int ntok, cap;
-} reader;
+/* The reader's current line is all the parse needs of it. */
+typedef rad_lines reader;
 
 /* Everything the parse builds. */
 typedef struct ply_state {
@@ -86,6 +81,8 @@ typedef struct ply_state {
     rad_render_model m;
     size_t nindex, capindex;
     int *face_line;             /* input line of each face */
+    size_t vcap, fcap;          /* vertices and faces the arrays hold so far */
+    double *vband, *fband;      /* radiosity as read, interleaved: [3 * i + band] */
     rad_camera camera;
 } ply_state;
 
@@ -102,50 +99,17 @@ static rad_status fail_at(const reader *r, const char *fmt, ...)
 
 /* ---- lines and tokens ----------------------------------------------------- */
 
-static int is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
-
 /* The next line, split into tokens.  1: a line, 0: end of file, -1: error
- * (reported). */
+ * (reported, r->status).  Comments may hold any text; other lines only
+ * printable ASCII. */
 static int next_line(reader *r)
 {
-    if (r->pos >= r->len)
-        return 0;
-    char *s = r->buf + r->pos;
-    char *nl = memchr(s, '\n', r->len - r->pos);
-    size_t n = nl ? (size_t)(nl - s) : r->len - r->pos;
-    r->line++;
-    r->pos += n + (nl ? 1 : 0);
-    if (memchr(s, '\0', n)) {
-        r->status = fail_at(r, "line contains a NUL character");
+    int got = rad_lines_next(r);
+    if (got <= 0 || r->ntok == 0 || strcmp(r->tok[0], "comment") == 0 ||
+        strcmp(r->tok[0], "obj_info") == 0)
+        return got;
+    if ((r->status = rad_lines_ascii(r, 0)) != RAD_OK)
         return -1;
-    }
-    s[n] = '\0'; /* the buffer has a spare byte at the end */
-    r->ntok = 0;
-    for (char *p = s;;) {
-        while (is_space(*p))
-            p++;
-        if (!*p)
-            break;
-        if (r->ntok == r->cap) {
-            int ncap = r->cap ? 2 * r->cap : 64;
-            char **g = realloc(r->tok, sizeof *g * (size_t)ncap);
-            if (!g) {
-                r->status = rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name,
-                                     r->line);
-                return -1;
-            }
-            r->tok = g;
-            r->cap = ncap;
-        }
-        r->tok[r->ntok++] = p;
-        while (*p && !is_space(*p))
-            p++;
-        if (*p)
-            *p++ = '\0';
-    }
     return 1;
 }
 
@@ -477,7 +441,7 @@ static rad_status check_header(reader *r, ply_state *s)
     if (f->count == 0)
         return fail_at(r, "the PLY has no faces to draw");
     /* refuse counts the rest of the file cannot hold before allocating */
-    size_t left = r->len - r->pos;
+    size_t left = rad_lines_left(r);
     for (int k = 0; k < s->nelem; k++) {
         const ply_element *e = &s->elem[k];
         /* at least one byte per value (one per instance without any) */
@@ -491,28 +455,91 @@ static rad_status check_header(reader *r, ply_state *s)
     return RAD_OK;
 }
 
+/* The arrays grow with the lines actually read, never ahead of them, so
+ * memory follows the input and not the counts its header claims. */
 static rad_status alloc_model(const reader *r, ply_state *s)
 {
     rad_render_model *m = &s->m;
-    const size_t nv = (size_t)s->elem[s->vertex].count, nf = (size_t)s->elem[s->face].count;
-    m->nvertices = (int)nv;
-    m->nfaces = (int)nf;
-    m->pos = calloc(nv ? nv : 1, sizeof *m->pos);
-    m->vrad = calloc(RAD_BANDS * (nv ? nv : 1), sizeof *m->vrad);
-    m->face_first = calloc(nf + 1, sizeof *m->face_first);
-    m->frad = calloc(RAD_BANDS * nf, sizeof *m->frad);
-    m->face_surface = calloc(nf, sizeof(int));
-    m->face_gi = calloc(nf, sizeof(int));
-    m->face_gj = calloc(nf, sizeof(int));
-    s->face_line = calloc(nf, sizeof(int));
-    s->capindex = 4 * nf;
+    m->nvertices = (int)s->elem[s->vertex].count;
+    m->nfaces = (int)s->elem[s->face].count;
+    m->face_first = calloc(1, sizeof *m->face_first);
+    s->capindex = 1024;
     m->face_index = malloc(sizeof *m->face_index * s->capindex);
-    if (!m->pos || !m->vrad || !m->face_first || !m->frad || !m->face_surface ||
-        !m->face_gi || !m->face_gj || !s->face_line || !m->face_index)
-        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory for %zu vertices and %zu faces",
-                        r->name, nv, nf);
-    for (size_t f = 0; f < nf; f++)
+    if (!m->face_first || !m->face_index)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    return RAD_OK;
+}
+
+static int grow(void *pp, size_t n, size_t size)
+{
+    void **p = pp;
+    void *g = realloc(*p, n * size);
+    if (!g)
+        return -1;
+    *p = g;
+    return 0;
+}
+
+/* Capacity for instance i: doubled, at most the declared count. */
+static size_t next_cap(size_t cap, size_t i, size_t count)
+{
+    size_t n = cap ? 2 * cap : 1024;
+    if (n < i + 1)
+        n = i + 1;
+    return n < count ? n : count;
+}
+
+static rad_status vertex_room(const reader *r, ply_state *s, size_t i)
+{
+    if (i < s->vcap)
+        return RAD_OK;
+    rad_render_model *m = &s->m;
+    size_t n = next_cap(s->vcap, i, (size_t)m->nvertices);
+    if (grow(&m->pos, n, sizeof *m->pos) || grow(&s->vband, RAD_BANDS * n, sizeof(double)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory for %zu vertices",
+                        r->name, r->line, n);
+    memset(m->pos + s->vcap, 0, (n - s->vcap) * sizeof *m->pos);
+    memset(s->vband + RAD_BANDS * s->vcap, 0, RAD_BANDS * (n - s->vcap) * sizeof(double));
+    s->vcap = n;
+    return RAD_OK;
+}
+
+static rad_status face_room(const reader *r, ply_state *s, size_t i)
+{
+    if (i < s->fcap)
+        return RAD_OK;
+    rad_render_model *m = &s->m;
+    size_t n = next_cap(s->fcap, i, (size_t)m->nfaces);
+    if (grow(&m->face_first, n + 1, sizeof(int)) || grow(&m->face_surface, n, sizeof(int)) ||
+        grow(&m->face_gi, n, sizeof(int)) || grow(&m->face_gj, n, sizeof(int)) ||
+        grow(&s->face_line, n, sizeof(int)) || grow(&s->fband, RAD_BANDS * n, sizeof(double)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory for %zu faces", r->name,
+                        r->line, n);
+    for (size_t f = s->fcap; f < n; f++)
         m->face_surface[f] = m->face_gi[f] = m->face_gj[f] = -1;
+    memset(s->fband + RAD_BANDS * s->fcap, 0, RAD_BANDS * (n - s->fcap) * sizeof(double));
+    s->fcap = n;
+    return RAD_OK;
+}
+
+/* Every instance is in: the model's band-major radiosity from what was read. */
+static rad_status finish_model(const reader *r, ply_state *s)
+{
+    rad_render_model *m = &s->m;
+    const size_t nv = (size_t)m->nvertices, nf = (size_t)m->nfaces;
+    if (!m->pos && !(m->pos = calloc(1, sizeof *m->pos)))
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    m->vrad = calloc(RAD_BANDS * (nv ? nv : 1), sizeof *m->vrad);
+    m->frad = calloc(RAD_BANDS * (nf ? nf : 1), sizeof *m->frad);
+    if (!m->vrad || !m->frad)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory for %zu vertices and %zu "
+                        "faces", r->name, nv, nf);
+    for (int b = 0; b < RAD_BANDS; b++) {
+        for (size_t v = 0; v < nv; v++)
+            m->vrad[v + b * nv] = s->vband[RAD_BANDS * v + b];
+        for (size_t f = 0; f < nf; f++)
+            m->frad[f + b * nf] = s->fband[RAD_BANDS * f + b];
+    }
     return RAD_OK;
 }
 
@@ -530,6 +557,9 @@ static rad_status read_vertex(reader *r, ply_state *s, const ply_element *e, siz
     rad_render_model *m = &s->m;
     int k = 0;
     char what[48];
+    rad_status st0 = vertex_room(r, s, i);
+    if (st0)
+        return st0;
     snprintf(what, sizeof what, "vertex %zu", i);
     for (int j = 0; j < e->nprops; j++) {
         const ply_prop *p = &e->props[j];
@@ -548,7 +578,7 @@ static rad_status read_vertex(reader *r, ply_state *s, const ply_element *e, siz
         case R_Z: m->pos[i].z = v; break;
         case R_RAD:
         case R_COLOUR:
-            m->vrad[i + (size_t)p->band * m->nvertices] = band_value(s->vsrc, v, p->type);
+            s->vband[RAD_BANDS * i + (size_t)p->band] = band_value(s->vsrc, v, p->type);
             break;
         default: break;
         }
@@ -600,6 +630,9 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
     rad_render_model *m = &s->m;
     int k = 0, have_indices = 0;
     char what[48];
+    rad_status st0 = face_room(r, s, i);
+    if (st0)
+        return st0;
     snprintf(what, sizeof what, "face %zu", i);
     m->face_first[i] = (int)s->nindex;
     s->face_line[i] = r->line;
@@ -623,7 +656,7 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
         if (p->role == R_SURFACE)
             m->face_surface[i] = v >= 0 && v <= INT_MAX ? (int)v : -1;
         else if (p->role == R_RAD || p->role == R_COLOUR)
-            m->frad[i + (size_t)p->band * m->nfaces] = band_value(s->fsrc, v, p->type);
+            s->fband[RAD_BANDS * i + (size_t)p->band] = band_value(s->fsrc, v, p->type);
     }
     if (k < r->ntok)
         return fail_at(r, "unexpected '%s' after the %d properties of %s", r->tok[k],
@@ -719,34 +752,23 @@ static rad_status fill_missing(reader *r, ply_state *s)
     return RAD_OK;
 }
 
-rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
-                         size_t len, const char *name, rad_error *err)
+/* Parse what r reads into *model (and *camera); on failure both empty. */
+static rad_status parse_ply(rad_render_model *model, rad_camera *camera, reader *r)
 {
     ply_state *s = calloc(1, sizeof *s);
-    reader r;
     rad_status st;
     memset(model, 0, sizeof *model);
     if (camera)
         memset(camera, 0, sizeof *camera);
-    memset(&r, 0, sizeof r);
-    r.name = name ? name : "-";
-    r.err = err;
-    r.len = len;
-    r.buf = malloc(len + 1);
-    if (!s || !r.buf) {
-        free(s);
-        free(r.buf);
-        return rad_fail(err, RAD_ERR_NOMEM, "%s: out of memory", r.name);
-    }
-    if (len)
-        memcpy(r.buf, text, len);
-    r.buf[len] = '\0';
-    if (!(st = parse_header(&r, s)) && !(st = check_header(&r, s)) &&
-        !(st = alloc_model(&r, s)) && !(st = read_data(&r, s)) && !(st = check_faces(&r, s)))
-        st = fill_missing(&r, s);
-    free(r.buf);
-    free(r.tok);
+    if (!s)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "%s: out of memory", r->name);
+    if (!(st = parse_header(r, s)) && !(st = check_header(r, s)) &&
+        !(st = alloc_model(r, s)) && !(st = read_data(r, s)) && !(st = finish_model(r, s)) &&
+        !(st = check_faces(r, s)))
+        st = fill_missing(r, s);
     free(s->face_line);
+    free(s->vband);
+    free(s->fband);
     if (st) {
         rad_render_model_free(&s->m);
     } else {
@@ -758,18 +780,26 @@ rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char
     return st;
 }
 
+rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
+                         size_t len, const char *name, rad_error *err)
+{
+    reader r;
+    rad_lines_mem(&r, text, len, name ? name : "-", '\0', err);
+    rad_status st = parse_ply(model, camera, &r);
+    rad_lines_close(&r);
+    return st;
+}
+
 rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
                         rad_error *err)
 {
+    reader r;
     memset(model, 0, sizeof *model);
     if (camera)
         memset(camera, 0, sizeof *camera);
-    char *text;
-    size_t len;
-    rad_status rs = rad_read_file(path, &text, &len, err);
-    if (rs != RAD_OK)
-        return rs;
-    rad_status st = rad_ply_parse(model, camera, text, len, path, err);
-    free(text);
+    rad_status st = rad_lines_open(&r, path, '\0', err);
+    if (st == RAD_OK)
+        st = parse_ply(model, camera, &r);
+    rad_lines_close(&r);
     return st;
 }

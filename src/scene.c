@@ -7,6 +7,17 @@
  * syntax.  Every error is reported as "FILE:LINE: what is wrong" and leaves
  * the scene empty; nothing is half-built.
  *
+ * Input is read as a stream, one line at a time, through the line reader
+ * the PLY reader shares (readfile.h): a line is parsed as soon as it has
+ * been read, so the first error is reported at once, and the reader's
+ * limits (a line of RAD_LINE_MAX bytes, a file of RAD_FILE_MAX) bound the
+ * memory whatever the input.  Outside comments only printable ASCII is
+ * allowed, and the reader names the first other byte.  What a scene may
+ * ask for is bounded too (scene.h): RAD_POLYGON_MAX vertices per polygon
+ * or disk, RAD_MESH_MAX parts per edge, RAD_ELEMENTS_MAX elements per
+ * surface and per scene.  Materials are found by a hash of their names, so
+ * the parse takes time linear in the input.
+ *
  * Geometric tolerances, stated once (D is the polygon's bounding-box
  * diagonal, so they scale with the polygon and not with where it sits):
  *   - planar:   every vertex within RAD_PLANAR_TOL * D of the mean plane;
@@ -44,6 +55,15 @@ typedef struct line_ctx {
     int ntok;
     rad_error *err;
 } line_ctx;
+
+/* The scene being built, with what the parse needs beside it. */
+typedef struct parse_state {
+    rad_scene s;
+    int *slot;                  /* material name hash: index + 1, 0 empty */
+    size_t nslot;               /* a power of two, at least 2 * nmaterials */
+    int matcap, surfcap;        /* allocated materials and surfaces */
+    double elements;            /* in the surfaces so far */
+} parse_state;
 
 static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
@@ -103,6 +123,15 @@ static int is_number(const char *t)
     char *end;
     (void)strtod(t, &end);
     return end != t && *end == '\0';
+}
+
+/* Does t start like a number ("0.5abc", "1,5"), so that a message should
+ * say it is not one rather than that it is an unexpected word? */
+static int looks_numeric(const char *t)
+{
+    char *end;
+    (void)strtod(t, &end);
+    return end != t;
 }
 
 /* ---- polygon validation ------------------------------------------------- */
@@ -220,12 +249,52 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
 
 /* ---- statements --------------------------------------------------------- */
 
-static int find_material(const rad_scene *s, const char *name)
+static size_t name_hash(const char *name)
 {
-    for (int k = 0; k < s->nmaterials; k++)
-        if (strcmp(s->materials[k].name, name) == 0)
-            return k;
-    return -1;
+    size_t h = 2166136261u; /* FNV-1a, its 32-bit constants */
+    for (const unsigned char *p = (const unsigned char *)name; *p; p++)
+        h = (h ^ *p) * 16777619u;
+    return h;
+}
+
+/* The slot of `name` in the hash: where it is, or the empty one where it
+ * would go. */
+static size_t material_slot(const parse_state *p, const char *name)
+{
+    size_t k = name_hash(name) & (p->nslot - 1);
+    while (p->slot[k] && strcmp(p->s.materials[p->slot[k] - 1].name, name) != 0)
+        k = (k + 1) & (p->nslot - 1);
+    return k;
+}
+
+static int find_material(const parse_state *p, const char *name)
+{
+    return p->nslot ? p->slot[material_slot(p, name)] - 1 : -1;
+}
+
+/* Room for one more material, in the array and in the hash. */
+static int reserve_material(parse_state *p)
+{
+    if (p->s.nmaterials == p->matcap) {
+        int ncap = p->matcap ? 2 * p->matcap : 16;
+        rad_material *g = realloc(p->s.materials, sizeof *g * (size_t)ncap);
+        if (!g)
+            return -1;
+        p->s.materials = g;
+        p->matcap = ncap;
+    }
+    if (2 * (size_t)(p->s.nmaterials + 1) > p->nslot) {
+        size_t n = p->nslot ? 2 * p->nslot : 64;
+        int *old = p->slot, *g = calloc(n, sizeof *g);
+        if (!g)
+            return -1;
+        p->slot = g;
+        p->nslot = n;
+        for (int k = 0; k < p->s.nmaterials; k++)
+            p->slot[material_slot(p, p->s.materials[k].name)] = k + 1;
+        free(old);
+    }
+    return 0;
 }
 
 /* One or three band values starting at token *k; advances *k. */
@@ -235,6 +304,13 @@ static rad_status get_bands(const line_ctx *c, int *k, const char *what, double 
     int count = 0;
     while (*k + count < c->ntok && count < 4 && is_number(c->tok[*k + count]))
         count++;
+    if (count < RAD_BANDS && *k + count < c->ntok && looks_numeric(c->tok[*k + count]))
+        return fail_at(c, "'%s' is not a number (%s)", c->tok[*k + count], what);
+    if (count == 0 && *k < c->ntok)
+        return fail_at(c, "%s needs 1 value (grey) or 3 (R G B), found '%s'", what,
+                       c->tok[*k]);
+    if (count == 0)
+        return fail_at(c, "%s needs 1 value (grey) or 3 (R G B)", what);
     if (count != 1 && count != RAD_BANDS)
         return fail_at(c, "%s takes 1 value (grey) or 3 (R G B), not %d", what, count);
     for (int b = 0; b < count; b++) {
@@ -254,8 +330,9 @@ static rad_status get_bands(const line_ctx *c, int *k, const char *what, double 
     return RAD_OK;
 }
 
-static rad_status parse_material(rad_scene *s, const line_ctx *c)
+static rad_status parse_material(parse_state *p, const line_ctx *c)
 {
+    rad_scene *s = &p->s;
     rad_material m;
     int k = 2, have_reflect = 0, have_emit = 0;
     rad_status st;
@@ -266,7 +343,7 @@ static rad_status parse_material(rad_scene *s, const line_ctx *c)
         return fail_at(c, "material name is longer than %d characters", RAD_NAME_MAX - 1);
     if (is_number(c->tok[1]))
         return fail_at(c, "material name '%s' looks like a number", c->tok[1]);
-    int prev = find_material(s, c->tok[1]);
+    int prev = find_material(p, c->tok[1]);
     if (prev >= 0)
         return fail_at(c, "material '%s' is already defined (line %d)", c->tok[1],
                        s->materials[prev].line);
@@ -290,24 +367,43 @@ static rad_status parse_material(rad_scene *s, const line_ctx *c)
     if (!have_reflect)
         return fail_at(c, "material '%s' has no reflect values", m.name);
     m.line = c->line;
-    rad_material *grown = realloc(s->materials, sizeof *grown * (size_t)(s->nmaterials + 1));
-    if (!grown)
+    if (reserve_material(p))
         return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
-    s->materials = grown;
-    s->materials[s->nmaterials++] = m;
+    s->materials[s->nmaterials] = m;
+    p->slot[material_slot(p, m.name)] = ++s->nmaterials;
+    return RAD_OK;
+}
+
+/* Count a surface's elements against the scene's limit. */
+static rad_status count_elements(parse_state *p, const line_ctx *c, double n)
+{
+    if (p->elements + n > RAD_ELEMENTS_MAX)
+        return fail_at(c, "the scene would have %.0f elements; at most %d are allowed",
+                       p->elements + n, RAD_ELEMENTS_MAX);
+    p->elements += n;
     return RAD_OK;
 }
 
 /* Append a surface that owns `verts` (freed here on failure). */
-static rad_status add_surface(rad_scene *s, const line_ctx *c, rad_surface_kind kind,
+static rad_status add_surface(parse_state *p, const line_ctx *c, rad_surface_kind kind,
                               int material, rad_vec3 *verts, int n, int mn, int mm)
 {
-    rad_surface *grown = realloc(s->surfaces, sizeof *grown * (size_t)(s->nsurfaces + 1));
-    if (!grown) {
+    rad_scene *s = &p->s;
+    rad_status st = count_elements(p, c, (double)mn * mm);
+    if (st) {
         free(verts);
-        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+        return st;
     }
-    s->surfaces = grown;
+    if (s->nsurfaces == p->surfcap) {
+        int ncap = p->surfcap ? 2 * p->surfcap : 16;
+        rad_surface *grown = realloc(s->surfaces, sizeof *grown * (size_t)ncap);
+        if (!grown) {
+            free(verts);
+            return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
+        }
+        s->surfaces = grown;
+        p->surfcap = ncap;
+    }
     rad_surface *f = &s->surfaces[s->nsurfaces++];
     f->kind = kind;
     f->material = material;
@@ -319,11 +415,11 @@ static rad_status add_surface(rad_scene *s, const line_ctx *c, rad_surface_kind 
     return RAD_OK;
 }
 
-static rad_status get_material_ref(const rad_scene *s, const line_ctx *c, int *out)
+static rad_status get_material_ref(const parse_state *p, const line_ctx *c, int *out)
 {
     if (c->ntok < 2)
         return fail_at(c, "%s needs a material", c->tok[0]);
-    *out = find_material(s, c->tok[1]);
+    *out = find_material(p, c->tok[1]);
     if (*out < 0)
         return fail_at(c, "undefined material '%s'", c->tok[1]);
     return RAD_OK;
@@ -343,6 +439,9 @@ static rad_status parse_mesh_spec(const line_ctx *c, const char *t, int *n, int 
         goto bad;
     if (*t == '+' || *t2 == '+' || *t2 == ' ')
         goto bad;
+    if ((double)a * (double)b > RAD_ELEMENTS_MAX)
+        return fail_at(c, "mesh %s has %.0f elements; at most %d per surface", t,
+                       (double)a * (double)b, RAD_ELEMENTS_MAX);
     *n = (int)a;
     *m = (int)b;
     return RAD_OK;
@@ -351,12 +450,12 @@ bad:
                    RAD_MESH_MAX, t);
 }
 
-static rad_status parse_quad(rad_scene *s, const line_ctx *c)
+static rad_status parse_quad(parse_state *p, const line_ctx *c)
 {
     int mat, mn = 1, mm = 1;
     rad_status st;
     rad_vec3 v[4];
-    if ((st = get_material_ref(s, c, &mat)))
+    if ((st = get_material_ref(p, c, &mat)))
         return st;
     for (int k = 0; k < 4; k++) {
         char what[32];
@@ -380,14 +479,14 @@ static rad_status parse_quad(rad_scene *s, const line_ctx *c)
     if (!verts)
         return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
     memcpy(verts, v, sizeof v);
-    return add_surface(s, c, RAD_SURFACE_QUAD, mat, verts, 4, mn, mm);
+    return add_surface(p, c, RAD_SURFACE_QUAD, mat, verts, 4, mn, mm);
 }
 
-static rad_status parse_polygon(rad_scene *s, const line_ctx *c)
+static rad_status parse_polygon(parse_state *p, const line_ctx *c)
 {
     int mat, n;
     rad_status st;
-    if ((st = get_material_ref(s, c, &mat)) ||
+    if ((st = get_material_ref(p, c, &mat)) ||
         (st = get_int(c, 2, "polygon vertex count", 3, RAD_POLYGON_MAX, &n)))
         return st;
     if (c->ntok != 3 + 3 * n) {
@@ -412,18 +511,18 @@ static rad_status parse_polygon(rad_scene *s, const line_ctx *c)
         free(v);
         return st;
     }
-    return add_surface(s, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
+    return add_surface(p, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
 }
 
 /* disk MATERIAL CX CY CZ NX NY NZ R K: the regular K-gon inscribed in the
  * disk, counter-clockwise about the normal N. */
-static rad_status parse_disk(rad_scene *s, const line_ctx *c)
+static rad_status parse_disk(parse_state *p, const line_ctx *c)
 {
     int mat, n;
     double r;
     rad_vec3 ctr, nrm;
     rad_status st;
-    if ((st = get_material_ref(s, c, &mat)) || (st = get_vec(c, 2, "centre", &ctr)) ||
+    if ((st = get_material_ref(p, c, &mat)) || (st = get_vec(c, 2, "centre", &ctr)) ||
         (st = get_vec(c, 5, "normal", &nrm)) || (st = get_number(c, 8, "radius", &r)) ||
         (st = get_int(c, 9, "disk vertex count", 3, RAD_POLYGON_MAX, &n)))
         return st;
@@ -453,11 +552,12 @@ static rad_status parse_disk(rad_scene *s, const line_ctx *c)
         free(v);
         return st;
     }
-    return add_surface(s, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
+    return add_surface(p, c, RAD_SURFACE_POLYGON, mat, v, n, 1, 1);
 }
 
-static rad_status parse_camera(rad_scene *s, const line_ctx *c)
+static rad_status parse_camera(parse_state *p, const line_ctx *c)
 {
+    rad_scene *s = &p->s;
     static const char *const kw[4] = {"eye", "at", "up", "fov"};
     rad_camera cam;
     rad_status st;
@@ -491,124 +591,76 @@ static rad_status parse_camera(rad_scene *s, const line_ctx *c)
 
 /* ---- lines and files ---------------------------------------------------- */
 
-/* Split `buf` in place into white-space separated tokens, up to `#`. */
-static int tokenize(char *buf, char ***tok, int *cap)
-{
-    int n = 0;
-    char *p = buf;
-    char *hash = strchr(buf, '#');
-    if (hash)
-        *hash = '\0';
-    for (;;) {
-        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\f' || *p == '\v')
-            p++;
-        if (!*p)
-            break;
-        if (n == *cap) {
-            int ncap = *cap ? 2 * *cap : 32;
-            char **g = realloc(*tok, sizeof *g * (size_t)ncap);
-            if (!g)
-                return -1;
-            *tok = g;
-            *cap = ncap;
-        }
-        (*tok)[n++] = p;
-        while (*p && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\f' && *p != '\v')
-            p++;
-        if (*p)
-            *p++ = '\0';
-    }
-    return n;
-}
-
-static rad_status parse_statement(rad_scene *s, const line_ctx *c)
+static rad_status parse_statement(parse_state *p, const line_ctx *c)
 {
     const char *k = c->tok[0];
     if (strcmp(k, "material") == 0)
-        return parse_material(s, c);
+        return parse_material(p, c);
     if (strcmp(k, "quad") == 0)
-        return parse_quad(s, c);
+        return parse_quad(p, c);
     if (strcmp(k, "polygon") == 0)
-        return parse_polygon(s, c);
+        return parse_polygon(p, c);
     if (strcmp(k, "disk") == 0)
-        return parse_disk(s, c);
+        return parse_disk(p, c);
     if (strcmp(k, "camera") == 0)
-        return parse_camera(s, c);
+        return parse_camera(p, c);
     return fail_at(c, "unknown keyword '%s' (expected material, quad, polygon, disk or camera)",
                    k);
+}
+
+/* Parse every line r gives into *scene; on failure leave it empty. */
+static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
+{
+    parse_state p;
+    rad_status st = RAD_OK;
+    int got;
+
+    memset(&p, 0, sizeof p);
+    memset(scene, 0, sizeof *scene);
+    p.s.filename = strdup(name);
+    if (!p.s.filename)
+        return rad_fail(r->err, RAD_ERR_NOMEM, "out of memory");
+    while (st == RAD_OK && (got = rad_lines_next(r)) != 0) {
+        if (got < 0) {
+            st = r->status;
+            break;
+        }
+        if (r->ntok == 0)
+            continue;
+        line_ctx c = {p.s.filename, r->line, r->tok, r->ntok, r->err};
+        if (!(st = rad_lines_ascii(r, 0)))
+            st = parse_statement(&p, &c);
+    }
+    if (st == RAD_OK && p.s.nsurfaces == 0)
+        st = rad_lines_fail(r, "the scene has no surfaces (quad, polygon or disk)");
+    free(p.slot);
+    if (st != RAD_OK) {
+        rad_scene_free(&p.s);
+        return st;
+    }
+    *scene = p.s;
+    return RAD_OK;
 }
 
 rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err)
 {
-    rad_scene s;
-    char *buf = NULL, **tok = NULL;
-    int cap = 0, line = 0;
-    size_t bufcap = 0, pos = 0;
-    rad_status st = RAD_OK;
-
-    memset(&s, 0, sizeof s);
-    memset(scene, 0, sizeof *scene);
-    s.filename = strdup(name ? name : "-");
-    if (!s.filename)
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    while (pos < len && st == RAD_OK) {
-        size_t end = pos;
-        while (end < len && text[end] != '\n')
-            end++;
-        line++;
-        if (end - pos + 1 > bufcap) {
-            bufcap = end - pos + 1;
-            char *g = realloc(buf, bufcap);
-            if (!g) {
-                st = rad_fail(err, RAD_ERR_NOMEM, "%s:%d: out of memory", s.filename, line);
-                break;
-            }
-            buf = g;
-        }
-        memcpy(buf, text + pos, end - pos);
-        buf[end - pos] = '\0';
-        line_ctx c = {s.filename, line, NULL, 0, err};
-        if (memchr(text + pos, '\0', end - pos)) {
-            st = fail_at(&c, "line contains a NUL character");
-            break;
-        }
-        pos = end + 1;
-        int n = tokenize(buf, &tok, &cap);
-        if (n < 0) {
-            st = rad_fail(err, RAD_ERR_NOMEM, "%s:%d: out of memory", s.filename, line);
-            break;
-        }
-        if (n == 0)
-            continue;
-        c.tok = tok;
-        c.ntok = n;
-        st = parse_statement(&s, &c);
-    }
-    if (st == RAD_OK && s.nsurfaces == 0) {
-        line_ctx c = {s.filename, line > 0 ? line : 1, NULL, 0, err};
-        st = fail_at(&c, "the scene has no surfaces (quad, polygon or disk)");
-    }
-    free(buf);
-    free(tok);
-    if (st != RAD_OK) {
-        rad_scene_free(&s);
-        return st;
-    }
-    *scene = s;
-    return RAD_OK;
+    rad_lines r;
+    name = name ? name : "-";
+    rad_lines_mem(&r, text, len, name, '#', err);
+    rad_status st = parse_lines(scene, &r, name);
+    rad_lines_close(&r);
+    return st;
 }
 
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
+    rad_lines r;
     memset(scene, 0, sizeof *scene);
-    char *text;
-    size_t len;
-    rad_status rs = rad_read_file(path, &text, &len, err);
-    if (rs != RAD_OK)
-        return rs;
-    rad_status st = rad_scene_parse(scene, text, len, path, err);
-    free(text);
+    rad_status st = rad_lines_open(&r, path, '#', err);
+    if (st == RAD_OK)
+        st = parse_lines(scene, &r, path);
+    rad_lines_close(&r);
     return st;
 }
 

@@ -13,6 +13,8 @@
 #include <string.h>
 
 #include "radiosity.h"
+#include "readfile.h"
+#include "scene.h"
 #include "tap.h"
 
 static const char *M = "material w reflect 0.5\n";
@@ -84,8 +86,167 @@ static void valid(void)
     rad_scene_free(&s);
 }
 
+/* Parse text of length len; the status, the message, the surfaces. */
+static rad_status parse_n(const char *text, size_t len, rad_error *err, int *nsurf)
+{
+    rad_scene s;
+    memset(err, 0, sizeof *err);
+    rad_status st = rad_scene_parse(&s, text, len, "t.scene", err);
+    *nsurf = s.nsurfaces;
+    rad_scene_free(&s);
+    return st;
+}
+
+static const char *QUAD2 = "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n";
+
+/* Line ends, a byte order mark, bytes outside ASCII (issue 14, item 11). */
+static void encodings(void)
+{
+    char buf[512];
+    rad_error err;
+    int n;
+    snprintf(buf, sizeof buf, "\xEF\xBB\xBF%s%s", M, QUAD2);
+    tap_ok(parse_n(buf, strlen(buf), &err, &n) == RAD_OK && n == 1,
+           "a UTF-8 byte order mark at the start is skipped (%s)", err.message);
+    bad("\xEF\xBB\xBFmaterial w reflect 0.5\nfrob\n", 2, "unknown keyword 'frob'");
+    bad("material w reflect 0.5\n\xEF\xBB\xBFquad\n", 2, "non-ASCII character (byte 0xEF");
+    const char *crlf = "material w reflect 0.5\r\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\r\n";
+    tap_ok(parse_n(crlf, strlen(crlf), &err, &n) == RAD_OK && n == 1, "CR LF line ends (%s)",
+           err.message);
+    const char *cr = "material w reflect 0.5\rquad w 0 0 0  1 0 0  1 1 0  0 1 0\r"
+                     "quad w 0 0 1  0 1 1  1 1 1  1 0 1";
+    tap_ok(parse_n(cr, strlen(cr), &err, &n) == RAD_OK && n == 2,
+           "CR-only (old Mac OS) line ends (%s)", err.message);
+    bad("material w reflect 0.5\r\rfrob\r", 3, "unknown keyword 'frob'");
+    bad("material w reflect 0.5\r\n\r\nfrob\r\n", 3, "unknown keyword 'frob'");
+    bad("material w reflect 0.5\n\r\r\nfrob\n", 4, "unknown keyword 'frob'");
+    bad_m("quad w 0 0 0\xC2\xA0 1 0 0  1 1 0  0 1 0",
+          "non-ASCII character (byte 0xC2 at column 13, a UTF-8 no-break space U+00A0?)");
+    bad("material caf\xC3\xA9 reflect 0.5\n", 1, "non-ASCII character (byte 0xC3 at column 13)");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 \x1B[31m0", "control character (byte 0x1B");
+    snprintf(buf, sizeof buf, "%s# caf\xC3\xA9 \xC2\xA0 \x1B comment\n%s", M, QUAD2);
+    tap_ok(parse_n(buf, strlen(buf), &err, &n) == RAD_OK && n == 1,
+           "comments may hold any byte but NUL (%s)", err.message);
+    static const char nul[] = "material w reflect 0.5\n\n\0";
+    tap_ok(parse_n(nul, sizeof nul - 1, &err, &n) == RAD_ERR_PARSE &&
+               strcmp(err.message, "t.scene:3: line contains a NUL character (byte 0x00 at "
+                                   "column 1)") == 0,
+           "a NUL byte is named with its line and column (%s)", err.message);
+}
+
+/* Values that are not numbers, and the scene's size limits. */
+static void values_and_limits(void)
+{
+    bad("material w reflect 0.5abc\n", 1, "'0.5abc' is not a number (reflectance)");
+    bad("material w reflect 0.5 0.5 0.5x\n", 1, "'0.5x' is not a number (reflectance)");
+    bad("material w reflect 0.5 emit 1,5\n", 1, "'1,5' is not a number (emission)");
+    bad("material w reflect\n", 1, "reflectance needs 1 value (grey) or 3");
+    bad("material w reflect emit 1\n", 1, "reflectance needs 1 value (grey) or 3 (R G B), found 'emit'");
+    bad("material w reflect 0.5 shiny\n", 1, "unexpected 'shiny'");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 100000x100000",
+          "mesh 100000x100000 has 10000000000 elements; at most 100000000 per surface");
+    bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 100001x1", "mesh must be NxM");
+    {
+        char buf[512];
+        snprintf(buf, sizeof buf, "%squad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 10000x10000\n"
+                                  "polygon w 3  0 0 1  1 0 1  0 1 1\n", M);
+        bad(buf, 3, "the scene would have 100000001 elements; at most 100000000");
+        rad_error err;
+        int n;
+        snprintf(buf, sizeof buf, "%squad w 0 0 0  1 0 0  1 1 0  0 1 0 mesh 10000x10000\n", M);
+        tap_ok(parse_n(buf, strlen(buf), &err, &n) == RAD_OK && n == 1,
+               "exactly %d elements are allowed (%s)", RAD_ELEMENTS_MAX, err.message);
+    }
+    bad_m("polygon w 4097 0 0 0", "polygon vertex count must be from 3 to 4096");
+    bad_m("disk w 0 0 0  0 0 1  1 65536", "disk vertex count must be from 3 to 4096");
+}
+
+/* The line reader's limits, lowered so the tests stay small. */
+static void reader_limits(void)
+{
+    rad_lines r;
+    rad_error err;
+    const char text[] = "ab\ncdefg\nh\n";
+    rad_lines_mem(&r, text, sizeof text - 1, "t", '#', &err);
+    r.line_max = 4;
+    int a = rad_lines_next(&r), b = rad_lines_next(&r), c = rad_lines_next(&r);
+    tap_ok(a == 1 && b == -1 && c == -1 && r.status == RAD_ERR_PARSE &&
+               strcmp(err.message, "t:2: line longer than 4 bytes (the limit)") == 0,
+           "a line over the limit fails on its line, and stays failed (%s)", err.message);
+    rad_lines_close(&r);
+
+    rad_lines_mem(&r, text, sizeof text - 1, "t", '#', &err);
+    r.file_max = 7;
+    a = rad_lines_next(&r);
+    b = rad_lines_next(&r);
+    tap_ok(a == 1 && b == -1 && strcmp(err.message, "t:2: the input is longer than 7 bytes "
+                                                    "(the limit)") == 0,
+           "an input over the file limit fails at the line that crosses it (%s)", err.message);
+    rad_lines_close(&r);
+
+    rad_lines_mem(&r, text, sizeof text - 1, "t", '#', &err);
+    r.file_max = sizeof text - 1;
+    int lines = 0;
+    while (rad_lines_next(&r) == 1)
+        lines++;
+    tap_ok(lines == 3 && !r.failed, "an input of exactly the file limit is read whole");
+    rad_lines_close(&r);
+
+    const char toks[] = "\xEF\xBB\xBF a\tb  # c d\r\n\f\v\r";
+    rad_lines_mem(&r, toks, sizeof toks - 1, "t", '#', &err);
+    a = rad_lines_next(&r);
+    tap_ok(a == 1 && r.ntok == 2 && strcmp(r.tok[0], "a") == 0 && strcmp(r.tok[1], "b") == 0,
+           "one tokenizer: blanks separate, # ends the text, the BOM is skipped");
+    b = rad_lines_next(&r);
+    c = rad_lines_next(&r);
+    tap_ok(b == 1 && r.ntok == 0 && r.line == 2 && c == 0, "blank line, then end of input");
+    rad_lines_close(&r);
+
+    rad_status st = rad_lines_open(&r, "/", '#', &err);
+    if (st == RAD_OK) {
+        a = rad_lines_next(&r);
+        st = r.status;
+    }
+    tap_ok(st == RAD_ERR_IO && strstr(err.message, "/: ") == err.message,
+           "a directory fails as a read error (%s)", err.message);
+    rad_lines_close(&r);
+}
+
+/* Thousands of materials: found by hash, duplicates named with their line. */
+static void many_materials(void)
+{
+    const int n = 20000;
+    size_t cap = (size_t)n * 80 + 256, len = 0;
+    char *buf = malloc(cap);
+    for (int k = 0; k < n; k++)
+        len += (size_t)snprintf(buf + len, cap - len, "material m%d reflect 0.5\n", k);
+    for (int k = 0; k < n; k += 997)
+        len += (size_t)snprintf(buf + len, cap - len, "polygon m%d 3 0 0 %d 1 0 %d 0 1 %d\n",
+                                k, k, k, k);
+    rad_scene s;
+    rad_error err;
+    rad_status st = rad_scene_parse(&s, buf, len, "t.scene", &err);
+    int right = st == RAD_OK && s.nmaterials == n && s.nsurfaces == (n + 996) / 997;
+    for (int k = 0; right && k < s.nsurfaces; k++)
+        right = s.surfaces[k].material == 997 * k;
+    tap_ok(right, "%d materials, each surface finds its own (%s)", n, st ? err.message : "ok");
+    rad_scene_free(&s);
+    len += (size_t)snprintf(buf + len, cap - len, "material m12345 reflect 0.1\n");
+    st = rad_scene_parse(&s, buf, len, "t.scene", &err);
+    char want[128];
+    snprintf(want, sizeof want, "t.scene:%d: material 'm12345' is already defined (line 12346)",
+             n + (n + 996) / 997 + 1);
+    tap_ok(st == RAD_ERR_PARSE && strcmp(err.message, want) == 0, "duplicate found: %s",
+           err.message);
+    free(buf);
+}
+
 int main(void)
 {
+    encodings();
+    values_and_limits();
+    reader_limits();
+    many_materials();
     valid();
     bad("frobnicate 1 2 3\n", 1, "unknown keyword 'frobnicate'");
     bad_m("quad w 0 0 0  1 0 0  1 1 0  0 1\n", "missing number");

@@ -11,15 +11,15 @@
  *
  * Build and run (clang with libFuzzer, ASan and UBSan), from the top of the
  * source tree:
- *     tests/fuzz/run-fuzz.sh [SECONDS]        # default 600
+ *     make fuzz FUZZ_SECONDS=600   or   tests/fuzz/run-fuzz.sh [SECONDS]
  * which does, in a temporary directory holding a config.h that defines
  * PACKAGE_VERSION:
  *     clang -g -O1 -fsanitize=fuzzer,address,undefined \
  *         -fno-sanitize-recover=undefined -I$TMP -Isrc \
- *         tests/fuzz/fuzz_scene.c src/scene.c src/mesh.c src/status.c -lm \
- *         -o $TMP/fuzz_scene
+ *         tests/fuzz/fuzz_scene.c src/scene.c src/mesh.c src/status.c \
+ *         src/readfile.c -lm -o $TMP/fuzz_scene
  *     $TMP/fuzz_scene -max_total_time=600 -max_len=4096 \
- *         -dict=tests/fuzz/scene.dict $TMP/corpus
+ *         -dict=tests/fuzz/scene.dict $TMP/scene/corpus
  * To replay one input: $TMP/fuzz_scene FILE.
  */
 #include <stddef.h>
