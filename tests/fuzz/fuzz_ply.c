@@ -22,9 +22,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "plyread.h"
+#include "radiosity/plyread.h"
 #include "radiosity.h"
-#include "render.h"
+#include "radiosity/render.h"
 
 #define FUZZ_NAME "fuzz.ply"
 
