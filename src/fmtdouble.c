@@ -1,0 +1,212 @@
+/* fmtdouble.c -- "%.*g" from one 64 x 128-bit product, exact.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * What "%.Pg" prints (C11 7.21.6.1): the value rounded to P significant
+ * digits, d.ddd x 10^X; style e when X < -4 or X >= P, style f otherwise,
+ * trailing zeros of the fraction and a bare point removed.  glibc rounds
+ * the exact binary value correctly (to nearest, ties to even, in the
+ * default rounding mode); so does this file, or it asks snprintf.
+ *
+ * The digits.  A finite v > 0 is m 2^e with m < 2^64 shifted so its top
+ * bit is bit 63.  With d = floor(log10 v) guessed from the binary exponent
+ * (floor((e + 63) log10 2) with log10 2 ~ 1292913986 / 2^32: for the
+ * binary exponents of doubles, -1074..1023, the constant's error moves the
+ * product by less than 1.3e-7, and e log10 2 never comes within 4.5e-4 of
+ * an integer but at e = 0, where it is one), the scale k = P - 1 - d
+ * puts v 10^k in [10^(P-1), 10^(P+1)).  The table (pow10tab.h, generated
+ * exactly by scripts/gen-pow10.py) gives 10^k = (P_k + delta) 2^q_k with
+ * the 128-bit P_k truncated, 0 <= delta < 1.  So
+ *     v 10^k = T 2^(e + q_k),   T = m (P_k + delta),
+ *     W = m P_k <= T < W + m < W + 2^64,
+ * with W the exact 192-bit product (W >= 2^190).  The integer part
+ * N = floor(W / 2^s'), s' = -(e + q_k), has P or P + 1 digits (N < 2^60,
+ * so s' >= 130, and N >= 10^0 with W < 2^192, so s' <= 191); with P + 1
+ * the guess d was one short and k drops by one.  The remainder R = W mod
+ * 2^s' decides the rounding of T: R > 2^(s'-1) rounds up, R + 2^64 <=
+ * 2^(s'-1) rounds down, and anything between (within 2^64 of a tie:
+ * fewer than one value in 2^64 at random) goes to snprintf.  For
+ * 0 <= k <= 55, 10^k has at most 128 significant bits, delta = 0 and T = W:
+ * R decides every case, ties (R = 2^(s'-1)) to the even N.  Rounding up
+ * to 10^P means one digit more: N = 10^(P-1) and X + 1.  The test
+ * (tests/test_fmtdouble.c) compares against snprintf on a few million
+ * random bit patterns and the edges (subnormals, +-0, 1e+-308, integers,
+ * decimal fractions, ties).
+ *
+ * This is the idea of Ryu printf (Adams 2019, "Ryu revisited: printf
+ * floating point conversion", OOPSLA) in its simplest form: one product of
+ * fixed width instead of Ryu's exact multi-word ones, with the
+ * multiple-precision printf as the referee of the cases it cannot settle.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fmtdouble.h"
+#include "pow10tab.h"
+
+typedef unsigned __int128 u128;
+
+static const uint64_t pow10_u64[18] = {
+    1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u,
+    1000000000u, 10000000000u, 100000000000u, 1000000000000u, 10000000000000u,
+    100000000000000u, 1000000000000000u, 10000000000000000u, 100000000000000000u};
+
+static const char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/* The `len` low decimal digits of n, zero-padded, into out. */
+static void put_digits(char *out, uint64_t n, int len)
+{
+    int i = len;
+    while (i >= 2) {
+        const unsigned r = (unsigned)(n % 100);
+        n /= 100;
+        i -= 2;
+        memcpy(out + i, digit_pairs + 2 * r, 2);
+    }
+    if (i)
+        out[0] = (char)('0' + n % 10);
+}
+
+int rad_fmt_uint(char *buf, unsigned v)
+{
+    int len = 1;
+    for (unsigned t = v; t >= 10; t /= 10)
+        len++;
+    put_digits(buf, v, len);
+    return len;
+}
+
+/* v (finite, > 0) rounded to prec digits: N 10^(X - prec + 1) with
+ * 10^(prec-1) <= N < 10^prec.  0, or -1 when the product cannot decide. */
+static int decimal(double v, int prec, uint64_t *n_out, int *x_out)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    uint64_t m = bits & ((UINT64_C(1) << 52) - 1);
+    const int biased = (int)(bits >> 52) & 0x7ff;
+    int e = -1074;
+    if (biased) {
+        m |= UINT64_C(1) << 52;
+        e = biased - 1075;
+    }
+    const int lz = __builtin_clzll(m);
+    m <<= lz;
+    e -= lz;
+    /* floor((e + 63) log10 2); >> of a negative is arithmetic in GCC and Clang */
+    const int d = (int)(((int64_t)(e + 63) * INT64_C(1292913986)) >> 32);
+    for (int k = prec - 1 - d; k >= prec - 2 - d; k--) {
+        if (k < RAD_POW10_KMIN || k > RAD_POW10_KMAX)
+            return -1;
+        const struct rad_pow10 *p = &rad_pow10_tab[k - RAD_POW10_KMIN];
+        const u128 lo = (u128)m * p->lo, hi = (u128)m * p->hi;
+        const u128 top = hi + (lo >> 64);       /* W >> 64, exactly */
+        const uint64_t w0 = (uint64_t)lo;       /* W mod 2^64 */
+        const int s = -(e + p->q) - 64;         /* N = W >> (s + 64) = top >> s */
+        if (s < 66 || s > 127)
+            return -1;                          /* impossible by the bounds above */
+        uint64_t n = (uint64_t)(top >> s);
+        if (n >= pow10_u64[prec])
+            continue;                           /* d was one short */
+        if (n < pow10_u64[prec - 1])
+            return -1;
+        /* R = rt 2^64 + w0 and T's remainder lies in [R, R + 2^64): in units
+         * of 2^64, at most one above rt */
+        const u128 rt = top & (((u128)1 << s) - 1);
+        const u128 half = (u128)1 << (s - 1);
+        const int exact = k >= 0 && k <= RAD_POW10_EXACT_MAX;  /* T = W */
+        if (rt > half || (rt == half && w0 != 0))
+            n++;
+        else if (exact && rt == half)
+            n += n & 1;                         /* an exact tie: to even */
+        else if (!exact && rt + 1 >= half)
+            return -1;                          /* too close to a tie */
+        int x = prec - 1 - k;
+        if (n == pow10_u64[prec]) {
+            n = pow10_u64[prec - 1];
+            x++;
+        }
+        *n_out = n;
+        *x_out = x;
+        return 0;
+    }
+    return -1;
+}
+
+/* Style e: d.ddd (nd digits) e+XX. */
+static char *style_e(char *p, const char *dg, int nd, int x)
+{
+    *p++ = dg[0];
+    if (nd > 1) {
+        *p++ = '.';
+        memcpy(p, dg + 1, (size_t)nd - 1);
+        p += nd - 1;
+    }
+    *p++ = 'e';
+    *p++ = x < 0 ? '-' : '+';
+    const unsigned ax = (unsigned)(x < 0 ? -x : x);
+    if (ax >= 100)
+        *p++ = (char)('0' + ax / 100);
+    memcpy(p, digit_pairs + 2 * (ax % 100), 2);
+    return p + 2;
+}
+
+/* Style f with the digits dg[0..nd) and exponent x in [-4, prec). */
+static char *style_f(char *p, const char *dg, int nd, int x)
+{
+    if (x < 0) {
+        *p++ = '0';
+        *p++ = '.';
+        for (int i = 0; i < -x - 1; i++)
+            *p++ = '0';
+        memcpy(p, dg, (size_t)nd);
+        return p + nd;
+    }
+    memcpy(p, dg, (size_t)x + 1);       /* stripped zeros of the integer part stay */
+    p += x + 1;
+    if (nd > x + 1) {
+        *p++ = '.';
+        memcpy(p, dg + x + 1, (size_t)(nd - x - 1));
+        p += nd - x - 1;
+    }
+    return p;
+}
+
+int rad_fmt_g(char *buf, double v, int prec)
+{
+    const int len = rad_fmt_g_fast(buf, v, prec);
+    return len >= 0 ? len : snprintf(buf, RAD_FMT_G_MAX, "%.*g", prec, v);
+}
+
+int rad_fmt_g_fast(char *buf, double v, int prec)
+{
+    if (prec < 1 || prec > 17)
+        return -1;
+    char *p = buf;
+    if (signbit(v))
+        *p++ = '-';
+    if (!isfinite(v) || v == 0) {
+        const char *word = isnan(v) ? "nan" : isinf(v) ? "inf" : "0";
+        const size_t len = strlen(word);
+        memcpy(p, word, len + 1);
+        return (int)(p - buf + (ptrdiff_t)len);
+    }
+    uint64_t n;
+    int x;
+    if (decimal(fabs(v), prec, &n, &x))
+        return -1;
+    char dg[17];
+    put_digits(dg, n, prec);
+    int nd = prec;
+    while (nd > 1 && dg[nd - 1] == '0')
+        nd--;
+    p = (x < -4 || x >= prec) ? style_e(p, dg, nd, x) : style_f(p, dg, nd, x);
+    *p = '\0';
+    return (int)(p - buf);
+}
