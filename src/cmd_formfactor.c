@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "export.h"
 #include "mesh.h"
 
 static void help(void)
@@ -36,17 +37,7 @@ typedef struct table_ctx {
 static int write_table(FILE *out, const void *ctx)
 {
     const table_ctx *t = ctx;
-    const double *F = t->F, *E = t->E;
-    const int n = t->n;
-    fprintf(out, "i\tj\tF\terror\n");
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++) {
-            if (i == j)
-                continue;
-            size_t k = (size_t)i + (size_t)j * n;
-            fprintf(out, "%d\t%d\t%.17g\t%.3g\n", i, j, F[k], E ? E[k] : (double)NAN);
-        }
-    return ferror(out) ? -1 : 0;
+    return rad_export_ff_table(out, t->F, t->E, t->n);
 }
 
 int cmd_formfactor(int argc, char **argv)

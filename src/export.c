@@ -14,10 +14,20 @@
  */
 #include <config.h>
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#else
+#define omp_get_max_threads() 1
+#define omp_get_thread_num() 0
+#endif
 
 #include "export.h"
+#include "fmtdouble.h"
 #include "radiosity.h"
 
 unsigned char rad_srgb8(double linear, double exposure)
@@ -48,15 +58,134 @@ int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
     return ferror(out) ? -1 : 0;
 }
 
+/* ---- big tables: formatted in parallel, written in order ------------------
+ *
+ * The form-factor table of an n-element mesh has n (n - 1) lines (5.76
+ * million for the 20 x 20 cube).  Its items (a row of the table, a column
+ * of the matrix) are formatted by rad_fmt_g (fmtdouble.h: the bytes of
+ * %.17g without printf's multiple-precision arithmetic), a block of items
+ * at a time into the buffer of the thread that took the block; the blocks
+ * are written in an OpenMP `ordered` region, so in item order while the
+ * other threads format the next blocks.  The file is the one the serial
+ * loop of printf calls wrote, byte for byte.  A block is at least 8 items:
+ * the rows of the form-factor table read the column-major matrix across,
+ * and 8 consecutive rows share each cache line they read. */
+
+/* Format item `item` into buf (at least item_max bytes); return the bytes. */
+typedef size_t (*item_fmt)(char *buf, const void *ctx, size_t item);
+
+enum { BLOCK_BYTES = 1 << 20, BLOCK_MIN_ITEMS = 8 };
+
+static int write_items(FILE *out, size_t nitems, size_t item_max, item_fmt fmt,
+                       const void *ctx)
+{
+    int threads = omp_get_max_threads();
+    size_t per_block = item_max < BLOCK_BYTES / BLOCK_MIN_ITEMS ? BLOCK_BYTES / item_max
+                                                                  : BLOCK_MIN_ITEMS;
+    char *buf = malloc((size_t)threads * per_block * item_max);
+    if (!buf) {                         /* the least: one item at a time */
+        threads = 1;
+        per_block = 1;
+        buf = malloc(item_max);
+        if (!buf) {
+            errno = ENOMEM;
+            return -1;
+        }
+    }
+    const long nblocks = (long)((nitems + per_block - 1) / per_block);
+    int status = 0;
+#pragma omp parallel num_threads(threads)
+    {
+        char *mine = buf + (size_t)omp_get_thread_num() * per_block * item_max;
+#pragma omp for ordered schedule(dynamic, 1)
+        for (long b = 0; b < nblocks; b++) {
+            size_t used = 0;
+            const size_t first = (size_t)b * per_block;
+            for (size_t item = first; item < first + per_block && item < nitems; item++)
+                used += fmt(mine + used, ctx, item);
+#pragma omp ordered
+            if (status == 0 && fwrite(mine, 1, used, out) != used)
+                status = -1;
+        }
+    }
+    free(buf);
+    return status || ferror(out) ? -1 : 0;
+}
+
+/* "%.17g" of v followed by c. */
+static size_t put_g17(char *p, double v, char c)
+{
+    size_t k = (size_t)rad_fmt_g(p, v, 17);
+    p[k] = c;
+    return k + 1;
+}
+
+typedef struct ff_table {
+    const double *F, *E;
+    size_t n;
+} ff_table;
+
+/* Row i of the table: "i\tj\tF\terror\n" for every j != i.  A line has at
+ * most 10 + 10 + 24 + 24 bytes and four separators, and rad_fmt_g may use
+ * RAD_FMT_G_MAX bytes where it writes: 96 a line is room enough. */
+enum { FF_LINE_MAX = 96 };
+
+static size_t ff_table_row(char *buf, const void *ctx, size_t i)
+{
+    const ff_table *t = ctx;
+    char *p = buf;
+    char ibuf[16];
+    const int il = rad_fmt_uint(ibuf, (unsigned)i);
+    ibuf[il] = '\t';
+    for (size_t j = 0; j < t->n; j++) {
+        if (j == i)
+            continue;
+        const size_t k = i + j * t->n;
+        memcpy(p, ibuf, (size_t)il + 1);
+        p += il + 1;
+        p += rad_fmt_uint(p, (unsigned)j);
+        *p++ = '\t';
+        p += put_g17(p, t->F[k], '\t');
+        p += rad_fmt_g(p, t->E ? t->E[k] : (double)NAN, 3);
+        *p++ = '\n';
+    }
+    return (size_t)(p - buf);
+}
+
+int rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
+{
+    if (fputs("i\tj\tF\terror\n", out) == EOF)
+        return -1;
+    const ff_table t = {F, E, (size_t)(n > 0 ? n : 0)};
+    return write_items(out, t.n, t.n * FF_LINE_MAX + 1, ff_table_row, &t);
+}
+
+typedef struct mm_column {
+    const double *F;
+    size_t n;
+} mm_column;
+
+/* Column j of the matrix, one entry a line. */
+static size_t mm_column_lines(char *buf, const void *ctx, size_t j)
+{
+    const mm_column *c = ctx;
+    const double *col = c->F + j * c->n;
+    char *p = buf;
+    for (size_t i = 0; i < c->n; i++)
+        p += put_g17(p, col[i], '\n');
+    return (size_t)(p - buf);
+}
+
 int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment)
 {
     fprintf(out, "%%%%MatrixMarket matrix array real general\n");
     if (comment)
         fprintf(out, "%% %s\n", comment);
     fprintf(out, "%d %d\n", n, n);
-    for (size_t k = 0; k < (size_t)n * n; k++)
-        fprintf(out, "%.17g\n", F[k]);
-    return ferror(out) ? -1 : 0;
+    if (ferror(out))
+        return -1;
+    const mm_column c = {F, (size_t)(n > 0 ? n : 0)};
+    return write_items(out, c.n, c.n * RAD_FMT_G_MAX + 1, mm_column_lines, &c);
 }
 
 int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const double *B,

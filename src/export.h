@@ -32,6 +32,12 @@ typedef struct rad_run_info {
 int rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
 /* Matrix Market "array real general", column-major, %.17g. */
 int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
+/* The form-factor table (`radiosity formfactor`): header "i j F error",
+ * one line per ordered pair i != j, row by row; F with %.17g, the error
+ * estimate E[i + j*n] with %.3g (E may be NULL: "nan").  Both big writers
+ * format in parallel (OpenMP) and write the bytes the serial printf loop
+ * wrote. */
+int rad_export_ff_table(FILE *out, const double *F, const double *E, int n);
 /* Solution PLY: vertices with smoothed radiosity (linear doubles and sRGB
  * bytes), faces with element radiosity and surface index; the camera, when
  * the scene has one, in a comment. */

@@ -60,18 +60,40 @@ static const char digit_pairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-/* The `len` low decimal digits of n, zero-padded, into out. */
-static void put_digits(char *out, uint64_t n, int len)
+/* Exactly 8 digits of v < 10^8, in 32-bit arithmetic. */
+static void put8(char *out, uint32_t v)
+{
+    const uint32_t hi = v / 10000, lo = v % 10000;
+    memcpy(out, digit_pairs + 2 * (hi / 100), 2);
+    memcpy(out + 2, digit_pairs + 2 * (hi % 100), 2);
+    memcpy(out + 4, digit_pairs + 2 * (lo / 100), 2);
+    memcpy(out + 6, digit_pairs + 2 * (lo % 100), 2);
+}
+
+/* The `len` (at most 8) low decimal digits of v, zero-padded, into out. */
+static void put_short(char *out, uint32_t v, int len)
 {
     int i = len;
     while (i >= 2) {
-        const unsigned r = (unsigned)(n % 100);
-        n /= 100;
+        const uint32_t r = v % 100;
+        v /= 100;
         i -= 2;
         memcpy(out + i, digit_pairs + 2 * r, 2);
     }
     if (i)
-        out[0] = (char)('0' + n % 10);
+        out[0] = (char)('0' + v % 10);
+}
+
+/* The `len` (at most 20) low decimal digits of n, zero-padded, into out:
+ * 8 at a time in 32-bit arithmetic, which is cheaper than 64-bit. */
+static void put_digits(char *out, uint64_t n, int len)
+{
+    while (len > 8) {
+        put8(out + len - 8, (uint32_t)(n % 100000000u));
+        n /= 100000000u;
+        len -= 8;
+    }
+    put_short(out, (uint32_t)n, len);
 }
 
 int rad_fmt_uint(char *buf, unsigned v)
@@ -107,26 +129,24 @@ static int decimal(double v, int prec, uint64_t *n_out, int *x_out)
         const struct rad_pow10 *p = &rad_pow10_tab[k - RAD_POW10_KMIN];
         const u128 lo = (u128)m * p->lo, hi = (u128)m * p->hi;
         const u128 top = hi + (lo >> 64);       /* W >> 64, exactly */
-        const uint64_t w0 = (uint64_t)lo;       /* W mod 2^64 */
-        const int s = -(e + p->q) - 64;         /* N = W >> (s + 64) = top >> s */
-        if (s < 66 || s > 127)
+        const uint64_t w2 = (uint64_t)(top >> 64), w1 = (uint64_t)top, w0 = (uint64_t)lo;
+        const int s = -(e + p->q) - 128;        /* N = W >> (s + 128) = w2 >> s */
+        if (s < 2 || s > 63)
             return -1;                          /* impossible by the bounds above */
-        uint64_t n = (uint64_t)(top >> s);
+        uint64_t n = w2 >> s;
         if (n >= pow10_u64[prec])
             continue;                           /* d was one short */
         if (n < pow10_u64[prec - 1])
             return -1;
-        /* R = rt 2^64 + w0 and T's remainder lies in [R, R + 2^64): in units
-         * of 2^64, at most one above rt */
-        const u128 rt = top & (((u128)1 << s) - 1);
-        const u128 half = (u128)1 << (s - 1);
+        /* R = (rh, w1, w0) in 64-bit digits, and T's remainder lies in
+         * [R, R + 2^64): at most one unit of w1 above it */
+        const uint64_t rh = w2 & ((UINT64_C(1) << s) - 1), half = UINT64_C(1) << (s - 1);
         const int exact = k >= 0 && k <= RAD_POW10_EXACT_MAX;  /* T = W */
-        if (rt > half || (rt == half && w0 != 0))
-            n++;
-        else if (exact && rt == half)
-            n += n & 1;                         /* an exact tie: to even */
-        else if (!exact && rt + 1 >= half)
-            return -1;                          /* too close to a tie */
+        const int above = rh > half || (rh == half && (w1 | w0) != 0);
+        const int tie = rh == half && (w1 | w0) == 0;
+        if (!exact && !above && (tie || (rh + 1 == half && w1 == UINT64_MAX)))
+            return -1;                          /* too close to a tie to tell */
+        n += above || (tie && (n & 1));         /* ties (exact ones) to even */
         int x = prec - 1 - k;
         if (n == pow10_u64[prec]) {
             n = pow10_u64[prec - 1];
@@ -139,13 +159,18 @@ static int decimal(double v, int prec, uint64_t *n_out, int *x_out)
     return -1;
 }
 
+/* The styles copy digits in fixed lengths (moves the compiler inlines)
+ * and then advance by the true ones: dg holds DG_MAX bytes, and the
+ * output has RAD_FMT_G_MAX bytes of room. */
+enum { DG_MAX = 40 };
+
 /* Style e: d.ddd (nd digits) e+XX. */
 static char *style_e(char *p, const char *dg, int nd, int x)
 {
     *p++ = dg[0];
     if (nd > 1) {
         *p++ = '.';
-        memcpy(p, dg + 1, (size_t)nd - 1);
+        memcpy(p, dg + 1, 16);
         p += nd - 1;
     }
     *p++ = 'e';
@@ -161,18 +186,16 @@ static char *style_e(char *p, const char *dg, int nd, int x)
 static char *style_f(char *p, const char *dg, int nd, int x)
 {
     if (x < 0) {
-        *p++ = '0';
-        *p++ = '.';
-        for (int i = 0; i < -x - 1; i++)
-            *p++ = '0';
-        memcpy(p, dg, (size_t)nd);
+        memcpy(p, "0.000", 5);
+        p += 1 - x;
+        memcpy(p, dg, 17);
         return p + nd;
     }
-    memcpy(p, dg, (size_t)x + 1);       /* stripped zeros of the integer part stay */
+    memcpy(p, dg, 17);                  /* stripped zeros of the integer part stay */
     p += x + 1;
     if (nd > x + 1) {
         *p++ = '.';
-        memcpy(p, dg + x + 1, (size_t)(nd - x - 1));
+        memcpy(p, dg + x + 1, 16);
         p += nd - x - 1;
     }
     return p;
@@ -201,7 +224,7 @@ int rad_fmt_g_fast(char *buf, double v, int prec)
     int x;
     if (decimal(fabs(v), prec, &n, &x))
         return -1;
-    char dg[17];
+    char dg[DG_MAX];
     put_digits(dg, n, prec);
     int nd = prec;
     while (nd > 1 && dg[nd - 1] == '0')

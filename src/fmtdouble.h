@@ -15,9 +15,10 @@
 
 #include <stddef.h>
 
-/* Longest output of rad_fmt_g, terminating NUL included:
- * "-1.2345678901234567e-308" and "-0.00012345678901234567" are 24 bytes. */
-#define RAD_FMT_G_MAX 32
+/* The room rad_fmt_g needs where it writes.  Its longest output,
+ * "-1.2345678901234567e-308" or "-0.00012345678901234567", is 24 bytes and
+ * a NUL, but it copies digits in fixed lengths, to at most 35 bytes. */
+#define RAD_FMT_G_MAX 40
 
 /* Write v as "%.*g" with precision prec (1..17; outside, snprintf does the
  * work) into buf, which holds at least RAD_FMT_G_MAX bytes; NUL-terminate
