@@ -188,6 +188,21 @@ int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comm
     return write_items(out, c.n, c.n * RAD_FMT_G_MAX + 1, mm_column_lines, &c);
 }
 
+int rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *m,
+                             const double *FS, const double *ES, const double *AS)
+{
+    const int ns = m->nsurfaces;
+    fprintf(out, "S\tK\tF\terror\tS_line\tK_line\tS_area\n");
+    for (int S = 0; S < ns; S++)
+        for (int K = 0; K < ns; K++) {
+            const size_t k = (size_t)S + (size_t)K * (size_t)ns;
+            fprintf(out, "%d\t%d\t%.17g\t%.3g\t%d\t%d\t%.17g\n", S, K, FS[k],
+                    ES ? ES[k] : (double)NAN, scene->surfaces[S].line, scene->surfaces[K].line,
+                    AS[S]);
+        }
+    return ferror(out) ? -1 : 0;
+}
+
 int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const double *B,
                    const double *Bv)
 {
