@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # gen-pow10.py -- writes src/pow10tab.h, the 128-bit powers of ten of
-# src/fmtdouble.c.  Copyright (C) 2026 The radiosity authors.  GPLv3+.
+# src/fmtdouble.c and the decimal-exponent thresholds of each binade.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+.
 #
 # For each k in [KMIN, KMAX]: P = floor(10^k * 2^-q), the integer with
 # 2^127 <= P < 2^128 (exact where 10^k has at most 128 significant bits,
@@ -27,4 +28,27 @@ for k in range(KMIN, KMAX + 1):
         q = -s
     assert p.bit_length() == 128
     print("    {0x%016xu, 0x%016xu, %d}, /* 1e%d */" % (p >> 64, p & (2**64 - 1), q, k))
+print("};")
+
+# floor(log10 v) for v = m 2^(e-63), 2^63 <= m < 2^64 (e the exponent of the
+# top bit, -1074..1023): d = floor(e log10 2) (fmtdouble.c computes it as
+# (e * 1292913986) >> 32, checked here) or d + 1 when v >= 10^(d+1), that is
+# when m >= THR[e] = ceil(10^(d+1) 2^(63-e)); THR = 2^64 - 1 when the binade
+# holds no power of ten (no double's m reaches it: its low 11 bits are 0).
+from fractions import Fraction
+import math
+EMIN, EMAX = -1074, 1023
+print("#define RAD_LOG10_EMIN (%d)" % EMIN)
+print("static const uint64_t rad_log10_thr[] = {")
+for e in range(EMIN, EMAX + 1):
+    d = (e * 1292913986) >> 32
+    lo, hi = Fraction(2) ** e, Fraction(2) ** (e + 1)
+    assert Fraction(10) ** d <= lo < Fraction(10) ** (d + 2)
+    p = Fraction(10) ** (d + 1)
+    if p < hi:
+        t = math.ceil(p * Fraction(2) ** (63 - e))
+        assert 2 ** 63 <= t < 2 ** 64
+    else:
+        t = 2 ** 64 - 1
+    print("    0x%016xu, /* 2^%d */" % (t, e))
 print("};")

@@ -9,20 +9,21 @@
  * default rounding mode); so does this file, or it asks snprintf.
  *
  * The digits.  A finite v > 0 is m 2^e with m < 2^64 shifted so its top
- * bit is bit 63.  With d = floor(log10 v) guessed from the binary exponent
- * (floor((e + 63) log10 2) with log10 2 ~ 1292913986 / 2^32: for the
- * binary exponents of doubles, -1074..1023, the constant's error moves the
- * product by less than 1.3e-7, and e log10 2 never comes within 4.5e-4 of
- * an integer but at e = 0, where it is one), the scale k = P - 1 - d
- * puts v 10^k in [10^(P-1), 10^(P+1)).  The table (pow10tab.h, generated
+ * bit is bit 63.  d = floor(log10 v) is floor((e + 63) log10 2) (with
+ * log10 2 ~ 1292913986 / 2^32: for the binary exponents of doubles,
+ * -1074..1023, the constant's error moves the product by less than 1.3e-7,
+ * and e log10 2 never comes within 4.5e-4 of an integer but at e = 0,
+ * where it is one), plus one when m reaches the binade's power of ten (a
+ * threshold per binade, pow10tab.h); the scale k = P - 1 - d puts v 10^k
+ * in [10^(P-1), 10^P).  The table (pow10tab.h, generated
  * exactly by scripts/gen-pow10.py) gives 10^k = (P_k + delta) 2^q_k with
  * the 128-bit P_k truncated, 0 <= delta < 1.  So
  *     v 10^k = T 2^(e + q_k),   T = m (P_k + delta),
  *     W = m P_k <= T < W + m < W + 2^64,
  * with W the exact 192-bit product (W >= 2^190).  The integer part
- * N = floor(W / 2^s'), s' = -(e + q_k), has P or P + 1 digits (N < 2^60,
- * so s' >= 130, and N >= 10^0 with W < 2^192, so s' <= 191); with P + 1
- * the guess d was one short and k drops by one.  The remainder R = W mod
+ * N = floor(W / 2^s'), s' = -(e + q_k), has P digits (N < 2^57, so
+ * s' >= 133, and N >= 10^0 with W < 2^192, so s' <= 191), unless W < T
+ * hides the step to 10^(P-1) (snprintf then).  The remainder R = W mod
  * 2^s' decides the rounding of T: R > 2^(s'-1) rounds up, R + 2^64 <=
  * 2^(s'-1) rounds down, and anything between (within 2^64 of a tie:
  * fewer than one value in 2^64 at random) goes to snprintf.  For
@@ -107,7 +108,8 @@ int rad_fmt_uint(char *buf, unsigned v)
 
 /* v (finite, > 0) rounded to prec digits: N 10^(X - prec + 1) with
  * 10^(prec-1) <= N < 10^prec.  0, or -1 when the product cannot decide. */
-static int decimal(double v, int prec, uint64_t *n_out, int *x_out)
+static inline __attribute__((always_inline)) int decimal(double v, int prec, uint64_t *n_out,
+                                                         int *x_out)
 {
     uint64_t bits;
     memcpy(&bits, &v, sizeof bits);
@@ -121,42 +123,40 @@ static int decimal(double v, int prec, uint64_t *n_out, int *x_out)
     const int lz = __builtin_clzll(m);
     m <<= lz;
     e -= lz;
-    /* floor((e + 63) log10 2); >> of a negative is arithmetic in GCC and Clang */
-    const int d = (int)(((int64_t)(e + 63) * INT64_C(1292913986)) >> 32);
-    for (int k = prec - 1 - d; k >= prec - 2 - d; k--) {
-        if (k < RAD_POW10_KMIN || k > RAD_POW10_KMAX)
-            return -1;
-        const struct rad_pow10 *p = &rad_pow10_tab[k - RAD_POW10_KMIN];
-        const u128 lo = (u128)m * p->lo, hi = (u128)m * p->hi;
-        const u128 top = hi + (lo >> 64);       /* W >> 64, exactly */
-        const uint64_t w2 = (uint64_t)(top >> 64), w1 = (uint64_t)top, w0 = (uint64_t)lo;
-        const int s = -(e + p->q) - 128;        /* N = W >> (s + 128) = w2 >> s */
-        if (s < 2 || s > 63)
-            return -1;                          /* impossible by the bounds above */
-        uint64_t n = w2 >> s;
-        if (n >= pow10_u64[prec])
-            continue;                           /* d was one short */
-        if (n < pow10_u64[prec - 1])
-            return -1;
-        /* R = (rh, w1, w0) in 64-bit digits, and T's remainder lies in
-         * [R, R + 2^64): at most one unit of w1 above it */
-        const uint64_t rh = w2 & ((UINT64_C(1) << s) - 1), half = UINT64_C(1) << (s - 1);
-        const int exact = k >= 0 && k <= RAD_POW10_EXACT_MAX;  /* T = W */
-        const int above = rh > half || (rh == half && (w1 | w0) != 0);
-        const int tie = rh == half && (w1 | w0) == 0;
-        if (!exact && !above && (tie || (rh + 1 == half && w1 == UINT64_MAX)))
-            return -1;                          /* too close to a tie to tell */
-        n += above || (tie && (n & 1));         /* ties (exact ones) to even */
-        int x = prec - 1 - k;
-        if (n == pow10_u64[prec]) {
-            n = pow10_u64[prec - 1];
-            x++;
-        }
-        *n_out = n;
-        *x_out = x;
-        return 0;
+    /* d = floor(log10 v): floor((e + 63) log10 2), plus one above the
+     * binade's power of ten (>> of a negative is arithmetic in GCC, Clang) */
+    const int d = (int)(((int64_t)(e + 63) * INT64_C(1292913986)) >> 32) +
+                  (m >= rad_log10_thr[e + 63 - RAD_LOG10_EMIN]);
+    const int k = prec - 1 - d;
+    if (k < RAD_POW10_KMIN || k > RAD_POW10_KMAX)
+        return -1;
+    const struct rad_pow10 *p = &rad_pow10_tab[k - RAD_POW10_KMIN];
+    const u128 lo = (u128)m * p->lo, hi = (u128)m * p->hi;
+    const u128 top = hi + (lo >> 64);       /* W >> 64, exactly */
+    const uint64_t w2 = (uint64_t)(top >> 64), w1 = (uint64_t)top, w0 = (uint64_t)lo;
+    const int s = -(e + p->q) - 128;        /* N = W >> (s + 128) = w2 >> s */
+    if (s < 2 || s > 63)
+        return -1;                          /* impossible by the bounds above */
+    uint64_t n = w2 >> s;
+    if (n >= pow10_u64[prec] || n < pow10_u64[prec - 1])
+        return -1;                          /* W < T hid a digit: not seen */
+    /* R = (rh, w1, w0) in 64-bit digits, and T's remainder lies in
+     * [R, R + 2^64): at most one unit of w1 above it */
+    const uint64_t rh = w2 & ((UINT64_C(1) << s) - 1), half = UINT64_C(1) << (s - 1);
+    const int exact = k >= 0 && k <= RAD_POW10_EXACT_MAX;  /* T = W */
+    const int above = rh > half || (rh == half && (w1 | w0) != 0);
+    const int tie = rh == half && (w1 | w0) == 0;
+    if (!exact && !above && (tie || (rh + 1 == half && w1 == UINT64_MAX)))
+        return -1;                          /* too close to a tie to tell */
+    n += above || (tie && (n & 1));         /* ties (exact ones) to even */
+    int x = prec - 1 - k;
+    if (n == pow10_u64[prec]) {
+        n = pow10_u64[prec - 1];
+        x++;
     }
-    return -1;
+    *n_out = n;
+    *x_out = x;
+    return 0;
 }
 
 /* The styles copy digits in fixed lengths (moves the compiler inlines)
@@ -201,13 +201,9 @@ static char *style_f(char *p, const char *dg, int nd, int x)
     return p;
 }
 
-int rad_fmt_g(char *buf, double v, int prec)
-{
-    const int len = rad_fmt_g_fast(buf, v, prec);
-    return len >= 0 ? len : snprintf(buf, RAD_FMT_G_MAX, "%.*g", prec, v);
-}
-
-int rad_fmt_g_fast(char *buf, double v, int prec)
+/* rad_fmt_g_fast's work; inlined where prec is a constant (the writers' 17
+ * and 3), so the digit loops and powers of ten fold. */
+static inline __attribute__((always_inline)) int fmt_g(char *buf, double v, int prec)
 {
     if (prec < 1 || prec > 17)
         return -1;
@@ -232,4 +228,17 @@ int rad_fmt_g_fast(char *buf, double v, int prec)
     p = (x < -4 || x >= prec) ? style_e(p, dg, nd, x) : style_f(p, dg, nd, x);
     *p = '\0';
     return (int)(p - buf);
+}
+
+int rad_fmt_g(char *buf, double v, int prec)
+{
+    const int len = prec == 17 ? fmt_g(buf, v, 17)
+                    : prec == 3 ? fmt_g(buf, v, 3)
+                                : fmt_g(buf, v, prec);
+    return len >= 0 ? len : snprintf(buf, RAD_FMT_G_MAX, "%.*g", prec, v);
+}
+
+int rad_fmt_g_fast(char *buf, double v, int prec)
+{
+    return fmt_g(buf, v, prec);
 }
