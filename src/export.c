@@ -123,28 +123,34 @@ static size_t put_g17(char *p, double v, char c)
 typedef struct ff_table {
     const double *F, *E;
     size_t n;
+    const char *index;          /* "j\t" of every j, INDEX_W bytes each */
 } ff_table;
+
+/* The longest index (10 digits) and its tab, rounded up for fixed copies. */
+enum { INDEX_W = 16 };
 
 /* Row i of the table: "i\tj\tF\terror\n" for every j != i.  A line has at
  * most 10 + 10 + 24 + 24 bytes and four separators, and rad_fmt_g may use
- * RAD_FMT_G_MAX bytes where it writes: 96 a line is room enough. */
+ * RAD_FMT_G_MAX bytes where it writes: 96 a line is room enough.  The
+ * indices' text is made once (the last byte of each slot holds its
+ * length), every row copies it. */
 enum { FF_LINE_MAX = 96 };
 
 static size_t ff_table_row(char *buf, const void *ctx, size_t i)
 {
     const ff_table *t = ctx;
     char *p = buf;
-    char ibuf[16];
-    const int il = rad_fmt_uint(ibuf, (unsigned)i);
-    ibuf[il] = '\t';
+    const char *is = t->index + i * INDEX_W;
+    const size_t il = (size_t)is[INDEX_W - 1];
     for (size_t j = 0; j < t->n; j++) {
         if (j == i)
             continue;
         const size_t k = i + j * t->n;
-        memcpy(p, ibuf, (size_t)il + 1);
-        p += il + 1;
-        p += rad_fmt_uint(p, (unsigned)j);
-        *p++ = '\t';
+        const char *js = t->index + j * INDEX_W;
+        memcpy(p, is, INDEX_W);
+        p += il;
+        memcpy(p, js, INDEX_W);
+        p += (size_t)js[INDEX_W - 1];
         p += put_g17(p, t->F[k], '\t');
         p += rad_fmt_g(p, t->E ? t->E[k] : (double)NAN, 3);
         *p++ = '\n';
@@ -156,8 +162,22 @@ int rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
 {
     if (fputs("i\tj\tF\terror\n", out) == EOF)
         return -1;
-    const ff_table t = {F, E, (size_t)(n > 0 ? n : 0)};
-    return write_items(out, t.n, t.n * FF_LINE_MAX + 1, ff_table_row, &t);
+    const size_t m = (size_t)(n > 0 ? n : 0);
+    char *index = malloc(m * INDEX_W + 1);
+    if (!index) {
+        errno = ENOMEM;
+        return -1;
+    }
+    for (size_t j = 0; j < m; j++) {
+        char *s = index + j * INDEX_W;
+        const int len = rad_fmt_uint(s, (unsigned)j);
+        s[len] = '\t';
+        s[INDEX_W - 1] = (char)(len + 1);
+    }
+    const ff_table t = {F, E, m, index};
+    const int status = write_items(out, m, m * FF_LINE_MAX + INDEX_W, ff_table_row, &t);
+    free(index);
+    return status;
 }
 
 typedef struct mm_column {

@@ -108,6 +108,32 @@ int rad_fmt_uint(char *buf, unsigned v)
 
 /* v (finite, > 0) rounded to prec digits: N 10^(X - prec + 1) with
  * 10^(prec-1) <= N < 10^prec.  0, or -1 when the product cannot decide. */
+/* Few digits (the error column's 3) in double arithmetic: for |k| <= 22,
+ * 10^|k| is a double and y = v 10^k (or v / 10^-k) is the true product
+ * rounded once, within 2^-53 y < 10^P 2^-53 of it.  Where the fraction of
+ * y is farther than twice that from 1/2 the rounding of the true value is
+ * the rounding of y; else 0, and the exact path decides. */
+enum { SHORT_MAX = 9 };
+
+static const double pow10_dbl[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+static inline __attribute__((always_inline)) int short_decimal(double v, int prec, int k,
+                                                               uint64_t *n_out)
+{
+    const double y = k >= 0 ? v * pow10_dbl[k] : v / pow10_dbl[-k];
+    const double margin = 2 * pow10_dbl[prec] * 0x1p-53;
+    if (!(y >= (double)pow10_u64[prec - 1] && y < (double)pow10_u64[prec]))
+        return 0;
+    const uint64_t n = (uint64_t)y;
+    const double frac = y - (double)n;      /* exact: y < 2^53 */
+    if (fabs(frac - 0.5) <= margin)
+        return 0;
+    *n_out = n + (frac > 0.5);
+    return 1;
+}
+
 static inline __attribute__((always_inline)) int decimal(double v, int prec, uint64_t *n_out,
                                                          int *x_out)
 {
@@ -128,6 +154,8 @@ static inline __attribute__((always_inline)) int decimal(double v, int prec, uin
     const int d = (int)(((int64_t)(e + 63) * INT64_C(1292913986)) >> 32) +
                   (m >= rad_log10_thr[e + 63 - RAD_LOG10_EMIN]);
     const int k = prec - 1 - d;
+    if (prec <= SHORT_MAX && k >= -22 && k <= 22 && short_decimal(v, prec, k, n_out))
+        goto done;
     if (k < RAD_POW10_KMIN || k > RAD_POW10_KMAX)
         return -1;
     const struct rad_pow10 *p = &rad_pow10_tab[k - RAD_POW10_KMIN];
@@ -149,13 +177,13 @@ static inline __attribute__((always_inline)) int decimal(double v, int prec, uin
     if (!exact && !above && (tie || (rh + 1 == half && w1 == UINT64_MAX)))
         return -1;                          /* too close to a tie to tell */
     n += above || (tie && (n & 1));         /* ties (exact ones) to even */
-    int x = prec - 1 - k;
-    if (n == pow10_u64[prec]) {
-        n = pow10_u64[prec - 1];
-        x++;
-    }
     *n_out = n;
-    *x_out = x;
+done:
+    *x_out = prec - 1 - k;
+    if (*n_out == pow10_u64[prec]) {
+        *n_out = pow10_u64[prec - 1];
+        ++*x_out;
+    }
     return 0;
 }
 
