@@ -29,7 +29,9 @@
  * fewer than one value in 2^64 at random) goes to snprintf.  For
  * 0 <= k <= 55, 10^k has at most 128 significant bits, delta = 0 and T = W:
  * R decides every case, ties (R = 2^(s'-1)) to the even N.  Rounding up
- * to 10^P means one digit more: N = 10^(P-1) and X + 1.  The test
+ * to 10^P means one digit more: N = 10^(P-1) and X + 1.  Precisions up
+ * to 9 (the error column's 3) first try plain double arithmetic
+ * (short_decimal), exact wherever it decides.  The test
  * (tests/test_fmtdouble.c) compares against snprintf on a few million
  * random bit patterns and the edges (subnormals, +-0, 1e+-308, integers,
  * decimal fractions, ties).
