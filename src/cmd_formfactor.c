@@ -5,6 +5,7 @@
 #include <config.h>
 
 #include <math.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,8 +138,25 @@ int cmd_formfactor(int argc, char **argv)
     rad_scene scene;
     rad_mesh mesh;
     rad_error err;
-    if (cli_load_scene(argv[optind], &c, &scene))
+    const cli_output check = {output, NULL, NULL};
+    if (cli_outputs_check(&check, 1) || cli_load_scene(argv[optind], &c, &scene))
         return 1;
+    /* F, and E with the error estimates: refused before meshing when the
+     * scene's mesh specification makes more than the machine holds */
+    const double ne = rad_scene_element_count(&scene);
+    char what[96];
+    snprintf(what, sizeof what, "%.0f elements (%d x 8 N^2 bytes of matrices)", ne,
+             c.ff.accuracy != RAD_ACCURACY_CLASSIC ? 2 : 1);
+    if (ne > INT_MAX ||
+        rad_memory_check((c.ff.accuracy != RAD_ACCURACY_CLASSIC ? 16.0 : 8.0) * ne * ne, what,
+                         NULL, &err) != RAD_OK) {
+        if (ne > INT_MAX)
+            cli_error("the scene's meshes make %.0f elements, more than %d", ne, INT_MAX);
+        else
+            cli_error_rec(&err);
+        rad_scene_free(&scene);
+        return 1;
+    }
     if (rad_mesh_build(&mesh, &scene, &err) != RAD_OK) {
         rad_scene_free(&scene);
         cli_error_rec(&err);

@@ -42,4 +42,25 @@ replay() { # replay WHAT PYTHON-ARGS...
 }
 replay "element matrix" elements "$work/f.npy" "$work/f.tsv" 18
 replay "surface matrix" surfaces "$work/s.npy" "$work/s.tsv" 6
+
+# solve writes the same formats: F as formfactor does, B beside its table
+printf 'material e reflect 0.3 emit 1\n' > "$work/lit.scene"
+sed 's/^quad w 0 0 0  1 0 0  1 1 0  0 1 0/quad e 0 0 0  1 0 0  1 1 0  0 1 0/' "$cube" >> "$work/lit.scene"
+"$RADIOSITY" solve -q --form-factors "$work/sf.npy" --elements "$work/b.npy" "$work/lit.scene" &&
+  "$RADIOSITY" solve -q --elements "$work/b.tsv" "$work/lit.scene" &&
+  "$RADIOSITY" formfactor -q -o "$work/lf.npy" "$work/lit.scene"
+ok $? "solve --form-factors F.npy --elements B.npy exits 0"
+cmp -s "$work/sf.npy" "$work/lf.npy"; ok $? "solve's F.npy is formfactor's, byte for byte"
+python3 - "$top_srcdir/tests" "$work/b.npy" "$work/b.tsv" > /dev/null <<'PY'
+import sys, struct
+sys.path.insert(0, sys.argv[1])
+import npy
+(rows, cols), a = npy.read_npy(sys.argv[2])
+head, body = npy.read_table(sys.argv[3])
+c = [head.index(k) for k in ("r", "g", "b")]
+same = (rows, cols) == (len(body), 3) and all(
+    npy.bits(a[i][b]) == npy.bits(float(body[i][c[b]])) for i in range(rows) for b in range(3))
+sys.exit(0 if same else 1)
+PY
+ok $? "solve's B.npy: shape (n, 3), equal bit for bit to the r g b columns of the table"
 done_testing
