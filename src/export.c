@@ -29,20 +29,9 @@
 #endif
 
 #include "radiosity/export.h"
+#include "radiosity/render.h"
 #include "fmtdouble.h"
 #include "radiosity.h"
-
-unsigned char rad_srgb8(double linear, double exposure)
-{
-    double x = linear * exposure;
-    if (!(x > 0))
-        return 0;
-    if (x >= 1)
-        return 255;
-    /* IEC 61966-2-1: 12.92 x below 0.0031308, else 1.055 x^(1/2.4) - 0.055 */
-    double s = x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055;
-    return (unsigned char)floor(255 * s + 0.5);
-}
 
 int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
 {
@@ -291,7 +280,7 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
         const rad_vec3 p = m->vertices[v];
         double r = Bv[v], g = Bv[(size_t)v + nv], b = Bv[(size_t)v + 2 * (size_t)nv];
         fprintf(out, "%.17g %.17g %.17g %.17g %.17g %.17g %u %u %u\n", p.x, p.y, p.z, r, g, b,
-                rad_srgb8(r, exposure), rad_srgb8(g, exposure), rad_srgb8(b, exposure));
+                rad_tone_byte(r, exposure), rad_tone_byte(g, exposure), rad_tone_byte(b, exposure));
     }
     for (int e = 0; e < n; e++) {
         const rad_element *el = &m->elements[e];

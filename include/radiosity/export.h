@@ -66,8 +66,4 @@ RAD_API int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *me
 /* The JSON report. */
 RAD_API int rad_export_report(FILE *out, const rad_run_info *info);
 
-/* Linear radiosity to an 8-bit sRGB value, after scaling by `exposure`
- * (IEC 61966-2-1 transfer curve; values above 1 clip to 255). */
-RAD_API unsigned char rad_srgb8(double linear, double exposure);
-
 #endif /* RAD_EXPORT_H */
