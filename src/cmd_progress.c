@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "plotxy.h"
 #include "progressive.h"
 #include "radiosity/render.h"
 
@@ -195,12 +196,31 @@ typedef struct plot_ctx {
     const char *title;
 } plot_ctx;
 
+/* Figure 7 of Cohen et al. 1988: the RMS error of each method against the
+ * step, on a log axis (steps where it is 0 are not drawn). */
 static int write_plot_to(FILE *out, const void *ctx)
 {
+    static const char *const label[RAD_RACE_METHODS] = {
+        "gathering (Gauss-Seidel)", "shooting, file order", "shooting, sorted",
+        "sorted + ambient"};
     const plot_ctx *p = ctx;
+    const size_t rows = (size_t)p->steps + 1;
+    rad_series s[RAD_RACE_METHODS];
     rad_error err;
-    if (rad_race_plot(p->rms, p->steps, p->title, PLOT_WIDTH, PLOT_HEIGHT, out, &err) !=
-        RAD_OK) {
+    double *x = malloc(sizeof *x * rows);
+    if (!x) {
+        cli_error("out of memory for the plot");
+        return -1;
+    }
+    for (size_t k = 0; k < rows; k++)
+        x[k] = (double)k;
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        s[m] = (rad_series){label[m], x, p->rms + (size_t)m * rows, (int)rows};
+    const rad_plot_spec spec = {p->title, "shooting or gathering steps",
+                                "RMS error of B (eq. 14)", 0, 1, PLOT_WIDTH, PLOT_HEIGHT};
+    rad_status st = rad_plot_xy(s, RAD_RACE_METHODS, &spec, out, &err);
+    free(x);
+    if (st != RAD_OK) {
         cli_error_rec(&err);
         return -1;
     }
