@@ -68,6 +68,7 @@
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -484,6 +485,14 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
         r.emitted[b] = 0;
         for (int i = 0; i < n; i++)
             r.emitted[b] += r.area[i] * fabs(E[(size_t)i + (size_t)b * n]);
+        if (!isfinite(r.emitted[b])) { /* U <= tol * inf would stop at once */
+            free(r.area);
+            return rad_fail(err, RAD_ERR_INVALID,
+                            "the emitted power sum A_i E_i exceeds the largest double (%.3g): "
+                            "progressive refinement with a trace measures power in the "
+                            "scene's units; scale the emission or the scene down",
+                            DBL_MAX);
+        }
     }
     st = shooter_init(&r.sh, m, F, rho, E, r.area, opt->patches != 0, opt->sort != 0, B, err);
     if (st) {
