@@ -24,6 +24,8 @@
 #   - linearity: B is linear in E, so emission 1e308 gives 1e308 times the
 #     B of emission 1, or, where that exceeds the largest double (1.8e308;
 #     the furnace B = E / (1 - rho) = 2e308), exit 1 with a message naming it.
+#   - the race of `radiosity progress' (area-weighted RMS errors): the same
+#     at scale 1e-150, 1e300 times as large at emission 1e300, never inf;
 #   - the accepted range: every polygon between 2^-510 and 2^510 across
 #     (3e-154 to 3.4e153; areas are then normal doubles), so the cube at
 #     1e-160 and 1e160 is refused with exit 1 and a message giving the range.
@@ -187,4 +189,19 @@ solve "$work/furnace8.scene" "$work/f8.tsv"
 awk -F'\t' 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
   { d = $(col["r"]) / 1.6e308 - 1; if (d < 0) d = -d; if (!(d <= 1e-9)) bad = 1 } END { exit bad }' "$work/f8.tsv"
 ok $? "furnace emitting 8e307: B = E / (1 - rho) = 1.6e308 within 1e-9"
+
+# the race of Cohen et al. 1988 weighs errors by area: the same curves at
+# scale 1e-150, and 1e300 times them at emission 1e300 (linearity)
+"$RADIOSITY" progress -q --mesh 2x2 --steps 20 -o "$work/race.tsv" "$cube" &&
+  "$RADIOSITY" progress -q --mesh 2x2 --steps 20 -o "$work/race-small.tsv" "$work/cube-1e-150.scene" &&
+  sed 's/emit 1 1 1/emit 1e300 1e300 1e300/' "$cube" > "$work/bright300.scene" &&
+  "$RADIOSITY" progress -q --mesh 2x2 --steps 20 -o "$work/race-bright.tsv" "$work/bright300.scene"
+ok $? "progress on the unit cube, at scale 1e-150 and at emission 1e300"
+for c in "race-small 1" "race-bright 1e300"; do
+  set -- $c
+  w=$(paste "$work/race.tsv" "$work/$1.tsv" | awk -F'\t' -v f="$2" 'NR > 1 { for (k = 2; k <= 5; k++) {
+        r = $(k + 5) / ($k * f) - 1; if (r < 0) r = -r; if (r > w) w = r; if (!(r <= 1e-9)) bad = 1 }; n++ }
+      END { printf "%.3g\n", w; exit bad || n != 21 }')
+  ok $? "$1: every RMS error is $2 times the unit cube's within 1e-9, finite (worst $w)"
+done
 done_testing
