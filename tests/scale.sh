@@ -24,6 +24,8 @@
 #   - linearity: B is linear in E, so emission 1e308 gives 1e308 times the
 #     B of emission 1, or, where that exceeds the largest double (1.8e308;
 #     the furnace B = E / (1 - rho) = 2e308), exit 1 with a message naming it.
+#   - the Cornell box with its blocks (visibility through CGAL) at 1e-100
+#     and 1e100 gives the B of unit scale within 1e-9;
 #   - the race of `radiosity progress' (area-weighted RMS errors): the same
 #     at scale 1e-150, 1e300 times as large at emission 1e300, never inf;
 #   - the accepted range: every polygon between 2^-510 and 2^510 across
@@ -189,6 +191,28 @@ solve "$work/furnace8.scene" "$work/f8.tsv"
 awk -F'\t' 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
   { d = $(col["r"]) / 1.6e308 - 1; if (d < 0) d = -d; if (!(d <= 1e-9)) bad = 1 } END { exit bad }' "$work/f8.tsv"
 ok $? "furnace emitting 8e307: B = E / (1 - rho) = 1.6e308 within 1e-9"
+
+# hidden surfaces (CGAL) too: the Cornell box with its two blocks at 1e-100
+# and 1e100, 2x2 per quad, against unit scale.  Decimal scales round the
+# corners (relative 1e-16), and the visibility clipping's tolerances are
+# relative to the scene, so B agrees to round-off amplified by the
+# clipping, far below 1e-9.
+box="$top_srcdir/data/cornell-box.scene"
+"$RADIOSITY" solve -q --mesh 2x2 --elements "$work/box.tsv" "$box"
+ok $? "solve the Cornell box, 2x2 per quad (visibility needed)"
+for s in 1e-100 1e100; do
+  awk -v s=$s '$1 == "quad" { for (k = 3; k <= 14; k++) $k = sprintf("%.17g", $k * s) } $1 != "camera"' \
+    "$box" > "$work/box-$s.scene"
+  "$RADIOSITY" solve -q --mesh 2x2 --elements "$work/box-$s.tsv" "$work/box-$s.scene"
+  ok $? "solve the Cornell box scaled by $s"
+  w=$(paste "$work/box.tsv" "$work/box-$s.tsv" | awk -F'\t' '
+    NR == 1 { for (k = 1; k <= NF / 2; k++) col[$k] = k; h = NF / 2; next }
+    { for (c = 0; c < 3; c++) { k = col[c == 0 ? "r" : c == 1 ? "g" : "b"]
+        d = $k - $(k + h); if (d < 0) d = -d; r = $k > 0 ? d / $k : d
+        if (r > w) w = r; if (!(r <= 1e-9)) bad = 1 }; n++ }
+    END { printf "%.3g\n", w; exit bad || n < 100 }')
+  ok $? "Cornell box scaled by $s: B as at unit scale within 1e-9 (worst $w)"
+done
 
 # the race of Cohen et al. 1988 weighs errors by area: the same curves at
 # scale 1e-150, and 1e300 times them at emission 1e300 (linearity)
