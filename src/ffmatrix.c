@@ -17,8 +17,9 @@
  * logarithms it takes are those of a scene of size about 1, so everything
  * here works on a private copy of the geometry shifted exactly and scaled
  * by a power of two into [-1, 1]^3 (rad_mesh_normalized, mesh.h): F and its
- * error estimates are then those of the unit-size scene, for sides from
- * 1e-300 to 1e300 alike, and the caller's mesh (areas, centroids: the
+ * error estimates are then those of the unit-size scene at every scale (two
+ * polygons of side 1e-300 or 1e300 alike; a mesh at any scale whose areas
+ * rad_mesh_build accepts), and the caller's mesh (areas, centroids: the
  * user's units) is left alone.
  */
 #include <config.h>
