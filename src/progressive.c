@@ -70,6 +70,7 @@
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -304,7 +305,18 @@ static void ambient_display(int n, const double *B, const double *rho, const dou
         }
 }
 
-/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be NULL. */
+/* Element i's difference from the reference in band b (eq. 13-14). */
+static double rms_diff(int n, int i, int b, const double *rho, const double *amb,
+                       const double *B, const double *Bref)
+{
+    size_t k = (size_t)i + (size_t)b * n;
+    return B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
+}
+
+/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be
+ * NULL.  Weights A_i / sum A and differences over their largest |d|, so
+ * that neither A d^2 nor d^2 overflows or underflows where the RMS itself
+ * is a double (as hypot; areas of 1e300, radiosities of 1e300). */
 static double rms_error(int n, const double *area, double total_area, const double *rho,
                         const double *amb, const double *B, const double *Bref)
 {
@@ -312,13 +324,16 @@ static double rms_error(int n, const double *area, double total_area, const doub
     if (!(total_area > 0))
         return 0;
     for (int b = 0; b < NB; b++) {
-        double s = 0;
+        double dmax = 0, s = 0;
+        for (int i = 0; i < n; i++)
+            dmax = fmax(dmax, fabs(rms_diff(n, i, b, rho, amb, B, Bref)));
+        if (!(dmax > 0))
+            continue;
         for (int i = 0; i < n; i++) {
-            size_t k = (size_t)i + (size_t)b * n;
-            double d = B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
-            s += area[i] * d * d;
+            double d = rms_diff(n, i, b, rho, amb, B, Bref) / dmax;
+            s += area[i] / total_area * d * d;
         }
-        mean += sqrt(s / total_area);
+        mean += dmax * sqrt(s);
     }
     return mean / NB;
 }
@@ -463,6 +478,14 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
         r.emitted[b] = 0;
         for (int i = 0; i < n; i++)
             r.emitted[b] += r.area[i] * fabs(E[(size_t)i + (size_t)b * n]);
+        if (!isfinite(r.emitted[b])) { /* U <= tol * inf would stop at once */
+            free(r.area);
+            return rad_fail(err, RAD_ERR_INVALID,
+                            "the emitted power sum A_i E_i exceeds the largest double (%.3g): "
+                            "progressive refinement with a trace measures power in the "
+                            "scene's units; scale the emission or the scene down",
+                            DBL_MAX);
+        }
     }
     st = shooter_init(&r.sh, m, F, rho, E, r.area, opt->patches != 0, opt->sort != 0, B, err);
     if (st) {
