@@ -44,11 +44,6 @@ typedef struct sweep_args {
     const char *output, *plot;
 } sweep_args;
 
-typedef struct solution {
-    rad_mesh mesh;
-    double *B;
-} solution;
-
 #define TIME_RUNS 9
 #define TIME_SPAN 0.1
 
@@ -63,13 +58,6 @@ static double median(double *x, int n)
 {
     qsort(x, (size_t)n, sizeof *x, cmp_double);
     return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
-}
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 static void help(void)
@@ -199,66 +187,44 @@ static int parse_args(sweep_args *a, int argc, char **argv)
     return -1; /* go on */
 }
 
-/* Mesh the scene n x n, fill F in the given mode, solve with the solver. */
+/* The library's pipeline on the scene meshed n x n, in the given mode
+ * with the given solver.  Each stage is timed as the median of up to
+ * TIME_RUNS runs, repeated while the runs so far took less than TIME_SPAN
+ * s in all: a small mesh takes milliseconds, and one run of it is noise.
+ * out keeps the last run's mesh and B. */
 static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver,
-                   solution *out, double *t_ff, double *t_solve)
+                   rad_result *out, double *t_ff, double *t_solve)
 {
     rad_error err;
-    rad_solve_options so;
-    rad_scene_set_mesh(scene, n, n);
-    memset(out, 0, sizeof *out);
-    if (rad_mesh_build(&out->mesh, scene, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    const size_t ne = (size_t)out->mesh.nelements;
-    char what[64];
-    snprintf(what, sizeof what, "mesh %dx%d: %zu elements", n, n, ne);
-    if (rad_memory_check(rad_solve_bytes((int)ne, 0), what, NULL, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        rad_mesh_free(&out->mesh);
-        return 1;
-    }
-    double *F = malloc(sizeof *F * ne * ne);
-    out->B = malloc(sizeof *out->B * ne * RAD_BANDS);
-    if (!F || !out->B) {
-        free(F);
-        cli_error("out of memory for %zu elements", ne);
-        return 1;
-    }
-    /* Each stage is timed as the median of up to TIME_RUNS runs, repeated
-     * while the runs so far took less than TIME_SPAN s in all: a small
-     * mesh takes milliseconds, and one run of it is noise. */
+    rad_pipeline_options po;
     double tf[TIME_RUNS], ts[TIME_RUNS], spent = 0;
-    int nf = 0, ns = 0;
+    int runs = 0;
     rad_status st = RAD_OK;
-    /* the solve of the row before left OpenBLAS's threads spinning for a
-     * tenth of a second (blasthreads.c): they would take a core from the
-     * fill */
-    rad_blas_park_threads();
-    while (st == RAD_OK && nf < TIME_RUNS && spent < TIME_SPAN) {
-        double t0 = now();
-        st = rad_ff_matrix(&out->mesh, ff, F, NULL, NULL, &err);
-        tf[nf++] = now() - t0;
-        spent += tf[nf - 1];
+    rad_scene_set_mesh(scene, n, n);
+    rad_pipeline_options_init(&po);
+    po.ff = *ff;
+    po.solve.solver = (rad_solver)solver;
+    po.solve.tolerance = 1e-13;
+    memset(out, 0, sizeof *out);
+    while (st == RAD_OK && runs < TIME_RUNS && spent < TIME_SPAN) {
+        rad_result_free(out);
+        /* the solve before left OpenBLAS's threads spinning for a tenth
+         * of a second (blasthreads.c): they would take a core from the fill */
+        rad_blas_park_threads();
+        st = rad_pipeline_run(scene, &po, out, &err);
+        tf[runs] = out->t_formfactor;
+        ts[runs] = out->t_solve;
+        spent += tf[runs] + ts[runs];
+        runs++;
     }
-    rad_solve_options_init(&so);
-    so.solver = (rad_solver)solver;
-    so.tolerance = 1e-13;
-    for (spent = 0; st == RAD_OK && ns < TIME_RUNS && spent < TIME_SPAN;) {
-        double t0 = now();
-        st = rad_solve(&out->mesh, F, &so, out->B, NULL, &err);
-        ts[ns++] = now() - t0;
-        spent += ts[ns - 1];
-    }
-    free(F);
     if (st != RAD_OK) {
         cli_error("mesh %dx%d, %s, %s: %s", n, n, acc_names[ff->accuracy], solver_names[solver],
                   err.message);
+        rad_result_free(out);
         return 1;
     }
-    *t_ff = median(tf, nf);
-    *t_solve = median(ts, ns);
+    *t_ff = median(tf, runs);
+    *t_solve = median(ts, runs);
     return 0;
 }
 
@@ -354,7 +320,8 @@ int cmd_sweep(int argc, char **argv)
         rad_scene_free(&scene);
         return 1;
     }
-    solution truth = {0};
+    rad_result truth;
+    memset(&truth, 0, sizeof truth);
     int finest = a.truth_mesh;
     for (int k = 0; k < a.nmeshes; k++)
         finest = a.meshes[k] > finest ? a.meshes[k] : finest;
@@ -377,7 +344,7 @@ int cmd_sweep(int argc, char **argv)
         for (int i = 0; i < a.nacc; i++)
             for (int j = 0; j < a.nsolvers; j++) {
                 rad_ff_options o = a.common.ff;
-                solution sol;
+                rad_result sol;
                 row *w = &rows[nr];
                 o.accuracy = (rad_accuracy)a.acc[i];
                 if (run_one(&scene, a.meshes[m], &o, a.solvers[j], &sol, &w->t_ff, &w->t_solve))
@@ -393,8 +360,7 @@ int cmd_sweep(int argc, char **argv)
                             w->mesh, w->mesh, acc_names[w->acc], solver_names[w->solver],
                             w->t_ff + w->t_solve, w->rms);
                 nr++;
-                free(sol.B);
-                rad_mesh_free(&sol.mesh);
+                rad_result_free(&sol);
             }
     const table_out t = {rows, nr, tname};
     if (cli_write_atomic(a.output, write_table_to, &t))
@@ -403,8 +369,7 @@ int cmd_sweep(int argc, char **argv)
         goto done;
     status = 0;
 done:
-    free(truth.B);
-    rad_mesh_free(&truth.mesh);
+    rad_result_free(&truth);
     rad_scene_free(&scene);
     return status;
 }
