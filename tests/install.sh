@@ -32,4 +32,19 @@ cat "$incdir/radiosity.h" "$incdir"/radiosity/*.h |
 [ -s "$work/declared" ] && diff "$work/declared" "$work/exported" > "$work/diff"
 ok $? "nm -D lists exactly the $(wc -l < "$work/declared") functions the headers declare $(tr '\n' ' ' < "$work/diff" | head -c 400)"
 grep -q '^RAD_API' "$incdir/radiosity.h"; ok $? "the headers mark what is exported (RAD_API)"
+missing=
+while read -r f; do grep -q "$f" "$top_srcdir/man/radiosity.3" || missing="$missing $f"; done < "$work/declared"
+[ -z "$missing" ]; ok $? "radiosity(3) names every declared function:${missing:- yes}"
+# each installed header stands alone, in C and in C++ (extern "C")
+bad=
+for h in "$incdir/radiosity.h" "$incdir"/radiosity/*.h; do
+  rel=${h#"$incdir"/}
+  printf '#include <%s>\nint main(void) { return 0; }\n' "$rel" > "$work/one.c"
+  ${CC:-cc} -Wall -Wextra -Werror -I"$incdir" -c "$work/one.c" -o "$work/one.o" 2>> "$work/hdr.err" || bad="$bad $rel(C)"
+  if command -v ${CXX:-c++} > /dev/null 2>&1; then
+    cp "$work/one.c" "$work/one.cc"
+    ${CXX:-c++} -Wall -Wextra -Werror -I"$incdir" -c "$work/one.cc" -o "$work/one.o" 2>> "$work/hdr.err" || bad="$bad $rel(C++)"
+  fi
+done
+[ -z "$bad" ]; ok $? "every installed header compiles alone in C and C++:${bad:- yes}"
 done_testing

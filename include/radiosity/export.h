@@ -13,6 +13,10 @@
 
 #include "radiosity.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Everything the JSON report says about one run. */
 typedef struct rad_run_info {
     const char *scene;
@@ -65,5 +69,9 @@ RAD_API int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *me
                    const double *Bv);
 /* The JSON report. */
 RAD_API int rad_export_report(FILE *out, const rad_run_info *info);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RAD_EXPORT_H */

@@ -13,6 +13,10 @@
 
 #include "radiosity.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct rad_pipeline_options {
     rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
     rad_solve_options solve;    /* solver and its options (progress is
@@ -60,5 +64,9 @@ RAD_API rad_status rad_memory_check(double need, const char *what, double *have,
  * space and data limits (RLIMIT_AS, RLIMIT_DATA) and the cgroup's
  * memory.max less its memory.current; 0 if none is known. */
 RAD_API double rad_memory_limit(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RAD_PIPELINE_H */

@@ -25,6 +25,10 @@
 #include "radiosity.h"
 #include "radiosity/render.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Parse PLY text held in memory; `name` is used in messages.  camera (may
  * be NULL) receives the camera of the comment, or defined = 0. */
 RAD_API rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, const char *text,
@@ -32,5 +36,9 @@ RAD_API rad_status rad_ply_parse(rad_render_model *model, rad_camera *camera, co
 /* Read a PLY file ("-" is standard input). */
 RAD_API rad_status rad_ply_read(rad_render_model *model, rad_camera *camera, const char *path,
                         rad_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RAD_PLYREAD_H */

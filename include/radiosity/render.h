@@ -21,6 +21,10 @@
 
 #include "radiosity.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* A polygon model with radiosity.  Arrays are owned by the model
  * (rad_render_model_free).  Bands are column-major like everywhere else in
  * the library: vrad[v + b*nvertices], frad[f + b*nfaces].
@@ -114,5 +118,9 @@ RAD_API void rad_image_to_rgb8(const rad_image *img, unsigned char *rgb);
 
 /* Write the tone-mapped picture to out as a PNG (through cairo). */
 RAD_API rad_status rad_image_write_png(const rad_image *img, FILE *out, rad_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* RAD_RENDER_H */
