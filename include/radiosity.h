@@ -181,6 +181,9 @@ typedef struct rad_ff_options {
 } rad_ff_options;
 
 #define RAD_GAUSS_MAX 20
+/* A row of F may exceed 1 by this much before the fill calls it wrong:
+ * the default mode's promise, summed over a row (sum_j 1e-6 F_ij <= 1e-6). */
+#define RAD_ROW_SUM_SLACK 1e-6
 
 RAD_API void rad_ff_options_init(rad_ff_options *opt);
 
@@ -202,6 +205,12 @@ typedef struct rad_ff_stats {
     double max_row_error;       /* largest row sum of the estimated absolute
                                    errors, max_i sum_j |dF_ij| (a bound on
                                    ||dF||_inf; NaN in classic) */
+    double promise;             /* the mode's promise on each entry's relative
+                                   error: 1e-6 default, 1e-9 reference, NaN classic */
+    long promise_unmet;         /* entries whose own error estimate exceeds
+                                   promise x |F_ij| (ordered pairs) */
+    long rows_above_one;        /* rows with sum_j F_ij > 1 + RAD_ROW_SUM_SLACK:
+                                   impossible (energy from nowhere) */
     int vis_needed;             /* 0: nothing can be blocked, no visibility work */
     double vis_pairs_tested, vis_pairs_blockable, vis_pairs_blocked, vis_pairs_partial;
     double vis_seconds;         /* visibility setup + thread time (occlusion.h) */

@@ -133,9 +133,36 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
     case OPT_QUIET:
         c->quiet = 1;
         return 0;
+    case OPT_STRICT:
+        c->strict = 1;
+        return 0;
     default:
         return 1;
     }
+}
+
+int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)
+{
+    static const char *const names[] = {"classic", "default", "reference"};
+    const char *mode = names[c->ff.accuracy];
+    const char *hint = c->ff.accuracy == RAD_ACCURACY_CLASSIC
+                           ? ": the classic rule fails for this geometry; try --accuracy default"
+                           : "";
+    if (st->negative || st->above_one)
+        cli_error("warning: %ld form factors below 0 and %ld above 1 (min %.3g, max %.3g)%s",
+                  st->negative, st->above_one, st->min_value, st->max_value, hint);
+    if (st->rows_above_one)
+        cli_error("warning: %ld rows of F sum to more than 1 + %g (energy from nowhere)%s",
+                  st->rows_above_one, RAD_ROW_SUM_SLACK, hint);
+    if (st->promise_unmet == 0)
+        return 0;
+    cli_error("%s%ld form factors miss the %s mode's promise of %g relative error (their own "
+              "estimates say so)%s",
+              c->strict ? "" : "warning: ", st->promise_unmet, mode, st->promise,
+              c->strict ? "; --strict makes that an error"
+                        : c->ff.accuracy == RAD_ACCURACY_DEFAULT ? "; try --accuracy reference"
+                                                                 : "");
+    return c->strict;
 }
 
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)

@@ -21,6 +21,7 @@ typedef struct cli_common {
     int mesh_n, mesh_m;         /* 0: keep the scene's */
     rad_ff_options ff;
     int quiet;
+    int strict;                 /* --strict: an unmet accuracy promise is an error */
 } cli_common;
 
 /* Long-option ids for the common options (above any short option). */
@@ -30,6 +31,7 @@ enum {
     OPT_ACCURACY,
     OPT_THREADS,
     OPT_QUIET,
+    OPT_STRICT,
     OPT_HELP,
     OPT_COMMON_END
 };
@@ -40,6 +42,7 @@ enum {
     {"accuracy", required_argument, NULL, OPT_ACCURACY},          \
     {"threads", required_argument, NULL, OPT_THREADS},            \
     {"quiet", no_argument, NULL, OPT_QUIET},                      \
+    {"strict", no_argument, NULL, OPT_STRICT},                    \
     {"help", no_argument, NULL, OPT_HELP}
 
 #define CLI_COMMON_HELP                                                          \
@@ -49,6 +52,9 @@ enum {
     "      --accuracy MODE     classic (the 1984 rule alone), default (that\n"   \
     "                          rule made safe) or reference (error-controlled)\n"\
     "      --threads N         OpenMP threads (default: all cores)\n"            \
+    "      --strict            an unmet accuracy promise (a form factor whose own\n" \
+    "                          error estimate exceeds the mode's 1e-6 or 1e-9)\n"\
+    "                          is an error (exit 1), not a warning\n"           \
     "  -q, --quiet             no progress bar or summary\n"                     \
     "  -h, --help              show this help and exit\n"
 
@@ -56,6 +62,13 @@ void cli_common_init(cli_common *c);
 /* Handle a common option: 0 handled, 1 not a common option, 2 usage error
  * (message printed). */
 int cli_common_option(cli_common *c, int opt, const char *arg);
+
+/* Say what the form factors cannot stand behind: values outside [0, 1],
+ * rows summing above 1, entries whose own estimate misses the mode's
+ * promise (the classic rule's faults point to --accuracy default).  Warns
+ * on standard error; returns 1 when --strict makes an unmet promise an
+ * error (printed), else 0. */
+int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st);
 
 /* "radiosity: " + message on standard error. */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -169,7 +182,9 @@ typedef struct cli_solve {
 typedef struct cli_run {
     rad_scene scene;
     rad_result res;
-    rad_status status;          /* of rad_pipeline_run */
+    rad_status status;          /* of rad_pipeline_run (RAD_ERR_INVALID when
+                                   --strict refused an unmet promise) */
+    int promise_unmet;          /* --strict refused the run for that */
     double t_parse, t_output;
     rad_shot *shots;            /* the --trace rows */
     int nshots, cap;

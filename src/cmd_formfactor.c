@@ -179,11 +179,8 @@ int cmd_formfactor(int argc, char **argv)
         cli_error_rec(&err);
         goto done;
     }
-    if (st.negative || st.above_one)
-        cli_error("warning: %ld form factors below 0 and %ld above 1 (min %.3g, max %.3g): "
-                  "the %s rule is unreliable for this geometry; try --accuracy default",
-                  st.negative, st.above_one, st.min_value, st.max_value,
-                  c.ff.accuracy == RAD_ACCURACY_CLASSIC ? "classic" : "chosen");
+    if (cli_ff_verdict(&c, &st))
+        goto done;
     table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, (int)n};
     const int npy = rad_export_is_npy(output);
     if (surfaces && per_surface(&t, &FS, &ES, &AS))

@@ -196,7 +196,9 @@ static void run_info(const cli_run *r, rad_run_info *in)
     in->ff_pairs_per_second = res->t_formfactor > 0 ? res->ff.pairs / res->t_formfactor : 0;
     in->ff = res->ff_done ? &res->ff : NULL;
     in->solve = res->solve_done ? &res->solve : NULL;
-    in->status = r->status == RAD_OK             ? "ok"
+    in->b_negative = res->solve_done && r->status == RAD_OK ? res->b_negative : -1;
+    in->status = r->promise_unmet                ? "promise unmet"
+                 : r->status == RAD_OK             ? "ok"
                  : r->status == RAD_ERR_SINGULAR ? "singular"
                  : r->status == RAD_ERR_NOCONV   ? "not converged"
                                                  : "error";
@@ -310,16 +312,24 @@ int cli_run_solve(cli_run *run)
         po.solve.shot_user = run;
     }
     run->status = rad_pipeline_run(&run->scene, &po, &run->res, &err);
-    const rad_ff_stats *ffs = &run->res.ff;
-    if (run->res.ff_done && (ffs->negative || ffs->above_one))
-        cli_error("warning: %ld form factors below 0 and %ld above 1 (min %.3g, max %.3g): "
-                  "the %s rule is unreliable for this geometry",
-                  ffs->negative, ffs->above_one, ffs->min_value, ffs->max_value,
-                  accuracy_names[s->common.ff.accuracy]);
+    if (run->res.ff_done && cli_ff_verdict(&s->common, &run->res.ff)) {
+        run->promise_unmet = 1;
+        if (run->status == RAD_OK) { /* the report says why; nothing else */
+            run->status = RAD_ERR_INVALID;
+            return 1;
+        }
+    }
     if (run->status != RAD_OK) {
         cli_error_rec(&err);
         return 1;
     }
+    if (run->res.b_negative)
+        cli_error("warning: B is negative in %ld element-band values: no physical "
+                  "solution%s", run->res.b_negative,
+                  s->common.ff.accuracy == RAD_ACCURACY_CLASSIC
+                      ? " (the classic rule's form factors are wrong here; try --accuracy "
+                        "default)"
+                      : "");
     if (!s->common.quiet)
         summary(run);
     return 0;

@@ -356,6 +356,9 @@ int rad_export_report(FILE *out, const rad_run_info *in)
         jnum(out, "form_factor_max_error_estimate", f->max_errest, 1);
         jnum(out, "form_factor_max_relative_error_estimate", f->max_relerr, 1);
         jnum(out, "form_factor_max_row_error_estimate", f->max_row_error, 1);
+        jnum(out, "form_factors_promise", f->promise, 1);
+        fprintf(out, "  \"form_factors_promise_unmet\": %ld,\n", f->promise_unmet);
+        fprintf(out, "  \"form_factor_rows_above_one\": %ld,\n", f->rows_above_one);
         fprintf(out,
                 "  \"visibility\": {\"needed\": %s, \"pairs_tested\": %.0f, "
                 "\"pairs_blockable\": %.0f, \"pairs_blocked\": %.0f, \"pairs_partial\": %.0f, "
@@ -379,6 +382,8 @@ int rad_export_report(FILE *out, const rad_run_info *in)
         jbands(out, "absorbed_power", s->absorbed);
         jbands(out, "escaped_power", s->escaped);
         jbands(out, "energy_balance_relative", s->balance);
+        if (in->b_negative >= 0)
+            fprintf(out, "  \"b_negative\": %ld,\n", in->b_negative);
     }
     fprintf(out, "  \"format\": 1\n}\n");
     return ferror(out) ? -1 : 0;

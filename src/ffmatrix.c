@@ -159,6 +159,12 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
     return RAD_OK;
 }
 
+/* The promise of each mode on an entry's relative error (README, radiosity.h). */
+static double promise_of(rad_accuracy a)
+{
+    return a == RAD_ACCURACY_REFERENCE ? 1e-9 : a == RAD_ACCURACY_DEFAULT ? 1e-6 : NAN;
+}
+
 /* Pairs (i, j > i): the contour sum S gives F_ji = S/(2 pi A_j), stored in
  * column i (contiguous, so threads on neighbouring i do not share cache
  * lines); mirror() fills F_ij afterwards.  Tracks the largest estimated
@@ -167,8 +173,10 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
  * is 1 / (2 pi A_k).  Returns 0, or -1 when scratch ran out. */
 static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int i,
                        const rad_ff_options *opt, rad_ff_scratch *w, rad_occ_work *ow, double *F,
-                       double *errest, double *rowerr, double *maxerr, double *maxrel)
+                       double *errest, double *rowerr, double *maxerr, double *maxrel,
+                       long *unmet)
 {
+    const double promise = promise_of(opt->accuracy); /* NaN: no test */
     const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
     double *col = F + (size_t)i * n, *ecol = errest ? errest + (size_t)i * n : NULL;
     double row_i = 0;
@@ -187,6 +195,7 @@ static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int
             *maxerr = ea > *maxerr ? ea : *maxerr; /* not fmax: a libm call here */
             if (e > *maxrel * fabs(s))
                 *maxrel = e / fabs(s);
+            *unmet += e > promise * fabs(s);
             if (rowerr) {
                 row_i += ei;
                 rowerr[j] += ej;
@@ -235,6 +244,12 @@ static void fill_stats(const double *F, int n, rad_ff_stats *st)
     }
     if (n < 2)
         st->min_value = st->max_value = 0;
+    for (int i = 0; i < n; i++) { /* rows: F is column-major */
+        double r = 0;
+        for (int j = 0; j < n; j++)
+            r += F[(size_t)i + (size_t)j * n];
+        st->rows_above_one += r > 1 + RAD_ROW_SUM_SLACK;
+    }
 }
 
 rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F,
@@ -274,6 +289,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     rad_ff_edge *edges = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
+    long unmet = 0;
     if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
@@ -304,7 +320,8 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     const int block = n / 50 > 64 ? n / 50 : 64;
     for (int i0 = 0; i0 < n && !failed && !stop && !nomem; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
-#pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel)
+#pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel) \
+    reduction(+ : unmet)
         {
             rad_ff_scratch w;
             rad_occ_work ow;
@@ -314,7 +331,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
 #pragma omp for schedule(dynamic, 1)
             for (int i = i0; i < i1; i++)
                 if (fill_column(polys, inv_t, n, i, opt, &w, occ ? &ow : NULL, F, errest,
-                                my_rowerr, &maxerr, &maxrel) != 0)
+                                my_rowerr, &maxerr, &maxrel, &unmet) != 0)
                     failed = 1;
 #pragma omp critical(rad_occ_stats)
             rad_occ_stats_add(&vst, &ow.stats);
@@ -361,6 +378,8 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
         stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
         stats->max_row_error = max_row_error;
+        stats->promise = promise_of(opt->accuracy);
+        stats->promise_unmet = 2 * unmet; /* both entries of each pair */
         stats->vis_needed = vst.needed;
         stats->vis_pairs_tested = vst.pairs_tested;
         stats->vis_pairs_blockable = vst.pairs_blockable;

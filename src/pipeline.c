@@ -115,6 +115,8 @@ rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *
     r->t_solve = t3 - t2;
     r->solve_done = 1;
     if (st == RAD_OK) {
+        for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
+            r->b_negative += r->B[k] < 0;
         rad_smooth_vertices(&r->mesh, r->B, r->Bv);
         r->t_smooth = seconds() - t3;
     }

@@ -29,7 +29,10 @@ typedef struct rad_run_info {
     double ff_pairs_per_second;
     const rad_ff_stats *ff;
     const rad_solve_report *solve;
-    const char *status;         /* "ok", "singular", "not converged" */
+    const char *status;         /* "ok", "singular", "not converged",
+                                   "promise unmet" (--strict), "error" */
+    long b_negative;            /* element-band values of B below 0: impossible
+                                   (classic mode's nonsense), -1 unknown */
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */

@@ -36,6 +36,7 @@ typedef struct rad_result {
     rad_ff_stats ff;
     rad_solve_report solve;
     int ff_done, solve_done;    /* which of ff, solve hold figures */
+    long b_negative;            /* element-band values of B below 0 (solved) */
     double memory_bytes;        /* the estimate checked before allocating */
     double memory_available;    /* what the machine allowed (rad_memory_limit) */
     double t_mesh, t_formfactor, t_solve, t_smooth;  /* seconds */
