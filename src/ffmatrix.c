@@ -372,6 +372,13 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
     if (stop)
         return rad_fail(err, RAD_ERR_INVALID, "interrupted");
+    for (size_t k = 0; k < (size_t)n * n; k++) /* never a NaN passed on as a value */
+        if (!isfinite(F[k]))
+            return rad_fail(err, RAD_ERR_INVALID,
+                            "the form factor from element %zu to element %zu is not a "
+                            "finite double: the scene's sizes and distances differ by more "
+                            "orders of magnitude than double precision holds",
+                            k % (size_t)n, k / (size_t)n);
     if (stats) {
         memset(stats, 0, sizeof *stats);
         fill_stats(F, n, stats);

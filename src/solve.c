@@ -165,11 +165,15 @@ static rad_status solve_lu(int n, const double *F, const double *rho, const doub
     }
     rep->rcond = rep->systems == 1 ? rcond : fmin(rep->rcond, rcond);
     if (!(rcond >= RAD_RCOND_MIN)) {
-        st = rad_fail(err, RAD_ERR_SINGULAR,
-                      "the radiosity system is singular (reciprocal condition %.3g < %g): "
-                      "a closed enclosure that reflects everything (rho = 1) never "
-                      "absorbs light, so no steady state exists",
-                      rcond, RAD_RCOND_MIN);
+        /* rho = 1 is the one physical cause; with every rho < 1 and F
+         * sane, (I - rho F) is diagonally dominant and cannot be singular */
+        st = rad_fail(err, RAD_ERR_SINGULAR, "the radiosity system is singular (reciprocal "
+                      "condition %.3g < %g): %s", rcond, RAD_RCOND_MIN,
+                      rho_max >= 1 ? "a closed enclosure that reflects everything (rho = 1) "
+                                     "never absorbs light, so no steady state exists"
+                                   : "every rho is below 1, so the form factors are at fault "
+                                     "(not finite, or rows of F summing above 1: see the "
+                                     "warnings above, and try --accuracy default)");
         goto done;
     }
     if (opt->ff_row_error >= 0) {

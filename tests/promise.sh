@@ -62,4 +62,13 @@ for acc in default reference; do
 done
 "$RADIOSITY" formfactor -q --strict -o "$work/f.tsv" "$work/near.scene"
 ok $? "formfactor --strict on touching squares in default mode: the promise holds, exit 0"
+
+# never a NaN with exit 0: two unit squares 1e155 apart (F ~ 3e-311, below
+# what the fill can represent) are refused, not written as -nan
+printf 'material w reflect 0.5 emit 1\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\nquad w 0 0 1e155  0 1 1e155  1 1 1e155  1 0 1e155\n' > "$work/far.scene"
+"$RADIOSITY" formfactor -q -o "$work/far.tsv" "$work/far.scene" 2> "$work/far.err"; rc=$?
+[ $rc -eq 1 ] && grep -q 'not a finite double' "$work/far.err" && [ ! -e "$work/far.tsv" ]
+ok $? "squares 1e155 apart: formfactor refuses (exit 1), writes no NaN"
+"$RADIOSITY" solve -q --elements "$work/far.tsv" "$work/far.scene" 2> /dev/null; rc=$?
+[ $rc -eq 1 ] && [ ! -e "$work/far.tsv" ]; ok $? "and so does solve"
 done_testing
