@@ -666,14 +666,69 @@ static rad_status check_options(const rad_render_model *m, const rad_render_opti
     return RAD_OK;
 }
 
+/* The picture does not depend on the unit of length, so it is drawn in a
+ * frame centred on the eye and scaled by a power of two (exact) until the
+ * scene and the point looked at span about 1: a cube of side 1e150 then
+ * draws as the unit cube does, where the plane offsets and the bilinear
+ * inversion's discriminant (products of two or four coordinates) would
+ * otherwise overflow.  *k receives the exponent: lengths in the frame are
+ * the user's times 2^-k. */
+static rad_status eye_frame(const rad_render_model *m, const rad_camera *c,
+                            rad_render_model *fm, rad_camera *fc, int *k, rad_error *err)
+{
+    double big = 0;
+    rad_vec3 at = v3_sub(c->at, c->eye);
+    big = fmax(big, fmax(fabs(at.x), fmax(fabs(at.y), fabs(at.z))));
+    for (int i = 0; i < m->nvertices; i++) {
+        rad_vec3 d = v3_sub(m->pos[i], c->eye);
+        big = fmax(big, fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z))));
+    }
+    if (!isfinite(big))
+        return rad_fail(err, RAD_ERR_INVALID, "the scene and the camera lie farther apart "
+                        "than a double can measure");
+    frexp(big > 0 ? big : 1, k);
+    *fm = *m;
+    fm->pos = malloc(sizeof *fm->pos * (size_t)(m->nvertices ? m->nvertices : 1));
+    if (!fm->pos)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (int i = 0; i < m->nvertices; i++) {
+        rad_vec3 d = v3_sub(m->pos[i], c->eye);
+        fm->pos[i] = v3(ldexp(d.x, -*k), ldexp(d.y, -*k), ldexp(d.z, -*k));
+    }
+    *fc = *c;
+    fc->eye = v3(0, 0, 0);
+    fc->at = v3(ldexp(at.x, -*k), ldexp(at.y, -*k), ldexp(at.z, -*k));
+    return RAD_OK;
+}
+
+static rad_status render_frame(const rad_render_model *m, const rad_render_options *opt,
+                               rad_image *img, rad_error *err);
+
 rad_status rad_render(const rad_render_model *m, const rad_render_options *opt,
                       rad_image *img, rad_error *err)
 {
+    rad_render_model fm;
+    rad_render_options fo = *opt;
+    int k;
+    memset(img, 0, sizeof *img);
+    rad_status st = check_options(m, opt, err);
+    if (st == RAD_OK)
+        st = eye_frame(m, &opt->camera, &fm, &fo.camera, &k, err);
+    if (st != RAD_OK)
+        return st;
+    st = render_frame(&fm, &fo, img, err);
+    free(fm.pos);
+    if (st == RAD_OK) /* depths back in the user's unit */
+        for (size_t p = 0; p < (size_t)img->width * (size_t)img->height; p++)
+            img->depth[p] = ldexp(img->depth[p], k);
+    return st;
+}
+
+static rad_status render_frame(const rad_render_model *m, const rad_render_options *opt,
+                               rad_image *img, rad_error *err)
+{
     face_work w;
     rad_status st;
-    memset(img, 0, sizeof *img);
-    if ((st = check_options(m, opt, err)))
-        return st;
     int maxn = 3;
     for (int f = 0; f < m->nfaces; f++)
         if (m->face_first[f + 1] - m->face_first[f] > maxn)

@@ -150,4 +150,37 @@ echo precious > "$work/keep.png"
 "$RADIOSITY" render "$work/sol.ply" -o "$work/nodir/x.png" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ]; ok $? "unwritable output: exit $rc, '$(head -n 1 "$work/err")'"
 [ -z "$(ls "$work" | grep tmp)" ]; ok $? "no temporary files left behind"
+
+# the picture does not depend on the unit of length (render.c, eye_frame):
+# the cube scaled by 2^500 and 2^-500 (exact) draws the same bytes as the
+# unit cube; scaled by 1e150 and moved 1e12 away (rounded), the same
+# radiosity along a row within 1e-9 but for a pixel or two at the edges
+scaled() { # scaled FACTOR SHIFT: the 1984 cube, every length times FACTOR, moved by SHIFT
+  awk -v f="$1" -v d="$2" '
+    $1 == "quad" { for (k = 3; k <= 14; k++) $k = sprintf("%.17g", $k * f + d) }
+    $1 == "camera" { for (k = 3; k <= 5; k++) $k = sprintf("%.17g", $k * f + d)
+                     for (k = 7; k <= 9; k++) $k = sprintf("%.17g", $k * f + d) }
+    { print }' "$top_srcdir/data/goral1984-cube.scene"
+}
+pic() { # pic NAME FACTOR SHIFT
+  scaled "$2" "$3" > "$work/$1.scene"
+  "$RADIOSITY" render -q --mesh 4x4 --width 96 --height 96 --scanline 48 \
+    --profile "$work/$1.tsv" -o "$work/$1.png" "$work/$1.scene"
+}
+pic unit 1 0 && pic up 3.2733906078961419e150 0 && pic down 3.0549363634996047e-151 0
+ok $? "the cube drawn at 1, 2^500 and 2^-500"
+cmp -s "$work/unit.png" "$work/up.png" && cmp -s "$work/unit.png" "$work/down.png"
+ok $? "scaled by 2^500 or 2^-500 (exact): the same PNG, byte for byte"
+pic big 1e150 0 && pic far 1 1e12
+ok $? "the cube drawn at 1e150, and 1e12 away"
+# 1e12 away, every coordinate is rounded to 2^-13 (1.2e-4 of the cube's
+# side): the geometry itself moves by that much, so the tolerance is 1e-3
+for v in big:1e-9 far:1e-3; do
+  tol=${v#*:}; v=${v%%:*}
+  awk -F'\t' -v tol="$tol" 'NR == FNR { v[FNR] = $2 + $3 + $4; next }
+    FNR > 1 { d = $2 + $3 + $4 - v[FNR]; if (d < 0) d = -d
+              if (d > tol * (v[FNR] > 0 ? v[FNR] : 1)) bad++ }
+    END { exit bad > 2 }' "$work/unit.tsv" "$work/$v.tsv"
+  ok $? "$v: the row's radiosity as at unit scale (all but at most 2 edge pixels within $tol)"
+done
 done_testing
