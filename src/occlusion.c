@@ -16,9 +16,14 @@
  *    two convex polygons pass through an edge of one and a vertex of the
  *    other; they are those candidates with every vertex on one side.  The
  *    test is conservative: a pair it cannot clear goes on to step 3, which
- *    then finds nothing hidden and keeps S unchanged.  Touching (within
- *    1e-9 of the scene's size) counts as separated: what a surface hides
- *    through a contact of zero thickness has zero measure.
+ *    then finds nothing hidden and keeps S unchanged.  Touching counts as
+ *    separated: what a surface hides through a contact of zero thickness
+ *    has zero measure.  Touching means within round-off and the
+ *    surfaces' own twist (OCC_SNAP below), nothing more: an element a
+ *    hair above a floor, facing it, is in front of the floor.
+ *    Each pair is worked in its own frame (coordinates less the centroid
+ *    of element i), so that the points the cuts construct keep the
+ *    digits of the pair, not those of its distance from the origin.
  *    Blockers are the scene's surfaces, not elements: a planar surface
  *    cannot block a segment that starts on it, so the surfaces of i and j
  *    are left out, and the rest is tested whole.  The test runs twice:
@@ -87,6 +92,7 @@
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,9 +107,17 @@
 
 #define RAD_PI 3.14159265358979323846
 
-/* Tolerances, relative to the scene's bounding-box diagonal L. */
-#define OCC_SNAP 1e-11      /* a point this close to a plane is on it */
-#define OCC_TOUCH 1e-9      /* a blocker this far into a shaft only touches it */
+/* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
+ * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
+ * round-off of mesh vertices interpolated at the scene's coordinates
+ * (OCC_ROUND ulps of the largest), plus the surfaces' own departures from
+ * planarity (the scene accepts 1e-6 of a quad's size; scene.c): two
+ * faces of one twisted panel lie on one plane as far as the data can say.
+ * Nothing larger: a blocker 1e-9 of the scene's size from an element is
+ * in front of it, and hides what lies behind (issue 20: a tolerance of
+ * 1e-9 L let a floor's light through to an element 1e-9 above it). */
+#define OCC_SNAP 1e-11
+#define OCC_ROUND 16
 #define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
                                are dropped (round-off slivers of the cuts) */
 
@@ -121,10 +135,12 @@ struct rad_occ {
     rad_vec3 *sv;               /* surface polygons: sv[sfirst[s] .. sfirst[s+1]) */
     int *sfirst;
     rad_vec3 *snormal, *slo, *shi;
+    double *stwist;             /* each surface's largest vertex distance from
+                                   its plane through the vertex mean */
     int *esurf;                 /* surface of each element */
     size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
     int *cand;
-    double snap, touch;         /* absolute tolerances */
+    double snap;                /* absolute tolerance (see OCC_SNAP) */
 };
 
 static double now(void)
@@ -256,6 +272,24 @@ static int ps_push(polyset *s, const rad_vec3 *p, int n)
     return 0;
 }
 
+/* ps_push of p less `origin` (into the pair's local frame). */
+static int ps_push_shifted(polyset *s, const rad_vec3 *p, int n, rad_vec3 origin)
+{
+    if (ps_reserve(s, n))
+        return -1;
+    for (int k = 0; k < n; k++)
+        s->v[s->nv + k] = v3_sub(p[k], origin);
+    ps_commit(s, n);
+    return 0;
+}
+
+/* Drop the last polygon of s. */
+static void ps_pop(polyset *s)
+{
+    s->np--;
+    s->nv = s->first[s->np];
+}
+
 static void ps_free(polyset *s)
 {
     free(s->v);
@@ -265,6 +299,7 @@ static void ps_free(polyset *s)
 
 /* Per-thread space. */
 typedef struct occ_space {
+    polyset loc;                /* the two elements in the pair's frame: 0 = i, 1 = j */
     polyset elem;               /* the two clipped elements: 0 = i, 1 = j */
     polyset blk;                /* the pair's blockers, whole */
     polyset blkc;               /* the same, clipped to the front of the inner plane */
@@ -292,6 +327,8 @@ typedef struct occ_space {
     int caphn, capha;
     tri_node *node;
     int capnode;
+    double snap;                /* the pair's tolerance: o->snap plus the
+                                   twists of its surfaces and candidates */
     int any_hidden, any_visible;/* over the pair's evaluations */
     double evals;
 } occ_space;
@@ -329,8 +366,36 @@ static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double
     *hi = mx;
 }
 
+/* A convex polygon meets a plane in at most two sign changes of its
+ * vertices' distances (walking round it, zeros skipped).  Round-off in the
+ * distances of a polygon thinner than it (a sliver, or a piece far from the
+ * origin) can show more; then the distances are noise: the polygon is on
+ * the plane as far as they can tell, and all are set to 0 (*lo = *hi = 0).
+ * Every polygon handed to clip_side goes through this first, so that its
+ * output has at most n + 1 vertices and vertex counts cannot grow with
+ * each cut (issue 20: a noisy polygon grew past its n + 1 buffer). */
+static void settle_signs(double *d, int n, double *lo, double *hi)
+{
+    int changes = 0, last = 0;
+    for (int k = 0; k < 2 * n; k++) { /* twice round: the wrap counts too */
+        double x = d[k % n];
+        int s = x > 0 ? 1 : x < 0 ? -1 : 0;
+        if (s == 0)
+            continue;
+        if (last != 0 && s != last && k >= n)
+            changes++;
+        last = s;
+    }
+    if (changes <= 2)
+        return;
+    for (int k = 0; k < n; k++)
+        d[k] = 0;
+    *lo = *hi = 0;
+}
+
 /* The part of p where sign * d >= 0 (Sutherland & Hodgman 1974), into out
- * (room for n + 1); returns its vertex count. */
+ * (room for n + 1: with d settled by settle_signs there are at most two
+ * crossings, and each drops a vertex); returns its vertex count. */
 static int clip_side(const rad_vec3 *p, const double *d, int n, double sign, rad_vec3 *out)
 {
     int m = 0;
@@ -355,6 +420,7 @@ static int clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_ve
     if (grow_d(&sp->d, &sp->capd, n) || ps_reserve(s, n + 1))
         return -1;
     distances(p, n, nrm, a, tol, sp->d, &lo, &hi);
+    settle_signs(sp->d, n, &lo, &hi);
     if (hi <= 0)
         return 0;
     int m = clip_side(p, sp->d, n, 1.0, s->v + s->nv);
@@ -516,6 +582,29 @@ static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
     return 4;
 }
 
+/* Largest distance of p's vertices from the plane with unit normal nrm
+ * through their mean (differences first: exact for nearby vertices). */
+static double twist(const rad_vec3 *p, int n, rad_vec3 nrm)
+{
+    rad_vec3 c = v3(0, 0, 0);
+    for (int k = 1; k < n; k++)
+        c = v3_add(c, v3_sub(p[k], p[0]));
+    c = v3_scale(c, 1.0 / n);
+    double t = 0;
+    for (int k = 0; k < n; k++)
+        t = fmax(t, fabs(v3_dot(nrm, v3_sub(v3_sub(p[k], p[0]), c))));
+    return t;
+}
+
+/* The tolerance for the surfaces a and b and the candidates of their pair. */
+static double pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand)
+{
+    double t = o->snap + o->stwist[a] + o->stwist[b], tc = 0;
+    for (int k = 0; k < ncand; k++)
+        tc = fmax(tc, o->stwist[cand[k]]);
+    return t + tc;
+}
+
 static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
 {
     const int ns = m->nsurfaces;
@@ -530,8 +619,9 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
     o->snormal = malloc(sizeof *o->snormal * (size_t)(ns > 0 ? ns : 1));
     o->slo = malloc(sizeof *o->slo * (size_t)(ns > 0 ? ns : 1));
     o->shi = malloc(sizeof *o->shi * (size_t)(ns > 0 ? ns : 1));
+    o->stwist = malloc(sizeof *o->stwist * (size_t)(ns > 0 ? ns : 1));
     o->esurf = malloc(sizeof *o->esurf * (size_t)m->nelements);
-    if (!o->sv || !o->sfirst || !o->snormal || !o->slo || !o->shi || !o->esurf)
+    if (!o->sv || !o->sfirst || !o->snormal || !o->slo || !o->shi || !o->stwist || !o->esurf)
         return RAD_ERR_NOMEM;
     int at = 0;
     for (int s = 0; s < ns; s++) {
@@ -541,9 +631,11 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
             int n = surface_outline(m, s, o->sv + at);
             o->snormal[s] = m->elements[e0].normal;
             v3_bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
+            o->stwist[s] = twist(o->sv + at, n, o->snormal[s]);
             at += n;
         } else {
             o->snormal[s] = o->slo[s] = o->shi[s] = v3(0, 0, 0);
+            o->stwist[s] = 0;
         }
     }
     o->sfirst[ns] = at;
@@ -561,7 +653,8 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     int na = o->sfirst[a + 1] - o->sfirst[a], nb = o->sfirst[b + 1] - o->sfirst[b];
     if (na < 3 || nb < 3)
         return 0;
-    int r = clip_pair(sp, pa, na, o->snormal[a], pb, nb, o->snormal[b], o->snap);
+    const double snap = o->snap + o->stwist[a] + o->stwist[b];
+    int r = clip_pair(sp, pa, na, o->snormal[a], pb, nb, o->snormal[b], snap);
     if (r <= 0)
         return r; /* they see nothing of each other */
     const rad_vec3 *all = sp->elem.v;
@@ -572,7 +665,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
         for (int c = 0; c < o->nsurf; c++)
             owners[nc++] = c;
     } else {
-        rad_vec3 lo, hi, pad = v3(o->touch, o->touch, o->touch);
+        rad_vec3 lo, hi, pad = v3(snap, snap, snap);
         v3_bounds(all, nall, &lo, &hi);
         nc = rad_vis_box_polygons(vis, v3_sub(lo, pad), v3_add(hi, pad), owners);
         if (nc < 0)
@@ -580,7 +673,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     }
     int nh = o->mode == RAD_OCC_ALL
                  ? 0
-                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], o->snap);
+                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], snap);
     if (nh < 0)
         return -1;
     int added = 0;
@@ -589,7 +682,8 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
         if (c == a || c == b || n < 3)
             continue;
         if (o->mode != RAD_OCC_ALL &&
-            clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c], o->touch))
+            clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c],
+                           snap + o->stwist[c]))
             continue;
         if (grow_i(cand, capcand, *ncand + 1))
             return -1;
@@ -641,10 +735,20 @@ void rad_occ_free(rad_occ *o)
     free(o->snormal);
     free(o->slo);
     free(o->shi);
+    free(o->stwist);
     free(o->esurf);
     free(o->cand_off);
     free(o->cand);
     free(o);
+}
+
+/* The largest absolute coordinate of the mesh. */
+static double scene_magnitude(const rad_mesh *m)
+{
+    double x = 0;
+    for (int k = 0; k < m->nvertices; k++)
+        x = fmax(x, v3_maxabs(m->vertices[k]));
+    return x;
 }
 
 static double scene_size(const rad_mesh *m)
@@ -675,9 +779,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
     o->mode = mode;
     o->accuracy = accuracy;
-    double L = scene_size(m);
-    o->snap = OCC_SNAP * L;
-    o->touch = OCC_TOUCH * L;
+    o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m);
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = rad_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
@@ -708,6 +810,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
 
 static void space_free(occ_space *sp)
 {
+    ps_free(&sp->loc);
     ps_free(&sp->elem);
     ps_free(&sp->blk);
     ps_free(&sp->blkc);
@@ -787,6 +890,7 @@ static int cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int
         if (grow_d(&sp->d, &sp->capd, *n) || grow_v3(&sp->tmp, &sp->captmp, *n + 1))
             return -1;
         distances(sp->rem, *n, nrm[k], pt[k], snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, *n, &lo, &hi);
         if (hi <= 0)
             return ps_push(out, sp->rem, *n) ? -1 : 0; /* wholly outside */
         if (lo >= 0)
@@ -1054,6 +1158,7 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
         if (grow_d(&sp->d, &sp->capd, n) || grow_v3(&sp->tmp, &sp->captmp, n + 1))
             return -1;
         distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, n, &lo, &hi);
         if (lo >= 0 || hi <= 0) {
             if (ps_push(&sp->db, p, n))
                 return -1;
@@ -1274,7 +1379,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau,
 /* Collect the blockers of the pair: the surface pair's candidates that the
  * element shaft does not clear.  Returns their count, or -1. */
 static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
-                         const rad_ff_poly *pj)
+                         const rad_ff_poly *pj, rad_vec3 origin)
 {
     int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
     size_t p = pair_index(a, b, o->nsurf);
@@ -1284,23 +1389,29 @@ static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const 
     int ni = sp->elem.first[1], nall = sp->elem.nv;
     int nh = 0;
     if (o->mode != RAD_OCC_ALL) {
-        nh = hull_planes(sp, all, ni, pi->normal, nall - ni, pj->normal, o->snap);
+        nh = hull_planes(sp, all, ni, pi->normal, nall - ni, pj->normal, sp->snap);
         if (nh < 0)
             return -1;
     }
     rad_vec3 lo, hi;
     v3_bounds(all, nall, &lo, &hi);
+    lo = v3_add(lo, origin); /* the boxes are in scene coordinates */
+    hi = v3_add(hi, origin);
     ps_clear(&sp->blk);
     int nb = 0;
     for (int k = 0; k < ncand; k++) {
         int c = cand[k], n = o->sfirst[c + 1] - o->sfirst[c];
-        const rad_vec3 *v = o->sv + o->sfirst[c];
-        if (o->mode != RAD_OCC_ALL &&
-            (!boxes_meet(lo, hi, o->slo[c], o->shi[c], o->touch) ||
-             clear_of_shaft(sp, nh, all, nall, v, n, o->snormal[c], o->touch)))
+        if (o->mode != RAD_OCC_ALL && !boxes_meet(lo, hi, o->slo[c], o->shi[c], sp->snap))
             continue;
-        if (grow_i(&sp->bid, &sp->capb, nb + 1) || ps_push(&sp->blk, v, n))
+        if (grow_i(&sp->bid, &sp->capb, nb + 1) ||
+            ps_push_shifted(&sp->blk, o->sv + o->sfirst[c], n, origin))
             return -1;
+        if (o->mode != RAD_OCC_ALL &&
+            clear_of_shaft(sp, nh, all, nall, sp->blk.v + sp->blk.first[nb], n, o->snormal[c],
+                           sp->snap)) {
+            ps_pop(&sp->blk);
+            continue;
+        }
         sp->bid[nb++] = c;
     }
     return nb;
@@ -1347,7 +1458,7 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
     int kept = 0;
     for (int b = 0; b < nb; b++) {
         int n = sp->blk.first[b + 1] - sp->blk.first[b];
-        int m = clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, o->snap);
+        int m = clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, sp->snap);
         if (m < 0)
             return -1;
         if (m == 0)
@@ -1363,11 +1474,10 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
 static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const rad_ff_poly *e)
 {
     double d = HUGE_VAL;
-    for (int b = 0; b < nb; b++) {
-        int c = sp->bid[b];
-        d = fmin(d, point_polygon_distance(e->centroid, o->sv + o->sfirst[c],
-                                           o->sfirst[c + 1] - o->sfirst[c], o->snormal[c]));
-    }
+    for (int b = 0; b < nb; b++)
+        d = fmin(d, point_polygon_distance(e->centroid, sp->blk.v + sp->blk.first[b],
+                                           sp->blk.first[b + 1] - sp->blk.first[b],
+                                           o->snormal[sp->bid[b]]));
     return e->size / fmax(d, 1e-300);
 }
 
@@ -1396,7 +1506,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.t = ct;
     c.nt = nt;
     c.nb = kept;
-    c.snap = o->snap;
+    c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
     c.events = o->accuracy == RAD_ACCURACY_REFERENCE;
     sp->any_hidden = sp->any_visible = 0;
@@ -1439,7 +1549,7 @@ static int occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int 
     for (int b = 0; b < nb; b++) {
         const rad_vec3 *v = sp->blk.v + sp->blk.first[b];
         int n = sp->blk.first[b + 1] - sp->blk.first[b];
-        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], o->touch)) {
+        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], sp->snap)) {
             st->pairs_blocked++;
             *snew = 0;
             return 0;
@@ -1480,6 +1590,32 @@ static int occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int 
     return 0;
 }
 
+/* The pair in its own frame: vertices and centroids less `origin` (the
+ * centroid of i), into sp->loc and *li, *lj (the rest as in pi, pj).  The
+ * points the cuts construct (v3_lerp) are then rounded relative to the
+ * pair's size, not to the scene's coordinates: a pair 1e-5 across at 3e5
+ * from the origin keeps ten digits instead of five. */
+static int local_frame(occ_space *sp, const rad_ff_poly *pi, const rad_ff_poly *pj,
+                       rad_vec3 origin, rad_ff_poly *li, rad_ff_poly *lj)
+{
+    ps_clear(&sp->loc);
+    if (ps_push_shifted(&sp->loc, pi->v, pi->n, origin) ||
+        ps_push_shifted(&sp->loc, pj->v, pj->n, origin))
+        return -1;
+    *li = *pi;
+    *lj = *pj;
+    li->v = sp->loc.v;
+    lj->v = sp->loc.v + sp->loc.first[1];
+    li->centroid = v3_sub(pi->centroid, origin);
+    lj->centroid = v3_sub(pj->centroid, origin);
+    li->lo = v3_sub(pi->lo, origin);
+    li->hi = v3_sub(pi->hi, origin);
+    lj->lo = v3_sub(pj->lo, origin);
+    lj->hi = v3_sub(pj->hi, origin);
+    li->edges = lj->edges = NULL; /* relative to the centroids: not needed here */
+    return 0;
+}
+
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
                  double *errest)
 {
@@ -1498,9 +1634,15 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
         return -1;
     occ_space *sp = w->space;
-    const rad_ff_poly *pi = &polys[i], *pj = &polys[j];
-    int r = clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, o->snap);
-    int nb = r > 0 ? pair_blockers(o, sp, sa, sb, pi, pj) : r;
+    rad_ff_poly li, lj;
+    rad_vec3 origin = polys[i].centroid;
+    if (local_frame(sp, &polys[i], &polys[j], origin, &li, &lj))
+        return -1;
+    const rad_ff_poly *pi = &li, *pj = &lj;
+    sp->snap = pair_snap(o, sa, sb, o->cand + o->cand_off[p],
+                         (int)(o->cand_off[p + 1] - o->cand_off[p]));
+    int r = clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, sp->snap);
+    int nb = r > 0 ? pair_blockers(o, sp, sa, sb, pi, pj, origin) : r;
     double snew = *s;
     if (nb > 0) {
         w->stats.pairs_blockable++;
