@@ -322,6 +322,10 @@ typedef struct occ_space {
     int capem;
     polyset da, db;             /* the support domain while it is built */
     polyset dom;                /* the support domain: disjoint convex pieces */
+    rad_vec3 *pcen, *qcen;      /* bounding spheres of dom's (p) and db's (q)
+                                   pieces while split_events runs */
+    double *prad, *qrad;
+    int cappc, capqc, cappr, capqr;
     polyset umb;                /* its pieces inside some blocker's umbra */
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
     int caphn, capha;
@@ -359,8 +363,8 @@ static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double
         if (fabs(s) <= tol)
             s = 0;
         d[k] = s;
-        mn = fmin(mn, s);
-        mx = fmax(mx, s);
+        mn = s < mn ? s : mn; /* not fmin: a libm call in the hottest loop */
+        mx = s > mx ? s : mx;
     }
     *lo = mn;
     *hi = mx;
@@ -376,16 +380,20 @@ static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double
  * each cut (issue 20: a noisy polygon grew past its n + 1 buffer). */
 static void settle_signs(double *d, int n, double *lo, double *hi)
 {
-    int changes = 0, last = 0;
-    for (int k = 0; k < 2 * n; k++) { /* twice round: the wrap counts too */
-        double x = d[k % n];
-        int s = x > 0 ? 1 : x < 0 ? -1 : 0;
+    if (*lo >= 0 || *hi <= 0)
+        return; /* one side: no change of sign at all */
+    int changes = 0, first = 0, last = 0;
+    for (int k = 0; k < n; k++) {
+        int s = d[k] > 0 ? 1 : d[k] < 0 ? -1 : 0;
         if (s == 0)
             continue;
-        if (last != 0 && s != last && k >= n)
+        if (!first)
+            first = s;
+        else if (s != last)
             changes++;
         last = s;
     }
+    changes += first != last; /* the wrap from the last vertex to the first */
     if (changes <= 2)
         return;
     for (int k = 0; k < n; k++)
@@ -831,6 +839,10 @@ static void space_free(occ_space *sp)
     ps_free(&sp->da);
     ps_free(&sp->db);
     ps_free(&sp->dom);
+    free(sp->pcen);
+    free(sp->qcen);
+    free(sp->prad);
+    free(sp->qrad);
     ps_free(&sp->umb);
     free(sp->hn);
     free(sp->ha);
@@ -1146,8 +1158,51 @@ static int cut_set(occ_space *sp, const pair_ctx *c, int e, polyset *inside)
     return 0;
 }
 
+/* Append polygon p (n vertices) to sp->db with its bounding sphere
+ * (centre cen, radius rad); 0 or -1. */
+static int push_db(occ_space *sp, const rad_vec3 *p, int n, rad_vec3 cen, double rad)
+{
+    int k = sp->db.np;
+    if (grow_v3(&sp->qcen, &sp->capqc, k + 1) || grow_d(&sp->qrad, &sp->capqr, k + 1) ||
+        ps_push(&sp->db, p, n))
+        return -1;
+    sp->qcen[k] = cen;
+    sp->qrad[k] = rad;
+    return 0;
+}
+
+/* The bounding sphere of p about its vertex mean. */
+static void sphere(const rad_vec3 *p, int n, rad_vec3 *cen, double *rad)
+{
+    rad_vec3 c = poly_mean(p, n);
+    double r2 = 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 e = v3_sub(p[k], c);
+        double x = v3_dot(e, e);
+        r2 = x > r2 ? x : r2;
+    }
+    *cen = c;
+    *rad = sqrt(r2);
+}
+
+/* The bounding spheres of sp->dom's pieces, for split_dom. */
+static int dom_spheres(occ_space *sp)
+{
+    int np = sp->dom.np;
+    if (grow_v3(&sp->pcen, &sp->cappc, np) || grow_d(&sp->prad, &sp->cappr, np))
+        return -1;
+    for (int k = 0; k < np; k++)
+        sphere(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k],
+               &sp->pcen[k], &sp->prad[k]);
+    return 0;
+}
+
 /* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses.  Returns 0 or -1. */
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date).  A
+ * piece whose bounding sphere the plane misses is copied without looking
+ * at its vertices: with a K-gon blocker there are O(K) planes and O(K^2)
+ * pieces, most of them far from any one plane (issue 20: reference mode
+ * slowed as K^4).  Returns 0 or -1. */
 static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
 {
     ps_clear(&sp->db);
@@ -1155,24 +1210,46 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
         const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
         int n = sp->dom.first[k + 1] - sp->dom.first[k];
         double lo, hi;
+        if (fabs(v3_dot(nrm, v3_sub(sp->pcen[k], a))) > sp->prad[k] + c->snap) {
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
+                return -1;
+            continue;
+        }
         if (grow_d(&sp->d, &sp->capd, n) || grow_v3(&sp->tmp, &sp->captmp, n + 1))
             return -1;
         distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
         settle_signs(sp->d, n, &lo, &hi);
         if (lo >= 0 || hi <= 0) {
-            if (ps_push(&sp->db, p, n))
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
         }
         for (int side = -1; side <= 1; side += 2) {
             int m = clip_side(p, sp->d, n, side, sp->tmp);
-            if (m >= 3 && poly_area(sp->tmp, m) > c->sliver && ps_push(&sp->db, sp->tmp, m))
+            rad_vec3 cen;
+            double rad;
+            if (m < 3 || !(poly_area(sp->tmp, m) > c->sliver))
+                continue;
+            sphere(sp->tmp, m, &cen, &rad);
+            if (push_db(sp, sp->tmp, m, cen, rad))
                 return -1;
         }
     }
     polyset t = sp->dom;
     sp->dom = sp->db;
     sp->db = t;
+    rad_vec3 *tc = sp->pcen;
+    sp->pcen = sp->qcen;
+    sp->qcen = tc;
+    double *tr = sp->prad;
+    sp->prad = sp->qrad;
+    sp->qrad = tr;
+    int ti = sp->cappc;
+    sp->cappc = sp->capqc;
+    sp->capqc = ti;
+    ti = sp->cappr;
+    sp->cappr = sp->capqr;
+    sp->capqr = ti;
     return 0;
 }
 
@@ -1204,6 +1281,8 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
  * between them. */
 static int split_events(occ_space *sp, const pair_ctx *c)
 {
+    if (dom_spheres(sp))
+        return -1;
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
