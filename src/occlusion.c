@@ -327,6 +327,8 @@ typedef struct occ_space {
     double *prad, *qrad;
     int cappc, capqc, cappr, capqr;
     polyset umb;                /* its pieces inside some blocker's umbra */
+    rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
+    int cappj0, cappj1;
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
     int caphn, capha;
     tri_node *node;
@@ -844,6 +846,8 @@ static void space_free(occ_space *sp)
     free(sp->prad);
     free(sp->qrad);
     ps_free(&sp->umb);
+    free(sp->pj0);
+    free(sp->pj1);
     free(sp->hn);
     free(sp->ha);
     free(sp->node);
@@ -883,6 +887,7 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
  * (clipped) and the blockers (clipped to the front of the inner plane). */
 typedef struct pair_ctx {
     rad_vec3 nx;                /* outer normal */
+    rad_vec3 tn;                /* inner normal */
     const rad_vec3 *t;          /* inner element */
     int nt;
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
@@ -958,6 +963,101 @@ static int cone_planes(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
     return m;
 }
 
+/* The shadow of blocker b from x on the inner plane: the central
+ * projection of its vertices, y = x + (p - x) h / (tn . (p - x)) with
+ * h = tn . (t0 - x), into sp->pj0.  It is the cone's section by the plane
+ * only when every vertex lies strictly between x's level and the plane
+ * (all denominators of h's sign, away from 0); returns the vertex count,
+ * 0 when not so (the caller then cuts by the cone planes), -1. */
+static int shadow_polygon(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int n = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    double h = v3_dot(c->tn, v3_sub(c->t[0], x));
+    if (!(h < -c->snap) || grow_v3(&sp->pj0, &sp->cappj0, n))
+        return h < -c->snap ? -1 : 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 r = v3_sub(p[k], x);
+        double dk = v3_dot(c->tn, r);
+        if (!(dk < -c->snap))
+            return 0;
+        sp->pj0[k] = v3_add(x, v3_scale(r, h / dk));
+    }
+    return n;
+}
+
+/* The part of the shadow (sp->pj0, m vertices) inside the convex piece q
+ * (nq vertices, on the inner plane): the shadow clipped by q's edges
+ * (Sutherland & Hodgman 1974), left in sp->pj0; returns its vertex count
+ * (0: nothing), -1. */
+static int shadow_in_piece(occ_space *sp, const pair_ctx *c, const rad_vec3 *q, int nq, int m)
+{
+    double turn = v3_dot(v3_newell(q, nq), c->tn) < 0 ? -1.0 : 1.0;
+    for (int k = 0; k < nq && m >= 3; k++) {
+        rad_vec3 e = v3_sub(q[(k + 1) % nq], q[k]), nrm = v3_cross(c->tn, e);
+        double len = v3_norm(nrm), lo, hi;
+        if (!(len > 0))
+            continue;
+        if (grow_d(&sp->d, &sp->capd, m) || grow_v3(&sp->pj1, &sp->cappj1, m + 1))
+            return -1;
+        distances(sp->pj0, m, v3_scale(nrm, turn / len), q[k], c->snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, m, &lo, &hi);
+        if (hi <= 0)
+            return 0;
+        if (lo >= 0)
+            continue;
+        m = clip_side(sp->pj0, sp->d, m, 1.0, sp->pj1);
+        rad_vec3 *t = sp->pj0;
+        int tc = sp->cappj0;
+        sp->pj0 = sp->pj1;
+        sp->cappj0 = sp->cappj1;
+        sp->pj1 = t;
+        sp->cappj1 = tc;
+    }
+    return m >= 3 ? m : 0;
+}
+
+/* The last blocker's share of hidden(x), when its shadow is a polygon:
+ * each visible piece q loses q intersected with the shadow.  That is
+ * the same set as q cut by the cone planes, but it costs O(nq K) for a
+ * K-gon blocker instead of O(K^2): the cuts of cut_piece make the piece a
+ * K-gon one plane at a time (issue 20: reference mode slowed as K^4).
+ * The visible remainder is not built, since no blocker follows; only
+ * whether some is left.  Returns 1 when done (*h increased), 0 when the
+ * shadow is no polygon, -1. */
+static int hidden_last(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, double *h)
+{
+    int n = shadow_polygon(sp, c, b, x);
+    if (n <= 0)
+        return n;
+    if (grow_v3(&sp->tmp, &sp->captmp, n))
+        return -1;
+    memcpy(sp->tmp, sp->pj0, sizeof *sp->tmp * (size_t)n); /* the whole shadow */
+    int visible = 0;
+    for (int k = 0; k < sp->cur.np; k++) {
+        const rad_vec3 *q = sp->cur.v + sp->cur.first[k];
+        int nq = sp->cur.first[k + 1] - sp->cur.first[k];
+        if (grow_v3(&sp->pj0, &sp->cappj0, n))
+            return -1;
+        memcpy(sp->pj0, sp->tmp, sizeof *sp->pj0 * (size_t)n);
+        int m = shadow_in_piece(sp, c, q, nq, n);
+        if (m < 0)
+            return -1;
+        double aq = poly_area(q, nq), am = m ? poly_area(sp->pj0, m) : 0;
+        if (am > c->sliver) {
+            *h += fabs(ff_point_polygon(x, c->nx, sp->pj0, m));
+            sp->any_hidden = 1;
+        } else {
+            am = 0;
+        }
+        visible |= aq - am > c->sliver;
+    }
+    if (visible)
+        sp->any_visible = 1;
+    ps_clear(&sp->cur); /* the caller's test for anything visible is done */
+    return 1;
+}
+
 /* hidden(x): the form factor from x to the part of the inner element that
  * the blockers hide.  Sets sp->any_hidden / any_visible. */
 static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
@@ -968,6 +1068,16 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
         return -1;
     sp->evals++;
     for (int b = 0; b < c->nb && sp->cur.np > 0; b++) {
+        if (b == c->nb - 1 &&
+            fabs(v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]))) > c->snap) {
+            int r = hidden_last(sp, c, b, x, &h);
+            if (r < 0)
+                return -1;
+            if (r > 0) {
+                *out = h;
+                return 0;
+            }
+        }
         int ncone = cone_planes(sp, c, b, x);
         if (ncone < 0)
             return -1;
@@ -1582,6 +1692,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
         return -1;
     pair_ctx c;
     c.nx = po->normal;
+    c.tn = pt->normal;
     c.t = ct;
     c.nt = nt;
     c.nb = kept;
