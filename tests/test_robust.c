@@ -21,7 +21,13 @@
  *     floor's edges and h above it has 1 - h^2/d^2 <= F <= 1;
  *   - invariance: the same plates moved by 1e6 in every coordinate give
  *     the same form factors, and a face lying on another's plane hides
- *     nothing of what the other sees.
+ *     nothing of what the other sees;
+ *   - a Monte Carlo estimate written here for two facing unit squares 1
+ *     apart with a regular K-gon blocker halfway (kernel cos cos / (pi r^2)
+ *     = 1 / (pi r^4), visibility by where the segment crosses z = 0.5, the
+ *     K-gon's vertices as the scene format defines a disk), and inclusion:
+ *     a K-gon lies inside the 2K-gon with the same first vertex, so F
+ *     falls as K doubles.
  */
 #include <config.h>
 
@@ -283,6 +289,81 @@ static void test_tiny_over_large(void)
     tap_diag("tiny over large: %g values above 1 within their bound brought to 1", clamped);
 }
 
+/* ---- a K-gon blocker ------------------------------------------------------------ */
+
+static unsigned long long rng = 0x9e3779b97f4a7c15ULL;
+
+/* xorshift64* (Vigna 2016): a fixed sequence, so failures reproduce. */
+static double uniform01(void)
+{
+    rng ^= rng >> 12;
+    rng ^= rng << 25;
+    rng ^= rng >> 27;
+    return (double)((rng * 0x2545F4914F6CDD1DULL) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* Is (x, y) inside the K-gon of the scene line `disk m 0.5 0.5 0.5 0 0 1
+ * 0.2 K`?  radiosity-scene(5) with normal +z: u = (0, -1, 0), w = (1, 0,
+ * 0), vertex k at centre + r (sin t, -cos t), t = 2 pi k / K: polar angle
+ * t - pi/2.  Inside iff the distance along the bisector of the sector
+ * holding the point is at most the apothem r cos(pi/K). */
+static int in_kgon(double x, double y, int K)
+{
+    const double pi = 3.14159265358979323846, r = 0.2;
+    double dx = x - 0.5, dy = y - 0.5, rho = hypot(dx, dy);
+    double a = fmod(atan2(dy, dx) + pi / 2 + 4 * pi, 2 * pi / K);
+    return rho * cos(a - pi / K) <= r * cos(pi / K);
+}
+
+/* F from the bottom to the top square by Monte Carlo; *se its standard
+ * error. */
+static double kgon_monte_carlo(int K, long n, double *se)
+{
+    const double pi = 3.14159265358979323846;
+    double sum = 0, sum2 = 0;
+    for (long k = 0; k < n; k++) {
+        double x0 = uniform01(), y0 = uniform01(), x1 = uniform01(), y1 = uniform01();
+        double dx = x1 - x0, dy = y1 - y0, r2 = dx * dx + dy * dy + 1;
+        double f = in_kgon(0.5 * (x0 + x1), 0.5 * (y0 + y1), K) ? 0 : 1 / (pi * r2 * r2);
+        sum += f;
+        sum2 += f * f;
+    }
+    double mean = sum / n;
+    *se = sqrt((sum2 / n - mean * mean) / (n - 1));
+    return mean;
+}
+
+static void test_kgon_blocker(void)
+{
+    /* no blocker: directly opposed unit squares 1 apart, F = 0.19982
+     * (Howell's catalogue C-11; `radiosity analytic parallel-rectangles
+     * 1 1 1`) */
+    double prev = 0.19982;
+    for (int K = 16; K <= 64; K *= 2) {
+        char text[512];
+        snprintf(text, sizeof text,
+                 "material m reflect 0.5 emit 1\n"
+                 "quad m 0 0 0 1 0 0 1 1 0 0 1 0\n"
+                 "quad m 0 0 1 0 1 1 1 1 1 1 0 1\n"
+                 "disk m 0.5 0.5 0.5 0 0 1 0.2 %d\n",
+                 K);
+        int n = 0;
+        double *F = scene_ff(text, RAD_ACCURACY_REFERENCE, &n, NULL);
+        double f = F && n == 3 ? FF(F, n, 0, 1) : NAN;
+        free(F);
+        tap_ok(f < prev, "%d-gon blocker, reference: F_01 = %.12f below %.12f (%s)", K, f, prev,
+               K == 16 ? "no blocker" : "half as many sides");
+        prev = f;
+        if (K == 64) {
+            double se, mc = kgon_monte_carlo(K, 4000000, &se);
+            tap_ok(fabs(f - mc) <= 4 * se,
+                   "64-gon blocker, reference: F_01 = %.6f, Monte Carlo %.6f +- %.1e (%.2f "
+                   "standard errors)",
+                   f, mc, se, fabs(f - mc) / se);
+        }
+    }
+}
+
 int main(void)
 {
     test_crash_scene();
@@ -290,5 +371,6 @@ int main(void)
     test_far_plates();
     test_twisted_panel();
     test_tiny_over_large();
+    test_kgon_blocker();
     return tap_done();
 }
