@@ -56,7 +56,12 @@
  *        S_occluded = S - 2 pi * integral over A_o of hidden(x) dx,
  *    where S is the unoccluded contour sum of the kernel: the quadrature
  *    error only touches the hidden part, never the (possibly singular)
- *    unoccluded one.
+ *    unoccluded one.  For the last blocker, whose visible remainder is not
+ *    needed, the hidden part of a piece is found the other way round when
+ *    the blocker lies between x's level and the inner plane: the cone's
+ *    section by that plane is the central projection of the blocker, and
+ *    clipping it by the piece's few edges costs O(K) for a K-gon where K
+ *    cone cuts cost O(K^2) (hidden_last).
  *
  * 4. Where to integrate.  hidden(x) vanishes outside each blocker's
  *    penumbra region and equals the unoccluded integrand inside its umbra;
