@@ -43,7 +43,13 @@
  *              promising 1e-6) and 1e-11 (reference, promising 1e-9); every
  *              estimate is the method's own plus a round-off bound.
  *              A negative result (possible only within its error) is
- *              clamped to 0 and the error estimate covers the clamp.
+ *              clamped to 0 and the error estimate covers the clamp; one
+ *              above 1 either way is brought to 1 only when the excess is
+ *              within its error bound, and counted (clamp_to_one).
+ *
+ * "On a plane" means within the round-off of the distances (a few ulps
+ * of the coordinates, 1e-12 of the pair's size) plus the polygons' own
+ * twists, never a fraction of the coordinates' magnitude (see rad_ff_pair).
  */
 #include <config.h>
 
