@@ -214,6 +214,8 @@ typedef struct rad_ff_stats {
     int vis_needed;             /* 0: nothing can be blocked, no visibility work */
     double vis_pairs_tested, vis_pairs_blockable, vis_pairs_blocked, vis_pairs_partial;
     double vis_seconds;         /* visibility setup + thread time (occlusion.h) */
+    double clamped_to_one;      /* pairs whose value exceeded 1 one way by no more
+                                   than its error bound, set to 1 (formfactor.c) */
 } rad_ff_stats;
 
 /* All form factors of a mesh: F is n x n column-major, F[i + j*n] = F_ij,

@@ -154,6 +154,9 @@ int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)
     if (st->rows_above_one)
         cli_error("warning: %ld rows of F sum to more than 1 + %g (energy from nowhere)%s",
                   st->rows_above_one, RAD_ROW_SUM_SLACK, hint);
+    if (st->clamped_to_one > 0 && !c->quiet)
+        cli_error("note: %.0f form factors came out above 1 by less than their error bound "
+                  "and were set just below 1", st->clamped_to_one);
     if (st->promise_unmet == 0)
         return 0;
     cli_error("%s%ld form factors miss the %s mode's promise of %g relative error (their own "

@@ -359,6 +359,7 @@ int rad_export_report(FILE *out, const rad_run_info *in)
         jnum(out, "form_factors_promise", f->promise, 1);
         fprintf(out, "  \"form_factors_promise_unmet\": %ld,\n", f->promise_unmet);
         fprintf(out, "  \"form_factor_rows_above_one\": %ld,\n", f->rows_above_one);
+        jnum(out, "form_factors_clamped_to_one", f->clamped_to_one, 1);
         fprintf(out,
                 "  \"visibility\": {\"needed\": %s, \"pairs_tested\": %.0f, "
                 "\"pairs_blockable\": %.0f, \"pairs_blocked\": %.0f, \"pairs_partial\": %.0f, "

@@ -43,15 +43,18 @@
 
 #define RAD_PI 3.14159265358979323846
 
-/* perimeter, longest edge and radius about the centroid, from the edges
- * (their starts are relative to the centroid) */
+/* perimeter, longest edge, radius about the centroid and twist, from the
+ * edges (their starts are relative to the centroid) */
 static void ff_poly_lengths(rad_ff_poly *p)
 {
     p->perimeter = 0;
     p->lmax = 0;
     p->radius = 0;
+    p->twist = 0;
     for (int k = 0; k < p->nedges; k++) {
         const double r = v3_norm(p->edges[k].p0);
+        const double h = fabs(v3_dot(p->normal, p->edges[k].p0));
+        p->twist = h > p->twist ? h : p->twist;
         p->perimeter += p->edges[k].len;
         p->lmax = p->edges[k].len > p->lmax ? p->edges[k].len : p->lmax;
         p->radius = r > p->radius ? r : p->radius;
@@ -288,7 +291,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     rad_vec3 *pts = NULL;
     rad_ff_edge *edges = NULL;
     int failed = 0, stop = 0;
-    double maxerr = 0, maxrel = 0;
+    double maxerr = 0, maxrel = 0, clamped = 0;
     long unmet = 0;
     if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
@@ -321,7 +324,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     for (int i0 = 0; i0 < n && !failed && !stop && !nomem; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;
 #pragma omp parallel num_threads(threads) reduction(|| : failed) reduction(max : maxerr, maxrel) \
-    reduction(+ : unmet)
+    reduction(+ : unmet, clamped)
         {
             rad_ff_scratch w;
             rad_occ_work ow;
@@ -335,6 +338,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
                     failed = 1;
 #pragma omp critical(rad_occ_stats)
             rad_occ_stats_add(&vst, &ow.stats);
+            clamped += w.clamped;
             rad_occ_work_free(&ow);
             rad_ff_scratch_free(&w);
         }
@@ -393,6 +397,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         stats->vis_pairs_blocked = vst.pairs_blocked;
         stats->vis_pairs_partial = vst.pairs_partial;
         stats->vis_seconds = vst.seconds;
+        stats->clamped_to_one = clamped;
     }
     return RAD_OK;
 }

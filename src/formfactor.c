@@ -43,7 +43,13 @@
  *              promising 1e-6) and 1e-11 (reference, promising 1e-9); every
  *              estimate is the method's own plus a round-off bound.
  *              A negative result (possible only within its error) is
- *              clamped to 0 and the error estimate covers the clamp.
+ *              clamped to 0 and the error estimate covers the clamp; one
+ *              above 1 either way is brought to 1 only when the excess is
+ *              within its error bound, and counted (clamp_to_one).
+ *
+ * "On a plane" means within the round-off of the distances (a few ulps
+ * of the coordinates, 1e-12 of the pair's size) plus the polygons' own
+ * twists, never a fraction of the coordinates' magnitude (see rad_ff_pair).
  */
 #include <config.h>
 
@@ -58,6 +64,11 @@
 #include "vec.h"
 
 #define RAD_PI 3.14159265358979323846
+
+/* ulps of the coordinates allowed for the rounding of a centroid */
+#define FF_ROUND 16
+/* how far below 2 pi min(A) a value above 1 is brought (clamp_to_one) */
+#define FF_CLAMP_ULPS 8
 
 void rad_ff_options_init(rad_ff_options *opt)
 {
@@ -277,10 +288,34 @@ static double box_gap2(const rad_ff_poly *a, const rad_ff_poly *b)
     return v3_box_gap2(a->lo, a->hi, b->lo, b->hi);
 }
 
-/* Store S and its estimate; F from a to b. */
-static double pair_done(const rad_ff_poly *a, double s, double e, double *contour,
-                        double *errest)
+/* A form factor is at most 1 both ways: S <= 2 pi min(A_a, A_b).  When S
+ * exceeds that by no more than its error bound e (the true S lies in
+ * [S - e, S + e] and below the limit), the limit is nearer the true value
+ * than S is: bring S down to it and count the pair in w->clamped.  The
+ * limit keeps FF_CLAMP_ULPS ulps below 2 pi min(A), so that S / (2 pi A)
+ * and the fill's F_ij = F_ji A_j / A_i round to at most 1; e grows by that
+ * margin.  Beyond e nothing is changed: the fill's statistics then count
+ * an entry above 1, and the promise is seen to be missed (issue 20:
+ * default values above 1 by up to 3.4e-9, tiny elements facing large
+ * ones). */
+static void clamp_to_one(const rad_ff_poly *a, const rad_ff_poly *b, rad_ff_scratch *w,
+                         double *s, double *e)
 {
+    const double top = 2 * RAD_PI * (a->area < b->area ? a->area : b->area);
+    const double lim = top * (1 - FF_CLAMP_ULPS * DBL_EPSILON);
+    if (!(*s > lim) || *s - lim > *e + FF_CLAMP_ULPS * DBL_EPSILON * top)
+        return;
+    w->clamped += *s > top;
+    *e += FF_CLAMP_ULPS * DBL_EPSILON * top;
+    *s = lim;
+}
+
+/* Store S and its estimate (S brought within 1 when its bound allows);
+ * F from a to b. */
+static double pair_done(const rad_ff_poly *a, const rad_ff_poly *b, rad_ff_scratch *w, double s,
+                        double e, double *contour, double *errest)
+{
+    clamp_to_one(a, b, w, &s, &e);
     *contour = s;
     if (errest)
         *errest = e;
@@ -300,11 +335,21 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     double *dist = (double *)(cb + b->n + 2);
     ff_edge *ea = (ff_edge *)(dist + (a->n > b->n ? a->n : b->n) + 2);
     ff_edge *eb = ea + a->n + 2;
-    /* Tolerance for "on the plane": round-off of a dot product of
-     * coordinates of this magnitude, scaled by the pair's size. */
+    /* Tolerance for "on the plane" (issue 20): the round-off of the
+     * distances, nothing more, plus the polygons' own twists.  The
+     * distance n . (p - c) is off by the rounding of the centroid c (a few
+     * ulps of the coordinates, FF_ROUND of them allowed) and by that of the
+     * product (1e-12 of the pair's size, generous).  It used to be 1e-12 of
+     * the coordinates' magnitude: two plates 1e-7 apart at 1e6 from the
+     * origin were one plane (F = 0), at the origin they see each other
+     * fully.  A twisted polygon (the scene accepts a vertex 1e-6 of a
+     * quad's size off its plane) is planar only to within its twist, so
+     * two faces of one twisted panel lie on one plane and see nothing of
+     * each other (they used to give F = 2/9 both ways). */
     const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
-    double mag = (ca_max > cb_max ? ca_max : cb_max) + a->size + b->size;
-    double tol = 1e-12 * mag;
+    const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
+                         1e-12 * (a->size + b->size);
+    double tol = rtol + a->twist + b->twist;
     /* A colinear edge pair lies on both planes: each polygon then has two
      * vertices near the other's plane, allowing for non-planar polygons
      * (the scene's 1e-6 of a quad's size, less for its elements). */
@@ -353,7 +398,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
          * vertex from the other's plane, the gap between bounding boxes */
         if (rad_ff_gauss_tiers(a, b, scale2, box_gap2(a, b), mina > minb ? mina : minb, tol, rel,
                                &sg, &eg))
-            return pair_done(a, sg, eg, contour, errest);
+            return pair_done(a, b, w, sg, eg, contour, errest);
     }
     /* edges in coordinates centred on A's centroid: A's precomputed unless
      * clipped; B's from its vertices, each rounded once, so that a vertex
@@ -383,7 +428,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
         if (!skew) {
             s = rad_ff_contour(ea, mea, eb, meb, scale2, 0, 0, a->centroid, &e);
             if (s > 0 && e <= rel * s)
-                return pair_done(a, s, e, contour, errest);
+                return pair_done(a, b, w, s, e, contour, errest);
         }
         const double r = v3_norm(sep);
         /* The contour's closed forms lose about eps (r/L)^4 to cancellation:
@@ -440,8 +485,7 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
             e = fmax(e, -s);
             s = 0;
         }
-        if (errest)
-            *errest = e;
+        return pair_done(a, b, w, s, e, contour, errest);
     }
     *contour = s;
     /* With both contours counter-clockwise about their own fronts, facing

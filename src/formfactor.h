@@ -30,6 +30,9 @@ typedef struct rad_ff_poly {
     rad_vec3 centroid;
     double area;
     double size;            /* bounding-box diagonal */
+    double twist;           /* largest vertex distance from the plane through
+                               the centroid (0 for a planar polygon; the scene
+                               accepts 1e-6 of a quad's size) */
     rad_vec3 lo, hi;        /* bounding box */
 } rad_ff_poly;
 
@@ -37,6 +40,8 @@ typedef struct rad_ff_poly {
 typedef struct rad_ff_scratch {
     void *buf;
     int cap;
+    double clamped;         /* pairs whose S was brought down to 2 pi min(A)
+                               within its error bound (rad_ff_pair) */
 } rad_ff_scratch;
 
 void rad_ff_scratch_init(rad_ff_scratch *w);

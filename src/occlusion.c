@@ -16,9 +16,14 @@
  *    two convex polygons pass through an edge of one and a vertex of the
  *    other; they are those candidates with every vertex on one side.  The
  *    test is conservative: a pair it cannot clear goes on to step 3, which
- *    then finds nothing hidden and keeps S unchanged.  Touching (within
- *    1e-9 of the scene's size) counts as separated: what a surface hides
- *    through a contact of zero thickness has zero measure.
+ *    then finds nothing hidden and keeps S unchanged.  Touching counts as
+ *    separated: what a surface hides through a contact of zero thickness
+ *    has zero measure.  Touching means within round-off and the
+ *    surfaces' own twist (OCC_SNAP below), nothing more: an element a
+ *    hair above a floor, facing it, is in front of the floor.
+ *    Each pair is worked in its own frame (coordinates less the centroid
+ *    of element i), so that the points the cuts construct keep the
+ *    digits of the pair, not those of its distance from the origin.
  *    Blockers are the scene's surfaces, not elements: a planar surface
  *    cannot block a segment that starts on it, so the surfaces of i and j
  *    are left out, and the rest is tested whole.  The test runs twice:
@@ -51,7 +56,12 @@
  *        S_occluded = S - 2 pi * integral over A_o of hidden(x) dx,
  *    where S is the unoccluded contour sum of the kernel: the quadrature
  *    error only touches the hidden part, never the (possibly singular)
- *    unoccluded one.
+ *    unoccluded one.  For the last blocker, whose visible remainder is not
+ *    needed, the hidden part of a piece is found the other way round when
+ *    the blocker lies between x's level and the inner plane: the cone's
+ *    section by that plane is the central projection of the blocker, and
+ *    clipping it by the piece's few edges costs O(K) for a K-gon where K
+ *    cone cuts cost O(K^2) (hidden_last).
  *
  * 4. Where to integrate.  hidden(x) vanishes outside each blocker's
  *    penumbra region and equals the unoccluded integrand inside its umbra;
@@ -87,6 +97,7 @@
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -101,9 +112,17 @@
 
 #define RAD_PI 3.14159265358979323846
 
-/* Tolerances, relative to the scene's bounding-box diagonal L. */
-#define OCC_SNAP 1e-11      /* a point this close to a plane is on it */
-#define OCC_TOUCH 1e-9      /* a blocker this far into a shaft only touches it */
+/* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
+ * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
+ * round-off of mesh vertices interpolated at the scene's coordinates
+ * (OCC_ROUND ulps of the largest), plus the surfaces' own departures from
+ * planarity (the scene accepts 1e-6 of a quad's size; scene.c): two
+ * faces of one twisted panel lie on one plane as far as the data can say.
+ * Nothing larger: a blocker 1e-9 of the scene's size from an element is
+ * in front of it, and hides what lies behind (issue 20: a tolerance of
+ * 1e-9 L let a floor's light through to an element 1e-9 above it). */
+#define OCC_SNAP 1e-11
+#define OCC_ROUND 16
 #define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
                                are dropped (round-off slivers of the cuts) */
 
@@ -121,10 +140,12 @@ struct rad_occ {
     rad_vec3 *sv;               /* surface polygons: sv[sfirst[s] .. sfirst[s+1]) */
     int *sfirst;
     rad_vec3 *snormal, *slo, *shi;
+    double *stwist;             /* each surface's largest vertex distance from
+                                   its plane through the vertex mean */
     int *esurf;                 /* surface of each element */
     size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
     int *cand;
-    double snap, touch;         /* absolute tolerances */
+    double snap;                /* absolute tolerance (see OCC_SNAP) */
 };
 
 static double now(void)
@@ -256,6 +277,24 @@ static int ps_push(polyset *s, const rad_vec3 *p, int n)
     return 0;
 }
 
+/* ps_push of p less `origin` (into the pair's local frame). */
+static int ps_push_shifted(polyset *s, const rad_vec3 *p, int n, rad_vec3 origin)
+{
+    if (ps_reserve(s, n))
+        return -1;
+    for (int k = 0; k < n; k++)
+        s->v[s->nv + k] = v3_sub(p[k], origin);
+    ps_commit(s, n);
+    return 0;
+}
+
+/* Drop the last polygon of s. */
+static void ps_pop(polyset *s)
+{
+    s->np--;
+    s->nv = s->first[s->np];
+}
+
 static void ps_free(polyset *s)
 {
     free(s->v);
@@ -265,6 +304,7 @@ static void ps_free(polyset *s)
 
 /* Per-thread space. */
 typedef struct occ_space {
+    polyset loc;                /* the two elements in the pair's frame: 0 = i, 1 = j */
     polyset elem;               /* the two clipped elements: 0 = i, 1 = j */
     polyset blk;                /* the pair's blockers, whole */
     polyset blkc;               /* the same, clipped to the front of the inner plane */
@@ -287,11 +327,19 @@ typedef struct occ_space {
     int capem;
     polyset da, db;             /* the support domain while it is built */
     polyset dom;                /* the support domain: disjoint convex pieces */
+    rad_vec3 *pcen, *qcen;      /* bounding spheres of dom's (p) and db's (q)
+                                   pieces while split_events runs */
+    double *prad, *qrad;
+    int cappc, capqc, cappr, capqr;
     polyset umb;                /* its pieces inside some blocker's umbra */
+    rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
+    int cappj0, cappj1;
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
     int caphn, capha;
     tri_node *node;
     int capnode;
+    double snap;                /* the pair's tolerance: o->snap plus the
+                                   twists of its surfaces and candidates */
     int any_hidden, any_visible;/* over the pair's evaluations */
     double evals;
 } occ_space;
@@ -322,15 +370,47 @@ static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double
         if (fabs(s) <= tol)
             s = 0;
         d[k] = s;
-        mn = fmin(mn, s);
-        mx = fmax(mx, s);
+        mn = s < mn ? s : mn; /* not fmin: a libm call in the hottest loop */
+        mx = s > mx ? s : mx;
     }
     *lo = mn;
     *hi = mx;
 }
 
+/* A convex polygon meets a plane in at most two sign changes of its
+ * vertices' distances (walking round it, zeros skipped).  Round-off in the
+ * distances of a polygon thinner than it (a sliver, or a piece far from the
+ * origin) can show more; then the distances are noise: the polygon is on
+ * the plane as far as they can tell, and all are set to 0 (*lo = *hi = 0).
+ * Every polygon handed to clip_side goes through this first, so that its
+ * output has at most n + 1 vertices and vertex counts cannot grow with
+ * each cut (issue 20: a noisy polygon grew past its n + 1 buffer). */
+static void settle_signs(double *d, int n, double *lo, double *hi)
+{
+    if (*lo >= 0 || *hi <= 0)
+        return; /* one side: no change of sign at all */
+    int changes = 0, first = 0, last = 0;
+    for (int k = 0; k < n; k++) {
+        int s = d[k] > 0 ? 1 : d[k] < 0 ? -1 : 0;
+        if (s == 0)
+            continue;
+        if (!first)
+            first = s;
+        else if (s != last)
+            changes++;
+        last = s;
+    }
+    changes += first != last; /* the wrap from the last vertex to the first */
+    if (changes <= 2)
+        return;
+    for (int k = 0; k < n; k++)
+        d[k] = 0;
+    *lo = *hi = 0;
+}
+
 /* The part of p where sign * d >= 0 (Sutherland & Hodgman 1974), into out
- * (room for n + 1); returns its vertex count. */
+ * (room for n + 1: with d settled by settle_signs there are at most two
+ * crossings, and each drops a vertex); returns its vertex count. */
 static int clip_side(const rad_vec3 *p, const double *d, int n, double sign, rad_vec3 *out)
 {
     int m = 0;
@@ -355,6 +435,7 @@ static int clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_ve
     if (grow_d(&sp->d, &sp->capd, n) || ps_reserve(s, n + 1))
         return -1;
     distances(p, n, nrm, a, tol, sp->d, &lo, &hi);
+    settle_signs(sp->d, n, &lo, &hi);
     if (hi <= 0)
         return 0;
     int m = clip_side(p, sp->d, n, 1.0, s->v + s->nv);
@@ -516,6 +597,29 @@ static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
     return 4;
 }
 
+/* Largest distance of p's vertices from the plane with unit normal nrm
+ * through their mean (differences first: exact for nearby vertices). */
+static double twist(const rad_vec3 *p, int n, rad_vec3 nrm)
+{
+    rad_vec3 c = v3(0, 0, 0);
+    for (int k = 1; k < n; k++)
+        c = v3_add(c, v3_sub(p[k], p[0]));
+    c = v3_scale(c, 1.0 / n);
+    double t = 0;
+    for (int k = 0; k < n; k++)
+        t = fmax(t, fabs(v3_dot(nrm, v3_sub(v3_sub(p[k], p[0]), c))));
+    return t;
+}
+
+/* The tolerance for the surfaces a and b and the candidates of their pair. */
+static double pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand)
+{
+    double t = o->snap + o->stwist[a] + o->stwist[b], tc = 0;
+    for (int k = 0; k < ncand; k++)
+        tc = fmax(tc, o->stwist[cand[k]]);
+    return t + tc;
+}
+
 static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
 {
     const int ns = m->nsurfaces;
@@ -530,8 +634,9 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
     o->snormal = malloc(sizeof *o->snormal * (size_t)(ns > 0 ? ns : 1));
     o->slo = malloc(sizeof *o->slo * (size_t)(ns > 0 ? ns : 1));
     o->shi = malloc(sizeof *o->shi * (size_t)(ns > 0 ? ns : 1));
+    o->stwist = malloc(sizeof *o->stwist * (size_t)(ns > 0 ? ns : 1));
     o->esurf = malloc(sizeof *o->esurf * (size_t)m->nelements);
-    if (!o->sv || !o->sfirst || !o->snormal || !o->slo || !o->shi || !o->esurf)
+    if (!o->sv || !o->sfirst || !o->snormal || !o->slo || !o->shi || !o->stwist || !o->esurf)
         return RAD_ERR_NOMEM;
     int at = 0;
     for (int s = 0; s < ns; s++) {
@@ -541,9 +646,11 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
             int n = surface_outline(m, s, o->sv + at);
             o->snormal[s] = m->elements[e0].normal;
             v3_bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
+            o->stwist[s] = twist(o->sv + at, n, o->snormal[s]);
             at += n;
         } else {
             o->snormal[s] = o->slo[s] = o->shi[s] = v3(0, 0, 0);
+            o->stwist[s] = 0;
         }
     }
     o->sfirst[ns] = at;
@@ -561,7 +668,8 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     int na = o->sfirst[a + 1] - o->sfirst[a], nb = o->sfirst[b + 1] - o->sfirst[b];
     if (na < 3 || nb < 3)
         return 0;
-    int r = clip_pair(sp, pa, na, o->snormal[a], pb, nb, o->snormal[b], o->snap);
+    const double snap = o->snap + o->stwist[a] + o->stwist[b];
+    int r = clip_pair(sp, pa, na, o->snormal[a], pb, nb, o->snormal[b], snap);
     if (r <= 0)
         return r; /* they see nothing of each other */
     const rad_vec3 *all = sp->elem.v;
@@ -572,7 +680,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
         for (int c = 0; c < o->nsurf; c++)
             owners[nc++] = c;
     } else {
-        rad_vec3 lo, hi, pad = v3(o->touch, o->touch, o->touch);
+        rad_vec3 lo, hi, pad = v3(snap, snap, snap);
         v3_bounds(all, nall, &lo, &hi);
         nc = rad_vis_box_polygons(vis, v3_sub(lo, pad), v3_add(hi, pad), owners);
         if (nc < 0)
@@ -580,7 +688,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     }
     int nh = o->mode == RAD_OCC_ALL
                  ? 0
-                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], o->snap);
+                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], snap);
     if (nh < 0)
         return -1;
     int added = 0;
@@ -589,7 +697,8 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
         if (c == a || c == b || n < 3)
             continue;
         if (o->mode != RAD_OCC_ALL &&
-            clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c], o->touch))
+            clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c],
+                           snap + o->stwist[c]))
             continue;
         if (grow_i(cand, capcand, *ncand + 1))
             return -1;
@@ -641,10 +750,20 @@ void rad_occ_free(rad_occ *o)
     free(o->snormal);
     free(o->slo);
     free(o->shi);
+    free(o->stwist);
     free(o->esurf);
     free(o->cand_off);
     free(o->cand);
     free(o);
+}
+
+/* The largest absolute coordinate of the mesh. */
+static double scene_magnitude(const rad_mesh *m)
+{
+    double x = 0;
+    for (int k = 0; k < m->nvertices; k++)
+        x = fmax(x, v3_maxabs(m->vertices[k]));
+    return x;
 }
 
 static double scene_size(const rad_mesh *m)
@@ -675,9 +794,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
     o->mode = mode;
     o->accuracy = accuracy;
-    double L = scene_size(m);
-    o->snap = OCC_SNAP * L;
-    o->touch = OCC_TOUCH * L;
+    o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m);
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = rad_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
@@ -708,6 +825,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
 
 static void space_free(occ_space *sp)
 {
+    ps_free(&sp->loc);
     ps_free(&sp->elem);
     ps_free(&sp->blk);
     ps_free(&sp->blkc);
@@ -728,7 +846,13 @@ static void space_free(occ_space *sp)
     ps_free(&sp->da);
     ps_free(&sp->db);
     ps_free(&sp->dom);
+    free(sp->pcen);
+    free(sp->qcen);
+    free(sp->prad);
+    free(sp->qrad);
     ps_free(&sp->umb);
+    free(sp->pj0);
+    free(sp->pj1);
     free(sp->hn);
     free(sp->ha);
     free(sp->node);
@@ -768,6 +892,7 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
  * (clipped) and the blockers (clipped to the front of the inner plane). */
 typedef struct pair_ctx {
     rad_vec3 nx;                /* outer normal */
+    rad_vec3 tn;                /* inner normal */
     const rad_vec3 *t;          /* inner element */
     int nt;
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
@@ -787,6 +912,7 @@ static int cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int
         if (grow_d(&sp->d, &sp->capd, *n) || grow_v3(&sp->tmp, &sp->captmp, *n + 1))
             return -1;
         distances(sp->rem, *n, nrm[k], pt[k], snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, *n, &lo, &hi);
         if (hi <= 0)
             return ps_push(out, sp->rem, *n) ? -1 : 0; /* wholly outside */
         if (lo >= 0)
@@ -842,6 +968,101 @@ static int cone_planes(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
     return m;
 }
 
+/* The shadow of blocker b from x on the inner plane: the central
+ * projection of its vertices, y = x + (p - x) h / (tn . (p - x)) with
+ * h = tn . (t0 - x), into sp->pj0.  It is the cone's section by the plane
+ * only when every vertex lies strictly between x's level and the plane
+ * (all denominators of h's sign, away from 0); returns the vertex count,
+ * 0 when not so (the caller then cuts by the cone planes), -1. */
+static int shadow_polygon(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int n = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    double h = v3_dot(c->tn, v3_sub(c->t[0], x));
+    if (!(h < -c->snap) || grow_v3(&sp->pj0, &sp->cappj0, n))
+        return h < -c->snap ? -1 : 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 r = v3_sub(p[k], x);
+        double dk = v3_dot(c->tn, r);
+        if (!(dk < -c->snap))
+            return 0;
+        sp->pj0[k] = v3_add(x, v3_scale(r, h / dk));
+    }
+    return n;
+}
+
+/* The part of the shadow (sp->pj0, m vertices) inside the convex piece q
+ * (nq vertices, on the inner plane): the shadow clipped by q's edges
+ * (Sutherland & Hodgman 1974), left in sp->pj0; returns its vertex count
+ * (0: nothing), -1. */
+static int shadow_in_piece(occ_space *sp, const pair_ctx *c, const rad_vec3 *q, int nq, int m)
+{
+    double turn = v3_dot(v3_newell(q, nq), c->tn) < 0 ? -1.0 : 1.0;
+    for (int k = 0; k < nq && m >= 3; k++) {
+        rad_vec3 e = v3_sub(q[(k + 1) % nq], q[k]), nrm = v3_cross(c->tn, e);
+        double len = v3_norm(nrm), lo, hi;
+        if (!(len > 0))
+            continue;
+        if (grow_d(&sp->d, &sp->capd, m) || grow_v3(&sp->pj1, &sp->cappj1, m + 1))
+            return -1;
+        distances(sp->pj0, m, v3_scale(nrm, turn / len), q[k], c->snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, m, &lo, &hi);
+        if (hi <= 0)
+            return 0;
+        if (lo >= 0)
+            continue;
+        m = clip_side(sp->pj0, sp->d, m, 1.0, sp->pj1);
+        rad_vec3 *t = sp->pj0;
+        int tc = sp->cappj0;
+        sp->pj0 = sp->pj1;
+        sp->cappj0 = sp->cappj1;
+        sp->pj1 = t;
+        sp->cappj1 = tc;
+    }
+    return m >= 3 ? m : 0;
+}
+
+/* The last blocker's share of hidden(x), when its shadow is a polygon:
+ * each visible piece q loses q intersected with the shadow.  That is
+ * the same set as q cut by the cone planes, but it costs O(nq K) for a
+ * K-gon blocker instead of O(K^2): the cuts of cut_piece make the piece a
+ * K-gon one plane at a time (issue 20: reference mode slowed as K^4).
+ * The visible remainder is not built, since no blocker follows; only
+ * whether some is left.  Returns 1 when done (*h increased), 0 when the
+ * shadow is no polygon, -1. */
+static int hidden_last(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, double *h)
+{
+    int n = shadow_polygon(sp, c, b, x);
+    if (n <= 0)
+        return n;
+    if (grow_v3(&sp->tmp, &sp->captmp, n))
+        return -1;
+    memcpy(sp->tmp, sp->pj0, sizeof *sp->tmp * (size_t)n); /* the whole shadow */
+    int visible = 0;
+    for (int k = 0; k < sp->cur.np; k++) {
+        const rad_vec3 *q = sp->cur.v + sp->cur.first[k];
+        int nq = sp->cur.first[k + 1] - sp->cur.first[k];
+        if (grow_v3(&sp->pj0, &sp->cappj0, n))
+            return -1;
+        memcpy(sp->pj0, sp->tmp, sizeof *sp->pj0 * (size_t)n);
+        int m = shadow_in_piece(sp, c, q, nq, n);
+        if (m < 0)
+            return -1;
+        double aq = poly_area(q, nq), am = m ? poly_area(sp->pj0, m) : 0;
+        if (am > c->sliver) {
+            *h += fabs(ff_point_polygon(x, c->nx, sp->pj0, m));
+            sp->any_hidden = 1;
+        } else {
+            am = 0;
+        }
+        visible |= aq - am > c->sliver;
+    }
+    if (visible)
+        sp->any_visible = 1;
+    ps_clear(&sp->cur); /* the caller's test for anything visible is done */
+    return 1;
+}
+
 /* hidden(x): the form factor from x to the part of the inner element that
  * the blockers hide.  Sets sp->any_hidden / any_visible. */
 static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
@@ -852,6 +1073,16 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
         return -1;
     sp->evals++;
     for (int b = 0; b < c->nb && sp->cur.np > 0; b++) {
+        if (b == c->nb - 1 &&
+            fabs(v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]))) > c->snap) {
+            int r = hidden_last(sp, c, b, x, &h);
+            if (r < 0)
+                return -1;
+            if (r > 0) {
+                *out = h;
+                return 0;
+            }
+        }
         int ncone = cone_planes(sp, c, b, x);
         if (ncone < 0)
             return -1;
@@ -1042,8 +1273,51 @@ static int cut_set(occ_space *sp, const pair_ctx *c, int e, polyset *inside)
     return 0;
 }
 
+/* Append polygon p (n vertices) to sp->db with its bounding sphere
+ * (centre cen, radius rad); 0 or -1. */
+static int push_db(occ_space *sp, const rad_vec3 *p, int n, rad_vec3 cen, double rad)
+{
+    int k = sp->db.np;
+    if (grow_v3(&sp->qcen, &sp->capqc, k + 1) || grow_d(&sp->qrad, &sp->capqr, k + 1) ||
+        ps_push(&sp->db, p, n))
+        return -1;
+    sp->qcen[k] = cen;
+    sp->qrad[k] = rad;
+    return 0;
+}
+
+/* The bounding sphere of p about its vertex mean. */
+static void sphere(const rad_vec3 *p, int n, rad_vec3 *cen, double *rad)
+{
+    rad_vec3 c = poly_mean(p, n);
+    double r2 = 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 e = v3_sub(p[k], c);
+        double x = v3_dot(e, e);
+        r2 = x > r2 ? x : r2;
+    }
+    *cen = c;
+    *rad = sqrt(r2);
+}
+
+/* The bounding spheres of sp->dom's pieces, for split_dom. */
+static int dom_spheres(occ_space *sp)
+{
+    int np = sp->dom.np;
+    if (grow_v3(&sp->pcen, &sp->cappc, np) || grow_d(&sp->prad, &sp->cappr, np))
+        return -1;
+    for (int k = 0; k < np; k++)
+        sphere(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k],
+               &sp->pcen[k], &sp->prad[k]);
+    return 0;
+}
+
 /* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses.  Returns 0 or -1. */
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date).  A
+ * piece whose bounding sphere the plane misses is copied without looking
+ * at its vertices: with a K-gon blocker there are O(K) planes and O(K^2)
+ * pieces, most of them far from any one plane (issue 20: reference mode
+ * slowed as K^4).  Returns 0 or -1. */
 static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
 {
     ps_clear(&sp->db);
@@ -1051,23 +1325,46 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
         const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
         int n = sp->dom.first[k + 1] - sp->dom.first[k];
         double lo, hi;
+        if (fabs(v3_dot(nrm, v3_sub(sp->pcen[k], a))) > sp->prad[k] + c->snap) {
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
+                return -1;
+            continue;
+        }
         if (grow_d(&sp->d, &sp->capd, n) || grow_v3(&sp->tmp, &sp->captmp, n + 1))
             return -1;
         distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
+        settle_signs(sp->d, n, &lo, &hi);
         if (lo >= 0 || hi <= 0) {
-            if (ps_push(&sp->db, p, n))
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
         }
         for (int side = -1; side <= 1; side += 2) {
             int m = clip_side(p, sp->d, n, side, sp->tmp);
-            if (m >= 3 && poly_area(sp->tmp, m) > c->sliver && ps_push(&sp->db, sp->tmp, m))
+            rad_vec3 cen;
+            double rad;
+            if (m < 3 || !(poly_area(sp->tmp, m) > c->sliver))
+                continue;
+            sphere(sp->tmp, m, &cen, &rad);
+            if (push_db(sp, sp->tmp, m, cen, rad))
                 return -1;
         }
     }
     polyset t = sp->dom;
     sp->dom = sp->db;
     sp->db = t;
+    rad_vec3 *tc = sp->pcen;
+    sp->pcen = sp->qcen;
+    sp->qcen = tc;
+    double *tr = sp->prad;
+    sp->prad = sp->qrad;
+    sp->qrad = tr;
+    int ti = sp->cappc;
+    sp->cappc = sp->capqc;
+    sp->capqc = ti;
+    ti = sp->cappr;
+    sp->cappr = sp->capqr;
+    sp->capqr = ti;
     return 0;
 }
 
@@ -1099,6 +1396,8 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
  * between them. */
 static int split_events(occ_space *sp, const pair_ctx *c)
 {
+    if (dom_spheres(sp))
+        return -1;
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
@@ -1274,7 +1573,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau,
 /* Collect the blockers of the pair: the surface pair's candidates that the
  * element shaft does not clear.  Returns their count, or -1. */
 static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
-                         const rad_ff_poly *pj)
+                         const rad_ff_poly *pj, rad_vec3 origin)
 {
     int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
     size_t p = pair_index(a, b, o->nsurf);
@@ -1284,23 +1583,29 @@ static int pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const 
     int ni = sp->elem.first[1], nall = sp->elem.nv;
     int nh = 0;
     if (o->mode != RAD_OCC_ALL) {
-        nh = hull_planes(sp, all, ni, pi->normal, nall - ni, pj->normal, o->snap);
+        nh = hull_planes(sp, all, ni, pi->normal, nall - ni, pj->normal, sp->snap);
         if (nh < 0)
             return -1;
     }
     rad_vec3 lo, hi;
     v3_bounds(all, nall, &lo, &hi);
+    lo = v3_add(lo, origin); /* the boxes are in scene coordinates */
+    hi = v3_add(hi, origin);
     ps_clear(&sp->blk);
     int nb = 0;
     for (int k = 0; k < ncand; k++) {
         int c = cand[k], n = o->sfirst[c + 1] - o->sfirst[c];
-        const rad_vec3 *v = o->sv + o->sfirst[c];
-        if (o->mode != RAD_OCC_ALL &&
-            (!boxes_meet(lo, hi, o->slo[c], o->shi[c], o->touch) ||
-             clear_of_shaft(sp, nh, all, nall, v, n, o->snormal[c], o->touch)))
+        if (o->mode != RAD_OCC_ALL && !boxes_meet(lo, hi, o->slo[c], o->shi[c], sp->snap))
             continue;
-        if (grow_i(&sp->bid, &sp->capb, nb + 1) || ps_push(&sp->blk, v, n))
+        if (grow_i(&sp->bid, &sp->capb, nb + 1) ||
+            ps_push_shifted(&sp->blk, o->sv + o->sfirst[c], n, origin))
             return -1;
+        if (o->mode != RAD_OCC_ALL &&
+            clear_of_shaft(sp, nh, all, nall, sp->blk.v + sp->blk.first[nb], n, o->snormal[c],
+                           sp->snap)) {
+            ps_pop(&sp->blk);
+            continue;
+        }
         sp->bid[nb++] = c;
     }
     return nb;
@@ -1347,7 +1652,7 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
     int kept = 0;
     for (int b = 0; b < nb; b++) {
         int n = sp->blk.first[b + 1] - sp->blk.first[b];
-        int m = clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, o->snap);
+        int m = clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, sp->snap);
         if (m < 0)
             return -1;
         if (m == 0)
@@ -1363,11 +1668,10 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
 static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const rad_ff_poly *e)
 {
     double d = HUGE_VAL;
-    for (int b = 0; b < nb; b++) {
-        int c = sp->bid[b];
-        d = fmin(d, point_polygon_distance(e->centroid, o->sv + o->sfirst[c],
-                                           o->sfirst[c + 1] - o->sfirst[c], o->snormal[c]));
-    }
+    for (int b = 0; b < nb; b++)
+        d = fmin(d, point_polygon_distance(e->centroid, sp->blk.v + sp->blk.first[b],
+                                           sp->blk.first[b + 1] - sp->blk.first[b],
+                                           o->snormal[sp->bid[b]]));
     return e->size / fmax(d, 1e-300);
 }
 
@@ -1393,10 +1697,11 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
         return -1;
     pair_ctx c;
     c.nx = po->normal;
+    c.tn = pt->normal;
     c.t = ct;
     c.nt = nt;
     c.nb = kept;
-    c.snap = o->snap;
+    c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
     c.events = o->accuracy == RAD_ACCURACY_REFERENCE;
     sp->any_hidden = sp->any_visible = 0;
@@ -1439,7 +1744,7 @@ static int occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int 
     for (int b = 0; b < nb; b++) {
         const rad_vec3 *v = sp->blk.v + sp->blk.first[b];
         int n = sp->blk.first[b + 1] - sp->blk.first[b];
-        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], o->touch)) {
+        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], sp->snap)) {
             st->pairs_blocked++;
             *snew = 0;
             return 0;
@@ -1480,6 +1785,32 @@ static int occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int 
     return 0;
 }
 
+/* The pair in its own frame: vertices and centroids less `origin` (the
+ * centroid of i), into sp->loc and *li, *lj (the rest as in pi, pj).  The
+ * points the cuts construct (v3_lerp) are then rounded relative to the
+ * pair's size, not to the scene's coordinates: a pair 1e-5 across at 3e5
+ * from the origin keeps ten digits instead of five. */
+static int local_frame(occ_space *sp, const rad_ff_poly *pi, const rad_ff_poly *pj,
+                       rad_vec3 origin, rad_ff_poly *li, rad_ff_poly *lj)
+{
+    ps_clear(&sp->loc);
+    if (ps_push_shifted(&sp->loc, pi->v, pi->n, origin) ||
+        ps_push_shifted(&sp->loc, pj->v, pj->n, origin))
+        return -1;
+    *li = *pi;
+    *lj = *pj;
+    li->v = sp->loc.v;
+    lj->v = sp->loc.v + sp->loc.first[1];
+    li->centroid = v3_sub(pi->centroid, origin);
+    lj->centroid = v3_sub(pj->centroid, origin);
+    li->lo = v3_sub(pi->lo, origin);
+    li->hi = v3_sub(pi->hi, origin);
+    lj->lo = v3_sub(pj->lo, origin);
+    lj->hi = v3_sub(pj->hi, origin);
+    li->edges = lj->edges = NULL; /* relative to the centroids: not needed here */
+    return 0;
+}
+
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
                  double *errest)
 {
@@ -1498,9 +1829,15 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
         return -1;
     occ_space *sp = w->space;
-    const rad_ff_poly *pi = &polys[i], *pj = &polys[j];
-    int r = clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, o->snap);
-    int nb = r > 0 ? pair_blockers(o, sp, sa, sb, pi, pj) : r;
+    rad_ff_poly li, lj;
+    rad_vec3 origin = polys[i].centroid;
+    if (local_frame(sp, &polys[i], &polys[j], origin, &li, &lj))
+        return -1;
+    const rad_ff_poly *pi = &li, *pj = &lj;
+    sp->snap = pair_snap(o, sa, sb, o->cand + o->cand_off[p],
+                         (int)(o->cand_off[p + 1] - o->cand_off[p]));
+    int r = clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, sp->snap);
+    int nb = r > 0 ? pair_blockers(o, sp, sa, sb, pi, pj, origin) : r;
     double snew = *s;
     if (nb > 0) {
         w->stats.pairs_blockable++;
