@@ -65,10 +65,8 @@
 
 #include <float.h>
 #include <math.h>
+#include "vec.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* ---- argument checks and regimes ---------------------------------------- */
 
@@ -284,7 +282,7 @@ static double pr_moderate(double x, double y)
     const double den = 1.0 + x * x + y * y;
     const double xy = x * y;
     const double l = x / den * y * log1p_ratio(xy * (xy / den));
-    return (l + 2.0 * pr_half_g(x, y) + 2.0 * pr_half_g(y, x)) / M_PI;
+    return (l + 2.0 * pr_half_g(x, y) + 2.0 * pr_half_g(y, x)) / RAD_PI;
 }
 
 /* X > 2^K, Y < 1, u = 1/X < 2^-K (may have underflowed to 0):
@@ -311,7 +309,7 @@ static double pr_long_strip(double u, double y)
     const double s = hypot(1.0, y);
     const double w = 1.0 + u * u * (1.0 + y * y);
     const double l = u * y / w * log1p_ratio(y * y / w);
-    return (l + M_PI * y / (s + 1.0) - 2.0 * u * atan(y)) / M_PI;
+    return (l + RAD_PI * y / (s + 1.0) - 2.0 * u * atan(y)) / RAD_PI;
 }
 
 /* X >= Y >= 1, X > 2^K, in u = 1/X = c/a, v = 1/Y = c/b, r = u/v = b/a
@@ -337,10 +335,10 @@ static double pr_near(double a, double b, double c)
     const double ln_v = log_ratio(c, b);
     const double ln1q = log1p(u * u) + log1p(v * v) - 2.0 * ln_v
                         - log1p(r * r * (1.0 + v * v));
-    const double g1 = M_PI / (sv + v) - 2.0 * sv * atan(r * sv)
+    const double g1 = RAD_PI / (sv + v) - 2.0 * sv * atan(r * sv)
                       + 2.0 * v * atan(u);
-    const double g2 = 2.0 * su * atan(r / su) - M_PI * u + 2.0 * u * atan(v);
-    return (u * v * ln1q + g1 + g2) / M_PI;
+    const double g2 = 2.0 * su * atan(r / su) - RAD_PI * u + 2.0 * u * atan(v);
+    return (u * v * ln1q + g1 + g2) / RAD_PI;
 }
 
 double rad_analytic_parallel_rectangles(double a, double b, double c)
@@ -457,11 +455,11 @@ static double pp_long_strips(double M, double s, int w_is_min)
     const double s_ln_s = s == 0.0 ? 0.0 : s * log(s);
     /* [(1 + s^2) log1p(s^2) - 2 s^2 ln s] / s, non-negative terms */
     const double ends_s = (1.0 + s * s) * s * log1p_ratio(s * s) - 2.0 * s_ln_s;
-    const double cross = M_PI / (1.0 + s + sr);
+    const double cross = RAD_PI / (1.0 + s + sr);
     double b_s = cross - 0.25 * M * ends_s + M * M * M * s / 12.0;
     if (!w_is_min)
         b_s *= s;
-    return b_s / M_PI;
+    return b_s / RAD_PI;
 }
 
 /* M > 2^K >= m (w << l << h or h << l << w, and the tall or deep
@@ -529,12 +527,12 @@ double rad_analytic_perpendicular_rectangles(double l, double w, double h)
     s = mn / mx;
     if (far_above(mn, l))
         /* F = B/(pi W) = B (l/w)/pi; l/w last, as it may be subnormal */
-        return pp_wide(l / mn, l / mx, s, log_ratio(l, mn)) / M_PI * l / w;
+        return pp_wide(l / mn, l / mx, s, log_ratio(l, mn)) / RAD_PI * l / w;
     if (far_above(mx, l))
         b_m = pp_tall(mn / l, l / mx, s, log_ratio(mn, l));
     else if (far_above(l, mx))
         return pp_long_strips(mx / l, s, w_is_min);
     else
         b_m = pp_moderate(mn / l, mx / l, log_ratio(mn, l));
-    return (w_is_min ? b_m : b_m * s) / M_PI;
+    return (w_is_min ? b_m : b_m * s) / RAD_PI;
 }

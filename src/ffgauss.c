@@ -115,7 +115,6 @@
 #include "vec.h"
 #include "vecmath.h"
 
-#define RAD_PI 3.14159265358979323846
 #define THETA 0.9  /* how far towards the singularity the ellipse reaches */
 #define BATCH 64   /* edge pairs per batch (a multiple of 4) */
 /* The quadratic-form rules take rad_log4_short, which errs by at most

@@ -41,7 +41,6 @@
 #include "status.h"
 #include "vec.h"
 
-#define RAD_PI 3.14159265358979323846
 
 /* perimeter, longest edge, radius about the centroid and twist, from the
  * edges (their starts are relative to the centroid) */

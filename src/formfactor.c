@@ -63,7 +63,6 @@
 #include "status.h"
 #include "vec.h"
 
-#define RAD_PI 3.14159265358979323846
 
 /* ulps of the coordinates allowed for the rounding of a centroid */
 #define FF_ROUND 16

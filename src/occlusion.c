@@ -110,7 +110,6 @@
 #include "vec.h"
 #include "visibility.h"
 
-#define RAD_PI 3.14159265358979323846
 
 /* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
  * within OCC_SNAP of the scene's bounding-box diagonal L, plus the

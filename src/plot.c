@@ -24,6 +24,7 @@
 #include "plot.h"
 #include "radiosity.h"
 #include "status.h"
+#include "vec.h"
 
 /* ---- PNG output ------------------------------------------------------------ */
 
@@ -183,7 +184,7 @@ static void draw_labels(cairo_t *cr, const frame *fr, int width, const char *tit
     text_centred(cr, 0.5 * (fr->left + fr->right), fr->bottom + 42, "pixel column");
     cairo_save(cr);
     cairo_translate(cr, 22, 0.5 * (fr->top + fr->bottom));
-    cairo_rotate(cr, -0.5 * 3.14159265358979323846);
+    cairo_rotate(cr, -0.5 * RAD_PI);
     text_centred(cr, 0, 0, "radiosity");
     cairo_restore(cr);
     if (title && *title) {

@@ -16,6 +16,7 @@
 #include "plot.h"
 #include "plotxy.h"
 #include "status.h"
+#include "vec.h"
 
 #define ML 86.0
 #define MR 210.0
@@ -135,7 +136,7 @@ rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
         cairo_save(cr);
         cairo_text_extents(cr, spec->ylabel, &ext);
         cairo_move_to(cr, 18, MT + ph / 2 + ext.width / 2);
-        cairo_rotate(cr, -M_PI / 2);
+        cairo_rotate(cr, -RAD_PI / 2);
         cairo_show_text(cr, spec->ylabel);
         cairo_restore(cr);
     }
@@ -168,7 +169,7 @@ rad_status rad_plot_xy(const rad_series *s, int ns, const rad_plot_spec *spec,
                 continue;
             double x = ML + (tr(&ax, s[k].x[i]) - ax.lo) / (ax.hi - ax.lo) * pw;
             double y = MT + ph - (tr(&ay, s[k].y[i]) - ay.lo) / (ay.hi - ay.lo) * ph;
-            cairo_arc(cr, x, y, 3, 0, 2 * M_PI);
+            cairo_arc(cr, x, y, 3, 0, 2 * RAD_PI);
             cairo_fill(cr);
         }
         /* legend */

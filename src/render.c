@@ -62,7 +62,6 @@
 #include "status.h"
 #include "vec.h"
 
-#define RAD_PI 3.14159265358979323846
 #define ZNEAR_REL 1e-6          /* near plane, relative to the scene's size */
 #define EDGE_HALF_WIDTH 0.55    /* pixels: lines about one pixel wide */
 

@@ -45,7 +45,6 @@
 #define RAD_TURN_TOL 1e-9
 #define RAD_AREA_TOL 1e-12
 #define RAD_SELFX_MAX 4096  /* O(n^2) self-intersection diagnosis up to this n */
-#define RAD_PI 3.14159265358979323846
 
 /* One line being parsed: its tokens and where it came from. */
 typedef struct line_ctx {

@@ -1,6 +1,7 @@
 /* vec.h -- small inline 3-vector arithmetic shared by the numerical modules.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ * Also the home of RAD_PI.
  */
 #ifndef RAD_VEC_H
 #define RAD_VEC_H
@@ -8,6 +9,10 @@
 #include <math.h>
 
 #include "radiosity.h"
+
+/* pi, to more digits than a double holds: the one definition every
+ * numerical module uses (M_PI is not ISO C). */
+#define RAD_PI 3.14159265358979323846
 
 static inline rad_vec3 v3(double x, double y, double z)
 {
