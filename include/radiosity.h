@@ -97,7 +97,18 @@ typedef struct rad_surface {
     rad_vec3 *verts;            /* counter-clockwise about the front */
     int mesh_n, mesh_m;         /* v1->v2 in N parts, v2->v3 in M parts */
     int line;                   /* input line, for messages */
+    int object;                 /* index into rad_scene.objects; -1: the static
+                                   environment (outside every object) */
 } rad_surface;
+
+/* A named group of surfaces that a change may move, add or remove (the
+ * dynamic-scene contract of radiosity-scene(5)).  Today the OBJ reader
+ * fills them from `o` and `g` statements; scene files name none yet. */
+typedef struct rad_object {
+    char name[RAD_NAME_MAX];
+    int absent;                 /* 1: joins the scene only when a change adds it */
+    int line;                   /* where it was first named */
+} rad_object;
 
 typedef struct rad_camera {
     int defined;                /* 0: the scene has no camera line */
@@ -111,6 +122,8 @@ typedef struct rad_scene {
     int nmaterials;
     rad_surface *surfaces;
     int nsurfaces;
+    rad_object *objects;
+    int nobjects;
     rad_camera camera;
 } rad_scene;
 
