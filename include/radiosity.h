@@ -128,9 +128,13 @@ typedef struct rad_scene {
 } rad_scene;
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
- * input.  On failure *scene is left empty and err says FILE:LINE: why. */
+ * input.  A name ending in ".obj" is read as Wavefront OBJ (its mtllib
+ * files relative to it; case-insensitive; radiosity-scene(5) says what it
+ * maps to).  On
+ * failure *scene is left empty and err says FILE:LINE: why. */
 RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
-/* Parse scene text held in memory; `name` is used in messages. */
+/* Parse scene text held in memory; `name` is used in messages and picks
+ * the format by its ending as rad_scene_load does. */
 RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err);
 RAD_API void rad_scene_free(rad_scene *scene);

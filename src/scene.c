@@ -17,7 +17,9 @@
  * or disk, RAD_MESH_MAX parts per edge, RAD_ELEMENTS_MAX elements per
  * surface and per scene.  The scene is built through scenebuild.h, which
  * finds materials by a hash of their names, so the parse takes time linear
- * in the input.
+ * in the input.  A file whose name ends in .obj goes to its own reader
+ * (objread.c), which builds the scene the same way and
+ * checks its polygons with rad_polygon_check below.
  *
  * Geometric tolerances, stated once (D is the polygon's bounding-box
  * diagonal, so they scale with the polygon and not with where it sits):
@@ -35,10 +37,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "radiosity.h"
 #include "scene.h"
 #include "scenebuild.h"
+#include "objread.h"
 #include "readfile.h"
 #include "status.h"
 #include "vec.h"
@@ -540,13 +544,46 @@ static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
     return rad_build_finish(&p, st, scene);
 }
 
+/* The format a file name asks for, by its ending (case-insensitive). */
+typedef enum scene_format { FORMAT_SCENE, FORMAT_OBJ } scene_format;
+
+static int ends_with(const char *name, const char *suffix)
+{
+    size_t n = strlen(name), k = strlen(suffix);
+    return n > k && strcasecmp(name + n - k, suffix) == 0;
+}
+
+static scene_format format_of(const char *name)
+{
+    return ends_with(name, ".obj") ? FORMAT_OBJ : FORMAT_SCENE;
+}
+
+/* Every format's comments start with '#'. */
+static char comment_of(scene_format f)
+{
+    (void)f;
+    return '#';
+}
+
+static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
+                              scene_format f)
+{
+    switch (f) {
+    case FORMAT_OBJ:
+        return rad_obj_read(scene, r, NULL, 0);
+    default:
+        return parse_lines(scene, r, name);
+    }
+}
+
 rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err)
 {
     rad_lines r;
     name = name ? name : "-";
-    rad_lines_mem(&r, text, len, name, '#', err);
-    rad_status st = parse_lines(scene, &r, name);
+    scene_format f = format_of(name);
+    rad_lines_mem(&r, text, len, name, comment_of(f), err);
+    rad_status st = read_format(scene, &r, name, f);
     rad_lines_close(&r);
     return st;
 }
@@ -554,10 +591,11 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
     rad_lines r;
+    scene_format f = format_of(path);
     memset(scene, 0, sizeof *scene);
-    rad_status st = rad_lines_open(&r, path, '#', err);
+    rad_status st = rad_lines_open(&r, path, comment_of(f), err);
     if (st == RAD_OK)
-        st = parse_lines(scene, &r, path);
+        st = read_format(scene, &r, path, f);
     rad_lines_close(&r);
     return st;
 }
