@@ -129,8 +129,8 @@ typedef struct rad_scene {
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
  * input.  A name ending in ".obj" is read as Wavefront OBJ (its mtllib
- * files relative to it; case-insensitive; radiosity-scene(5) says what it
- * maps to).  On
+ * files relative to it), one ending in ".vs3" as View3D 3.x input (both
+ * case-insensitive; radiosity-scene(5) says what they map to).  On
  * failure *scene is left empty and err says FILE:LINE: why. */
 RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
 /* Parse scene text held in memory; `name` is used in messages and picks

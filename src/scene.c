@@ -17,8 +17,8 @@
  * or disk, RAD_MESH_MAX parts per edge, RAD_ELEMENTS_MAX elements per
  * surface and per scene.  The scene is built through scenebuild.h, which
  * finds materials by a hash of their names, so the parse takes time linear
- * in the input.  A file whose name ends in .obj goes to its own reader
- * (objread.c), which builds the scene the same way and
+ * in the input.  A file whose name ends in .obj or .vs3 goes to its own
+ * reader (objread.c, vs3read.c), which builds the scene the same way and
  * checks its polygons with rad_polygon_check below.
  *
  * Geometric tolerances, stated once (D is the polygon's bounding-box
@@ -43,6 +43,7 @@
 #include "scene.h"
 #include "scenebuild.h"
 #include "objread.h"
+#include "vs3read.h"
 #include "readfile.h"
 #include "status.h"
 #include "vec.h"
@@ -545,7 +546,7 @@ static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
 }
 
 /* The format a file name asks for, by its ending (case-insensitive). */
-typedef enum scene_format { FORMAT_SCENE, FORMAT_OBJ } scene_format;
+typedef enum scene_format { FORMAT_SCENE, FORMAT_OBJ, FORMAT_VS3 } scene_format;
 
 static int ends_with(const char *name, const char *suffix)
 {
@@ -555,14 +556,14 @@ static int ends_with(const char *name, const char *suffix)
 
 static scene_format format_of(const char *name)
 {
-    return ends_with(name, ".obj") ? FORMAT_OBJ : FORMAT_SCENE;
+    return ends_with(name, ".obj") ? FORMAT_OBJ : ends_with(name, ".vs3") ? FORMAT_VS3
+                                                                         : FORMAT_SCENE;
 }
 
-/* Every format's comments start with '#'. */
+/* View3D comments start with '!', the others' with '#'. */
 static char comment_of(scene_format f)
 {
-    (void)f;
-    return '#';
+    return f == FORMAT_VS3 ? '!' : '#';
 }
 
 static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
@@ -571,6 +572,8 @@ static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
     switch (f) {
     case FORMAT_OBJ:
         return rad_obj_read(scene, r, NULL, 0);
+    case FORMAT_VS3:
+        return rad_vs3_read(scene, r);
     default:
         return parse_lines(scene, r, name);
     }

@@ -46,8 +46,8 @@ printf '#define PACKAGE_VERSION "fuzz"\n' > "$work/config.h"
 # The sources each harness needs, and its corpus and dictionary.
 sources() {
     case $1 in
-        scene) echo scene.c scenebuild.c objread.c readnum.c mesh.c status.c readfile.c ;;
-        ply) echo plyread.c readfile.c scene.c scenebuild.c objread.c readnum.c status.c render.c plot.c atomicfile.c mesh.c ;;
+        scene) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
+        ply) echo plyread.c readfile.c scene.c scenebuild.c objread.c vs3read.c readnum.c status.c render.c plot.c atomicfile.c mesh.c ;;
     esac
 }
 libs() {
