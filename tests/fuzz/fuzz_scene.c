@@ -49,7 +49,8 @@ static int message_ok(const char *msg)
 static int scene_empty(const rad_scene *s)
 {
     return s->filename == NULL && s->materials == NULL && s->nmaterials == 0 &&
-           s->surfaces == NULL && s->nsurfaces == 0 && !s->camera.defined;
+           s->surfaces == NULL && s->nsurfaces == 0 && s->objects == NULL &&
+           s->nobjects == 0 && !s->camera.defined;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
