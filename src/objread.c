@@ -17,7 +17,8 @@
  *   - `usemtl NAME` picks the material of the faces after it, from the
  *     `mtllib` files read so far (opened relative to the OBJ file); faces
  *     before any usemtl get the material "(no material)": black (Kd 0) and
- *     dark (Ke 0);
+ *     dark (Ke 0).  An mtllib file name has at most 255 bytes, so that a
+ *     message about its lines keeps their FILE:LINE;
  *   - `o NAME` and `g NAME...` start an object (the first name of a g);
  *     faces after them belong to it until the next o or g (a g without a
  *     name returns to the static environment).  Objects do not nest;
@@ -46,6 +47,7 @@
 #include "status.h"
 
 #define NO_MATERIAL "(no material)"
+#define MTLLIB_NAME_MAX 255 /* bytes in an mtllib file name, as in NAME_MAX */
 
 typedef struct obj_state {
     rad_scene_build b;
@@ -203,9 +205,13 @@ static rad_status mtllib_file(obj_state *o, const char *name)
         rad_lines_close(&m);
         return rad_lines_fail(o->r, "cannot read the material library: %s", openerr.message);
     }
-    m.err = o->r->err;
+    m.err = &openerr;
     st = mtl_read(o, &m);
     rad_lines_close(&m);
+    if (st == RAD_ERR_IO) /* say which mtllib line led to the file */
+        return rad_lines_fail(o->r, "cannot read the material library: %s", openerr.message);
+    if (st && openerr.status != RAD_OK && o->r->err) /* failed in m, not in the scene */
+        *o->r->err = openerr;
     return st;
 }
 
@@ -352,6 +358,10 @@ static rad_status obj_mtllib(obj_state *o)
     if (o->r->ntok < 2)
         return rad_lines_fail(o->r, "mtllib needs a file name");
     for (int k = 1; k < o->r->ntok; k++) {
+        /* a longer name would crowd FILE:LINE out of RAD_ERRMSG_MAX */
+        if (strlen(o->r->tok[k]) > MTLLIB_NAME_MAX)
+            return rad_lines_fail(o->r, "mtllib file name is longer than %d bytes",
+                                  MTLLIB_NAME_MAX);
         rad_status st = mtllib_file(o, o->r->tok[k]);
         if (st)
             return st;

@@ -222,6 +222,8 @@ static void errors(void)
     bad(WITH("call other.obj\n"), 7, "unknown OBJ statement 'call'");
     bad(WITH("F 1 2 3\n"), 7, "unknown OBJ statement 'F'");
     bad(WITH("mtllib\n"), 7, "mtllib needs a file name");
+    snprintf(buf, sizeof buf, "%smtllib %0256d\n", SQUARE, 0);
+    bad(buf, 6, "mtllib file name is longer than 255 bytes");
     bad(WITH("f 1 2 3 \033\n"), 7, "control character");
     bad("# nothing\n", 1, "the OBJ file has no faces");
     bad("v 0 0 0\n\n", 2, "the OBJ file has no faces");
