@@ -64,6 +64,12 @@ typedef struct obj_state {
     int nlibs;
 } obj_state;
 
+/* RAD_ERR_NOMEM at the current line. */
+static rad_status no_memory(const rad_lines *r)
+{
+    return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name, r->line);
+}
+
 static int is_word(const char *t, const char *const *words)
 {
     for (; *words; words++)
@@ -191,7 +197,7 @@ static rad_status mtllib_file(obj_state *o, const char *name)
     char **g = path ? realloc(o->libs, sizeof *g * (size_t)(o->nlibs + 1)) : NULL;
     if (!g) {
         free(path);
-        return rad_lines_fail(o->r, "out of memory");
+        return no_memory(o->r);
     }
     o->libs = g;
     for (int k = 0; k < o->nlibs; k++)
@@ -235,7 +241,7 @@ static rad_status obj_vertex(obj_state *o)
         long ncap = o->vcap ? 2 * o->vcap : 256;
         rad_vec3 *g = realloc(o->v, sizeof *g * (size_t)ncap);
         if (!g)
-            return rad_lines_fail(r, "out of memory");
+            return no_memory(r);
         o->v = g;
         o->vcap = ncap;
     }
@@ -313,7 +319,7 @@ static rad_status obj_face(obj_state *o)
         return rad_lines_fail(r, "a face has at most %d corners, not %d", RAD_POLYGON_MAX, n);
     rad_vec3 *v = malloc(sizeof *v * (size_t)n);
     if (!v)
-        return rad_lines_fail(r, "out of memory");
+        return no_memory(r);
     rad_status st = RAD_OK;
     for (int k = 0; k < n && st == RAD_OK; k++)
         st = face_corner(o, r->tok[k + 1], &v[k]);

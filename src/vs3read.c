@@ -48,6 +48,7 @@
 #include "readnum.h"
 #include "scene.h"
 #include "scenebuild.h"
+#include "status.h"
 
 typedef struct vs3_state {
     rad_scene_build b;
@@ -60,6 +61,12 @@ typedef struct vs3_state {
     int obstructions;           /* an O surface has been read */
     int obstruction_material;   /* its index, or -1 */
 } vs3_state;
+
+/* RAD_ERR_NOMEM at the current line. */
+static rad_status no_memory(const rad_lines *r)
+{
+    return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name, r->line);
+}
 
 /* Tokens from k on must be absent or start a '/' comment. */
 static rad_status rest_is_comment(const rad_lines *r, int k, const char *after)
@@ -159,7 +166,7 @@ static rad_status vs3_vertex(vs3_state *s)
         long ncap = s->vcap ? 2 * s->vcap : 256;
         rad_vec3 *g = realloc(s->v, sizeof *g * (size_t)ncap);
         if (!g)
-            return rad_lines_fail(r, "out of memory");
+            return no_memory(r);
         s->v = g;
         s->vcap = ncap;
     }
@@ -257,7 +264,7 @@ static rad_status vs3_surface(vs3_state *s, int obstruction)
             long ncap = s->cmbcap ? 2 * s->cmbcap : 256;
             int *g = realloc(s->cmb, sizeof *g * (size_t)ncap);
             if (!g)
-                return rad_lines_fail(r, "out of memory");
+                return no_memory(r);
             s->cmb = g;
             s->cmbcap = ncap;
         }
@@ -270,7 +277,7 @@ static rad_status vs3_surface(vs3_state *s, int obstruction)
         return st;
     rad_vec3 *v = malloc(sizeof *v * 4);
     if (!v)
-        return rad_lines_fail(r, "out of memory");
+        return no_memory(r);
     for (int k = 0; k < nv; k++)
         v[k] = s->v[idx[k] - 1];
     if ((st = rad_polygon_check(v, nv, obstruction ? "obstruction surface" : "surface",
