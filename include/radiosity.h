@@ -97,7 +97,18 @@ typedef struct rad_surface {
     rad_vec3 *verts;            /* counter-clockwise about the front */
     int mesh_n, mesh_m;         /* v1->v2 in N parts, v2->v3 in M parts */
     int line;                   /* input line, for messages */
+    int object;                 /* index into rad_scene.objects; -1: the static
+                                   environment (outside every object) */
 } rad_surface;
+
+/* A named group of surfaces that a change may move, add or remove (the
+ * dynamic-scene contract of radiosity-scene(5)).  Today the OBJ reader
+ * fills them from `o` and `g` statements; scene files name none yet. */
+typedef struct rad_object {
+    char name[RAD_NAME_MAX];
+    int absent;                 /* 1: joins the scene only when a change adds it */
+    int line;                   /* where it was first named */
+} rad_object;
 
 typedef struct rad_camera {
     int defined;                /* 0: the scene has no camera line */
@@ -111,13 +122,19 @@ typedef struct rad_scene {
     int nmaterials;
     rad_surface *surfaces;
     int nsurfaces;
+    rad_object *objects;
+    int nobjects;
     rad_camera camera;
 } rad_scene;
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
- * input.  On failure *scene is left empty and err says FILE:LINE: why. */
+ * input.  A name ending in ".obj" is read as Wavefront OBJ (its mtllib
+ * files relative to it), one ending in ".vs3" as View3D 3.x input (both
+ * case-insensitive; radiosity-scene(5) says what they map to).  On
+ * failure *scene is left empty and err says FILE:LINE: why. */
 RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
-/* Parse scene text held in memory; `name` is used in messages. */
+/* Parse scene text held in memory; `name` is used in messages and picks
+ * the format by its ending as rad_scene_load does. */
 RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err);
 RAD_API void rad_scene_free(rad_scene *scene);

@@ -15,8 +15,11 @@
  * allowed, and the reader names the first other byte.  What a scene may
  * ask for is bounded too (scene.h): RAD_POLYGON_MAX vertices per polygon
  * or disk, RAD_MESH_MAX parts per edge, RAD_ELEMENTS_MAX elements per
- * surface and per scene.  Materials are found by a hash of their names, so
- * the parse takes time linear in the input.
+ * surface and per scene.  The scene is built through scenebuild.h, which
+ * finds materials by a hash of their names, so the parse takes time linear
+ * in the input.  A file whose name ends in .obj or .vs3 goes to its own
+ * reader (objread.c, vs3read.c), which builds the scene the same way and
+ * checks its polygons with rad_polygon_check below.
  *
  * Geometric tolerances, stated once (D is the polygon's bounding-box
  * diagonal, so they scale with the polygon and not with where it sits):
@@ -34,9 +37,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "radiosity.h"
 #include "scene.h"
+#include "scenebuild.h"
+#include "objread.h"
+#include "vs3read.h"
 #include "readfile.h"
 #include "status.h"
 #include "vec.h"
@@ -55,14 +62,7 @@ typedef struct line_ctx {
     rad_error *err;
 } line_ctx;
 
-/* The scene being built, with what the parse needs beside it. */
-typedef struct parse_state {
-    rad_scene s;
-    int *slot;                  /* material name hash: index + 1, 0 empty */
-    size_t nslot;               /* a power of two, at least 2 * nmaterials */
-    int matcap, surfcap;        /* allocated materials and surfaces */
-    double elements;            /* in the surfaces so far */
-} parse_state;
+typedef rad_scene_build parse_state;
 
 static rad_status fail_at(const line_ctx *c, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
@@ -250,54 +250,6 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
 
 /* ---- statements --------------------------------------------------------- */
 
-static size_t name_hash(const char *name)
-{
-    size_t h = 2166136261u; /* FNV-1a, its 32-bit constants */
-    for (const unsigned char *p = (const unsigned char *)name; *p; p++)
-        h = (h ^ *p) * 16777619u;
-    return h;
-}
-
-/* The slot of `name` in the hash: where it is, or the empty one where it
- * would go. */
-static size_t material_slot(const parse_state *p, const char *name)
-{
-    size_t k = name_hash(name) & (p->nslot - 1);
-    while (p->slot[k] && strcmp(p->s.materials[p->slot[k] - 1].name, name) != 0)
-        k = (k + 1) & (p->nslot - 1);
-    return k;
-}
-
-static int find_material(const parse_state *p, const char *name)
-{
-    return p->nslot ? p->slot[material_slot(p, name)] - 1 : -1;
-}
-
-/* Room for one more material, in the array and in the hash. */
-static int reserve_material(parse_state *p)
-{
-    if (p->s.nmaterials == p->matcap) {
-        int ncap = p->matcap ? 2 * p->matcap : 16;
-        rad_material *g = realloc(p->s.materials, sizeof *g * (size_t)ncap);
-        if (!g)
-            return -1;
-        p->s.materials = g;
-        p->matcap = ncap;
-    }
-    if (2 * (size_t)(p->s.nmaterials + 1) > p->nslot) {
-        size_t n = p->nslot ? 2 * p->nslot : 64;
-        int *old = p->slot, *g = calloc(n, sizeof *g);
-        if (!g)
-            return -1;
-        p->slot = g;
-        p->nslot = n;
-        for (int k = 0; k < p->s.nmaterials; k++)
-            p->slot[material_slot(p, p->s.materials[k].name)] = k + 1;
-        free(old);
-    }
-    return 0;
-}
-
 /* One or three band values starting at token *k; advances *k. */
 static rad_status get_bands(const line_ctx *c, int *k, const char *what, double lo,
                             double hi, double out[RAD_BANDS])
@@ -333,7 +285,6 @@ static rad_status get_bands(const line_ctx *c, int *k, const char *what, double 
 
 static rad_status parse_material(parse_state *p, const line_ctx *c)
 {
-    rad_scene *s = &p->s;
     rad_material m;
     int k = 2, have_reflect = 0, have_emit = 0;
     rad_status st;
@@ -344,10 +295,10 @@ static rad_status parse_material(parse_state *p, const line_ctx *c)
         return fail_at(c, "material name is longer than %d characters", RAD_NAME_MAX - 1);
     if (is_number(c->tok[1]))
         return fail_at(c, "material name '%s' looks like a number", c->tok[1]);
-    int prev = find_material(p, c->tok[1]);
+    int prev = rad_build_find_material(p, c->tok[1]);
     if (prev >= 0)
         return fail_at(c, "material '%s' is already defined (line %d)", c->tok[1],
-                       s->materials[prev].line);
+                       p->s.materials[prev].line);
     strcpy(m.name, c->tok[1]);
     while (k < c->ntok) {
         const char *kw = c->tok[k++];
@@ -368,59 +319,22 @@ static rad_status parse_material(parse_state *p, const line_ctx *c)
     if (!have_reflect)
         return fail_at(c, "material '%s' has no reflect values", m.name);
     m.line = c->line;
-    if (reserve_material(p))
-        return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
-    s->materials[s->nmaterials] = m;
-    p->slot[material_slot(p, m.name)] = ++s->nmaterials;
-    return RAD_OK;
+    return rad_build_add_material(p, &m, c->file, c->line);
 }
 
-/* Count a surface's elements against the scene's limit. */
-static rad_status count_elements(parse_state *p, const line_ctx *c, double n)
-{
-    if (p->elements + n > RAD_ELEMENTS_MAX)
-        return fail_at(c, "the scene would have %.0f elements; at most %d are allowed",
-                       p->elements + n, RAD_ELEMENTS_MAX);
-    p->elements += n;
-    return RAD_OK;
-}
-
-/* Append a surface that owns `verts` (freed here on failure). */
+/* Append a surface of the static environment that owns `verts` (freed
+ * on failure). */
 static rad_status add_surface(parse_state *p, const line_ctx *c, rad_surface_kind kind,
                               int material, rad_vec3 *verts, int n, int mn, int mm)
 {
-    rad_scene *s = &p->s;
-    rad_status st = count_elements(p, c, (double)mn * mm);
-    if (st) {
-        free(verts);
-        return st;
-    }
-    if (s->nsurfaces == p->surfcap) {
-        int ncap = p->surfcap ? 2 * p->surfcap : 16;
-        rad_surface *grown = realloc(s->surfaces, sizeof *grown * (size_t)ncap);
-        if (!grown) {
-            free(verts);
-            return rad_fail(c->err, RAD_ERR_NOMEM, "%s:%d: out of memory", c->file, c->line);
-        }
-        s->surfaces = grown;
-        p->surfcap = ncap;
-    }
-    rad_surface *f = &s->surfaces[s->nsurfaces++];
-    f->kind = kind;
-    f->material = material;
-    f->nverts = n;
-    f->verts = verts;
-    f->mesh_n = mn;
-    f->mesh_m = mm;
-    f->line = c->line;
-    return RAD_OK;
+    return rad_build_add_surface(p, c->line, kind, material, -1, verts, n, mn, mm);
 }
 
 static rad_status get_material_ref(const parse_state *p, const line_ctx *c, int *out)
 {
     if (c->ntok < 2)
         return fail_at(c, "%s needs a material", c->tok[0]);
-    *out = find_material(p, c->tok[1]);
+    *out = rad_build_find_material(p, c->tok[1]);
     if (*out < 0)
         return fail_at(c, "undefined material '%s'", c->tok[1]);
     return RAD_OK;
@@ -613,14 +527,9 @@ static rad_status parse_statement(parse_state *p, const line_ctx *c)
 static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
 {
     parse_state p;
-    rad_status st = RAD_OK;
     int got;
+    rad_status st = rad_build_start(&p, name, r->err);
 
-    memset(&p, 0, sizeof p);
-    memset(scene, 0, sizeof *scene);
-    p.s.filename = strdup(name);
-    if (!p.s.filename)
-        return rad_fail(r->err, RAD_ERR_NOMEM, "out of memory");
     while (st == RAD_OK && (got = rad_lines_next(r)) != 0) {
         if (got < 0) {
             st = r->status;
@@ -634,13 +543,41 @@ static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
     }
     if (st == RAD_OK && p.s.nsurfaces == 0)
         st = rad_lines_fail(r, "the scene has no surfaces (quad, polygon or disk)");
-    free(p.slot);
-    if (st != RAD_OK) {
-        rad_scene_free(&p.s);
-        return st;
+    return rad_build_finish(&p, st, scene);
+}
+
+/* The format a file name asks for, by its ending (case-insensitive). */
+typedef enum scene_format { FORMAT_SCENE, FORMAT_OBJ, FORMAT_VS3 } scene_format;
+
+static int ends_with(const char *name, const char *suffix)
+{
+    size_t n = strlen(name), k = strlen(suffix);
+    return n > k && strcasecmp(name + n - k, suffix) == 0;
+}
+
+static scene_format format_of(const char *name)
+{
+    return ends_with(name, ".obj") ? FORMAT_OBJ : ends_with(name, ".vs3") ? FORMAT_VS3
+                                                                         : FORMAT_SCENE;
+}
+
+/* View3D comments start with '!', the others' with '#'. */
+static char comment_of(scene_format f)
+{
+    return f == FORMAT_VS3 ? '!' : '#';
+}
+
+static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
+                              scene_format f)
+{
+    switch (f) {
+    case FORMAT_OBJ:
+        return rad_obj_read(scene, r, NULL, 0);
+    case FORMAT_VS3:
+        return rad_vs3_read(scene, r);
+    default:
+        return parse_lines(scene, r, name);
     }
-    *scene = p.s;
-    return RAD_OK;
 }
 
 rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
@@ -648,8 +585,9 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
 {
     rad_lines r;
     name = name ? name : "-";
-    rad_lines_mem(&r, text, len, name, '#', err);
-    rad_status st = parse_lines(scene, &r, name);
+    scene_format f = format_of(name);
+    rad_lines_mem(&r, text, len, name, comment_of(f), err);
+    rad_status st = read_format(scene, &r, name, f);
     rad_lines_close(&r);
     return st;
 }
@@ -657,10 +595,11 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
     rad_lines r;
+    scene_format f = format_of(path);
     memset(scene, 0, sizeof *scene);
-    rad_status st = rad_lines_open(&r, path, '#', err);
+    rad_status st = rad_lines_open(&r, path, comment_of(f), err);
     if (st == RAD_OK)
-        st = parse_lines(scene, &r, path);
+        st = read_format(scene, &r, path, f);
     rad_lines_close(&r);
     return st;
 }
@@ -673,6 +612,7 @@ void rad_scene_free(rad_scene *scene)
         free(scene->surfaces[k].verts);
     free(scene->surfaces);
     free(scene->materials);
+    free(scene->objects);
     free(scene->filename);
     memset(scene, 0, sizeof *scene);
 }

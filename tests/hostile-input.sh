@@ -1,6 +1,7 @@
 #!/bin/sh
-# hostile-input.sh -- scene and PLY files that try to hurt the program
-# (issue 14, items 4 and 11): each case gives the input, the exit status
+# hostile-input.sh -- scene, OBJ, View3D and PLY files that try to hurt the
+# program (issue 14, items 4 and 11; issue 19): each case gives the input,
+# the exit status
 # expected and a pattern the first line of standard error must match.
 # Bounded resources are part of the contract: /dev/zero and endless pipes
 # are refused at once under a memory limit, and a pipe's first error is
@@ -12,12 +13,13 @@ M='material w reflect 0.5\n'
 Q1='quad w 0 0 0  1 0 0  1 1 0  0 1 0'
 Q2='quad w 0 0 1  0 1 1  1 1 1  1 0 1'
 
-# case NAME STATUS PATTERN TEXT: write TEXT (printf %b) to NAME.scene, run
+# case NAME STATUS PATTERN TEXT: write TEXT (printf %b) to NAME.scene (to
+# NAME itself when it has a suffix, such as x.obj or x.vs3), run
 # formfactor on it; the exit status must be STATUS and the first line of
 # standard error must match "radiosity: FILE:PATTERN" (a shell pattern;
 # empty PATTERN: standard error must be empty).
 case_() {
-  f="$work/$1.scene"
+  case $1 in *.*) f="$work/$1" ;; *) f="$work/$1.scene" ;; esac
   printf '%b' "$4" > "$f"
   "$RADIOSITY" formfactor "$f" > "$work/out" 2> "$work/err"; rc=$?
   msg=$(head -n 1 "$work/err")
@@ -143,6 +145,60 @@ mkdir "$work/dir.scene"
 [ $rc -eq 1 ] && grep -q "^radiosity: $work/missing.scene: No such file" "$work/err"; ok $? "a missing file: exit $rc"
 printf "$M$Q1\n$Q2\n" | "$RADIOSITY" formfactor - > "$work/out" 2> "$work/err"; rc=$?
 [ $rc -eq 0 ] && [ "$(rows)" -eq 2 ]; ok $? "standard input as a scene: exit $rc"
+
+# ---- OBJ + MTL (the reader shares the scene file's line reader) ----
+SQ='v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n'
+case_ obj-good.obj 0 '' "${SQ}f 1 2 3 4\n"
+case_ obj-crlf-bom.obj 0 '' "\357\273\277v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"
+case_ obj-nul.obj 1 '5: line contains a NUL character*' "${SQ}f 1 2\000 3\n"
+case_ obj-utf16.obj 1 '1: line contains a NUL character (byte 0x00 at column 4; a UTF-16 file?*' '\377\376v\000 \000'
+case_ obj-utf8-name.obj 1 '5: non-ASCII character (byte 0xC3*' "${SQ}o caf\303\251\nf 1 2 3\n"
+case_ obj-utf8-ignored.obj 0 '' "${SQ}# caf\303\251\nvt 0 0 caf\303\251\ns caf\303\251\nf 1 2 3\n"
+case_ obj-index-overflow.obj 1 "5: vertex must be from -2147483647 to 2147483647, not '99999999999999999999'*" "${SQ}f 99999999999999999999 1 2\n"
+case_ obj-index-min.obj 1 '5: vertex index -2147483647, but 4 have been read*' "${SQ}f -2147483647 1 2\n"
+case_ obj-corners.obj 1 '5: a face has at most 4096 corners, not 5000*' "${SQ}f$(awk 'BEGIN { for (k = 0; k < 5000; k++) printf " 1" }')\n"
+case_ obj-face-first.obj 1 '1: vertex index 1, but 0 have been read*' "f 1 2 3\n$SQ"
+case_ obj-freeform.obj 1 "1: free-form geometry ('cstype') is not supported*" 'cstype bspline\n'
+case_ obj-call.obj 1 "1: unknown OBJ statement 'call'*" 'call /etc/passwd\n'
+case_ obj-mtllib-missing.obj 1 "1: cannot read the material library: $work/none.mtl: No such file*" 'mtllib none.mtl\n'
+case_ obj-mtllib-dir.obj 1 "1: cannot read the material library: $work/./: Is a directory*" 'mtllib ./\n'
+case_ obj-mtllib-self.obj 1 "1: unknown MTL statement 'mtllib'*" 'mtllib obj-mtllib-self.obj\n'
+printf 'newmtl w\nKd 0.5\n' > "$work/m.mtl"
+case_ obj-mtllib-twice.obj 0 '' "mtllib m.mtl\nmtllib m.mtl m.mtl\nusemtl w\n${SQ}f 1 2 3\n"
+printf 'newmtl w\nKd 0.5 \302\240\n' > "$work/nbsp.mtl"
+printf 'mtllib nbsp.mtl\n' > "$work/obj-nbsp.obj"
+"$RADIOSITY" formfactor "$work/obj-nbsp.obj" > "$work/out" 2> "$work/err"; rc=$?
+grep -q "^radiosity: $work/nbsp.mtl:2: non-ASCII character (byte 0xC2" "$work/err"
+[ $? -eq 0 ] && [ $rc -eq 1 ]; ok $? "an MTL error names the MTL file and its line: $(head -n 1 "$work/err")"
+ln -s /dev/zero "$work/zero.mtl"
+printf 'mtllib zero.mtl\n' > "$work/obj-zero.obj"
+start=$(date +%s)
+limited "$RADIOSITY" formfactor "$work/obj-zero.obj" > "$work/out" 2> "$work/err"; rc=$?
+secs=$(( $(date +%s) - start ))
+grep -q "^radiosity: $work/zero.mtl:1: line contains a NUL" "$work/err"
+[ $? -eq 0 ] && [ $rc -eq 1 ] && [ $secs -le 5 ]; ok $? "mtllib naming /dev/zero is refused in ${secs} s: $(head -n 1 "$work/err")"
+ln -s /dev/zero "$work/zero.obj"
+limited "$RADIOSITY" solve "$work/zero.obj" > "$work/out" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q "^radiosity: $work/zero.obj:1: line contains a NUL" "$work/err"; ok $? "an OBJ name for /dev/zero: exit $rc"
+
+# ---- View3D (the same line reader; nothing after End is read) ----
+V3='V 1 0 0 0\nV 2 1 0 0\nV 3 1 1 0\nV 4 0 1 0\n'
+case_ vs3-good.vs3 0 '' "T t\nC encl=1\nF 3\n${V3}S 1 1 2 3 4 0 0 0.5 a\nEnd\n"
+case_ vs3-cr-only.vs3 0 '' "$(printf '%b' "${V3}S 1 1 2 3 4 0 0 0.5 a\n" | tr '\n' '\r')"
+case_ vs3-after-end.vs3 0 '' "${V3}S 1 1 2 3 4 0 0 0.5 a\nEnd of data\n\000\377\376 V S O garbage\n"
+case_ vs3-title-utf8.vs3 0 '' "T caf\303\251 \302\240\n${V3}S 1 1 2 3 4 0 0 0.5 a ! caf\303\251\n"
+case_ vs3-nul.vs3 1 '5: line contains a NUL character*' "${V3}S 1\000 1 2 3 4 0 0 0.5 a\n"
+case_ vs3-nbsp.vs3 1 '5: non-ASCII character (byte 0xC2*' "${V3}S 1 1 2 3 4 0 0\302\2400.5 a\n"
+case_ vs3-number-overflow.vs3 1 "1: vertex number must be from 1 to 2147483647, not '99999999999999999999'*" 'V 99999999999999999999 0 0 0\n'
+case_ vs3-vertex-ref.vs3 1 "5: vertex 4 of the surface must be from 0 to 4, not '2147483648'*" "${V3}S 1 1 2 3 2147483648 0 0 0.5\n"
+case_ vs3-comma.vs3 1 "1: 'encl=1,list=2' holds a comma*" 'C encl=1,list=2\n'
+case_ vs3-3a.vs3 1 '1: geometry format 3a (BLAST surfaces) is not supported*' 'F 3a\n'
+case_ vs3-mask.vs3 1 '5: masking surfaces (M) are not supported*' "${V3}M 1 1 2 3 4 1 0 0.5\n"
+case_ vs3-empty.vs3 1 '1: the View3D file has no surfaces*' ''
+case_ vs3-unknown.vs3 1 "1: unknown View3D line 'Q'*" 'Q\n'
+ln -s /dev/zero "$work/zero.vs3"
+limited "$RADIOSITY" formfactor "$work/zero.vs3" > "$work/out" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q "^radiosity: $work/zero.vs3:1: line contains a NUL" "$work/err"; ok $? "a View3D name for /dev/zero: exit $rc"
 
 # ---- PLY solutions given to render ----
 ply_head='ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\nproperty double radiosity_r\nproperty double radiosity_g\nproperty double radiosity_b\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'

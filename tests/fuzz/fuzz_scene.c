@@ -16,8 +16,9 @@
  * PACKAGE_VERSION:
  *     clang -g -O1 -fsanitize=fuzzer,address,undefined \
  *         -fno-sanitize-recover=undefined -I$TMP -Isrc \
- *         tests/fuzz/fuzz_scene.c src/scene.c src/mesh.c src/status.c \
- *         src/readfile.c -lm -o $TMP/fuzz_scene
+ *         tests/fuzz/fuzz_scene.c src/scene.c src/scenebuild.c \
+ *         src/objread.c src/vs3read.c src/readnum.c src/mesh.c \
+ *         src/status.c src/readfile.c -lm -o $TMP/fuzz_scene
  *     $TMP/fuzz_scene -max_total_time=600 -max_len=4096 \
  *         -dict=tests/fuzz/scene.dict $TMP/scene/corpus
  * To replay one input: $TMP/fuzz_scene FILE.
@@ -49,7 +50,8 @@ static int message_ok(const char *msg)
 static int scene_empty(const rad_scene *s)
 {
     return s->filename == NULL && s->materials == NULL && s->nmaterials == 0 &&
-           s->surfaces == NULL && s->nsurfaces == 0 && !s->camera.defined;
+           s->surfaces == NULL && s->nsurfaces == 0 && s->objects == NULL &&
+           s->nobjects == 0 && !s->camera.defined;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -1,0 +1,92 @@
+/* fuzz_vs3.c -- libFuzzer harness for the View3D 3.x reader.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Feeds arbitrary bytes to rad_scene_parse() as the text of "fuzz.vs3",
+ * which the name sends to the View3D reader.  On success the scene is
+ * checked (materials exist, no objects, 3 or 4 vertices a surface, quads
+ * exactly the 4-vertex ones) and meshed with rad_mesh_build up to
+ * FUZZ_MAX_ELEMENTS elements; on failure the contracts of radiosity.h: the
+ * status is in the error record, the message reads "fuzz.vs3:LINE:
+ * reason" and the scene is left empty.  A broken contract calls abort(),
+ * a crash to libFuzzer.
+ *
+ * Build and run: tests/fuzz/run-fuzz.sh [SECONDS] (FUZZ_HARNESSES=vs3), or
+ * `make fuzz`; see fuzz_scene.c for the compiler flags.
+ */
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "radiosity.h"
+
+#define FUZZ_MAX_ELEMENTS 20000
+#define FUZZ_NAME "fuzz.vs3"
+
+/* "fuzz.vs3:" then a line number >= 1, then ": " and some reason. */
+static int message_ok(const char *msg)
+{
+    size_t plen = strlen(FUZZ_NAME ":");
+    if (strncmp(msg, FUZZ_NAME ":", plen) != 0)
+        return 0;
+    const char *p = msg + plen;
+    if (!(*p >= '1' && *p <= '9'))
+        return 0;
+    while (*p >= '0' && *p <= '9')
+        p++;
+    return p[0] == ':' && p[1] == ' ' && p[2] != '\0';
+}
+
+static int scene_empty(const rad_scene *s)
+{
+    return s->filename == NULL && s->materials == NULL && s->nmaterials == 0 &&
+           s->surfaces == NULL && s->nsurfaces == 0 && s->objects == NULL &&
+           s->nobjects == 0 && !s->camera.defined;
+}
+
+static void check_scene(const rad_scene *s)
+{
+    if (s->nsurfaces < 1 || s->nobjects != 0)
+        abort();
+    for (int k = 0; k < s->nsurfaces; k++) {
+        const rad_surface *f = &s->surfaces[k];
+        if (f->material < 0 || f->material >= s->nmaterials || f->object != -1 ||
+            (f->nverts != 3 && f->nverts != 4) ||
+            (f->kind == RAD_SURFACE_QUAD) != (f->nverts == 4))
+            abort();
+        for (int b = 0; b < RAD_BANDS; b++) {
+            const rad_material *m = &s->materials[f->material];
+            if (!(m->reflect[b] >= 0 && m->reflect[b] <= 1) || m->emit[b] != 0)
+                abort();
+        }
+    }
+    if (s->nsurfaces <= FUZZ_MAX_ELEMENTS) {
+        rad_mesh mesh;
+        rad_error err;
+        memset(&err, 0, sizeof err);
+        if (rad_mesh_build(&mesh, s, &err) != RAD_OK)
+            abort(); /* a small mesh of a valid scene must build */
+        if (mesh.nelements != s->nsurfaces)
+            abort();
+        rad_mesh_free(&mesh);
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    rad_scene scene;
+    rad_error err;
+    memset(&err, 0, sizeof err);
+    rad_status st = rad_scene_parse(&scene, (const char *)data, size, FUZZ_NAME, &err);
+    if (st != RAD_OK) {
+        if (err.status != st || !message_ok(err.message) || !scene_empty(&scene))
+            abort();
+        return 0;
+    }
+    check_scene(&scene);
+    rad_scene_free(&scene);
+    return 0;
+}
