@@ -149,10 +149,11 @@ typedef struct cli_solve {
     "      --trace FILE        progressive: one TSV row per shooting step (step\n" \
     "                          shooter shot unshot rms rms_ambient)\n"           \
     "      --patches           progressive: each surface shoots as one patch\n"    \
-    "      --tolerance T       jacobi, gauss-seidel, progressive: stop when the\n" \
-    "                          relative change of B between sweeps is below T\n" \
-    "                          (default 1e-12; progressive: unshot power /\n"    \
-    "                          emitted power)\n"                                 \
+    "      --tolerance T       jacobi, gauss-seidel, progressive: stop when a\n" \
+    "                          bound on the relative error of B is below T\n"   \
+    "                          (q/(1-q) times the last change, q the contraction\n"\
+    "                          factor) (default 1e-12; progressive: unshot\n"   \
+    "                          power / emitted power)\n"                        \
     "      --max-iterations N  jacobi, gauss-seidel, progressive: give up after\n" \
     "                          N sweeps or shooting steps (default 100000)\n"    \
     "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\

@@ -270,9 +270,15 @@ static void summary(const cli_run *r)
     }
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
-    else
-        fprintf(stderr, "radiosity: %s, %d sweeps, convergence factor %.6g",
-                solver_names[s->solver], s->sweeps, s->spectral_radius);
+    else {
+        fprintf(stderr, "radiosity: %s, %d sweeps, ||diag(rho) F||inf %.6g, ",
+                solver_names[s->solver], s->sweeps, s->contraction);
+        if (isnan(s->error_bound))
+            fprintf(stderr, "no error bound");
+        else
+            fprintf(stderr, "error <= %.3g relative", s->error_bound);
+        fprintf(stderr, ", convergence factor %.6g", s->spectral_radius);
+    }
     fprintf(stderr, "; residual %.3g; F row sums [%.15g, %.15g]\n", s->residual,
             s->row_sum_min, s->row_sum_max);
     fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted: "
