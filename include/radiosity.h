@@ -232,7 +232,9 @@ typedef enum rad_solver {
     RAD_SOLVER_GAUSS = 0,       /* LU with partial pivoting (LAPACK dgesv) */
     RAD_SOLVER_JACOBI,
     RAD_SOLVER_GAUSS_SEIDEL,
-    RAD_SOLVER_PROGRESSIVE      /* shooting, Cohen et al. 1988 (progressive.c) */
+    RAD_SOLVER_PROGRESSIVE,     /* shooting, Cohen et al. 1988 (progressive.c) */
+    RAD_SOLVER_CHOLESKY         /* the symmetric form, LAPACK dpotrf (cholesky.c);
+                                   LU where it is not positive definite */
 } rad_solver;
 
 /* One step of progressive refinement, for a trace (rad_solve_options.on_shot). */

@@ -144,8 +144,10 @@ typedef struct cli_solve {
 
 #define CLI_SOLVE_HELP                                                             \
     "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
-    "                          jacobi, gauss-seidel or progressive (shooting,\n"  \
-    "                          Cohen et al. 1988)\n"                              \
+    "                          cholesky (the symmetric form diag(A/rho)(I - rho F),\n"\
+    "                          half LU's flops; LU where it is not positive\n"   \
+    "                          definite), jacobi, gauss-seidel or progressive\n" \
+    "                          (shooting, Cohen et al. 1988)\n"                   \
     "      --trace FILE        progressive: one TSV row per shooting step (step\n" \
     "                          shooter shot unshot rms rms_ambient)\n"           \
     "      --patches           progressive: each surface shoots as one patch\n"    \

@@ -18,6 +18,8 @@
  *                 Bands whose reflectances agree on every element share one
  *                 factorisation with several right-hand sides, and only one
  *                 working matrix is alive at a time.
+ *   cholesky      the symmetric form diag(A/rho) (I - diag(rho) F), by
+ *                 LAPACK's dpotrf (cholesky.c), LU where it does not apply.
  *   jacobi, gauss-seidel, bounces K   one pass over F per sweep for the
  *                 three bands, stopping on a bound of the error (iterate.c).
  *   progressive   shooting (progressive.c).
@@ -297,6 +299,8 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
         }
     if (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
         st = solve_gauss(n, F, rho, E, B, opt, rep, err);
+    else if (opt->solver == RAD_SOLVER_CHOLESKY && opt->bounces < 0)
+        st = rad_solve_cholesky(m, F, rho, E, B, opt, rep, err);
     else if (opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0)
         st = rad_solve_progressive(m, F, rho, E, opt, B, rep, err);
     else
