@@ -233,8 +233,9 @@ typedef enum rad_solver {
     RAD_SOLVER_JACOBI,
     RAD_SOLVER_GAUSS_SEIDEL,
     RAD_SOLVER_PROGRESSIVE,     /* shooting, Cohen et al. 1988 (progressive.c) */
-    RAD_SOLVER_CHOLESKY         /* the symmetric form, LAPACK dpotrf (cholesky.c);
+    RAD_SOLVER_CHOLESKY,        /* the symmetric form, LAPACK dpotrf (cholesky.c);
                                    LU where it is not positive definite */
+    RAD_SOLVER_CG               /* conjugate gradients on the symmetric form (cg.c) */
 } rad_solver;
 
 /* One step of progressive refinement, for a trace (rad_solve_options.on_shot). */

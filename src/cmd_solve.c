@@ -27,8 +27,8 @@ static double seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static const char *const solver_names[] = {"gauss", "jacobi", "gauss-seidel", "progressive",
-                                           "cholesky"};
+static const char *const solver_names[] = {"gauss",       "jacobi",   "gauss-seidel",
+                                           "progressive", "cholesky", "cg"};
 static const char *const accuracy_names[] = {"classic", "default", "reference"};
 
 void cli_solve_init(cli_solve *s)
@@ -53,8 +53,10 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             s->solve.solver = RAD_SOLVER_PROGRESSIVE;
         else if (strcmp(arg, "cholesky") == 0)
             s->solve.solver = RAD_SOLVER_CHOLESKY;
+        else if (strcmp(arg, "cg") == 0)
+            s->solve.solver = RAD_SOLVER_CG;
         else {
-            cli_error("--solver takes gauss, cholesky, jacobi, gauss-seidel or progressive, "
+            cli_error("--solver takes gauss, cholesky, jacobi, gauss-seidel, cg or progressive, "
                       "not '%s'", arg);
             return 2;
         }
@@ -267,7 +269,8 @@ static void summary(const cli_run *r)
         return;
     if (s->bounces >= 0)
         fprintf(stderr, "radiosity: %d bounces (Jacobi from B = E)", s->bounces);
-    else if (s->solver == RAD_SOLVER_GAUSS || s->solver == RAD_SOLVER_CHOLESKY) {
+    else if (s->solver == RAD_SOLVER_GAUSS || s->solver == RAD_SOLVER_CHOLESKY ||
+             (s->solver == RAD_SOLVER_CG && s->fallbacks)) {
         fprintf(stderr, "radiosity: %s, %d factorisation%s, rcond %.3g", solver_names[s->solver],
                 s->systems, s->systems == 1 ? "" : "s", s->rcond);
         if (!isnan(s->ff_error_bound))
@@ -276,13 +279,14 @@ static void summary(const cli_run *r)
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
     else {
-        fprintf(stderr, "radiosity: %s, %d sweeps, ||diag(rho) F||inf %.6g, ",
-                solver_names[s->solver], s->sweeps, s->contraction);
+        fprintf(stderr, "radiosity: %s, %d %s, ||diag(rho) F||inf %.6g, ", solver_names[s->solver],
+                s->sweeps, s->solver == RAD_SOLVER_CG ? "iterations" : "sweeps", s->contraction);
         if (isnan(s->error_bound))
             fprintf(stderr, "no error bound");
         else
             fprintf(stderr, "error <= %.3g relative", s->error_bound);
-        fprintf(stderr, ", convergence factor %.6g", s->spectral_radius);
+        if (s->solver != RAD_SOLVER_CG)
+            fprintf(stderr, ", convergence factor %.6g", s->spectral_radius);
     }
     fprintf(stderr, "; residual %.3g; F row sums [%.15g, %.15g]\n", s->residual,
             s->row_sum_min, s->row_sum_max);

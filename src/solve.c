@@ -22,6 +22,7 @@
  *                 LAPACK's dpotrf (cholesky.c), LU where it does not apply.
  *   jacobi, gauss-seidel, bounces K   one pass over F per sweep for the
  *                 three bands, stopping on a bound of the error (iterate.c).
+ *   cg            conjugate gradients on the symmetric form (cg.c).
  *   progressive   shooting (progressive.c).
  * A system is reported singular when dgetrf meets an exact zero pivot or
  * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
@@ -301,6 +302,8 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
         st = solve_gauss(n, F, rho, E, B, opt, rep, err);
     else if (opt->solver == RAD_SOLVER_CHOLESKY && opt->bounces < 0)
         st = rad_solve_cholesky(m, F, rho, E, B, opt, rep, err);
+    else if (opt->solver == RAD_SOLVER_CG && opt->bounces < 0)
+        st = rad_solve_cg(m, F, rho, E, B, opt, rep, err);
     else if (opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0)
         st = rad_solve_progressive(m, F, rho, E, opt, B, rep, err);
     else

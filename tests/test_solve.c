@@ -512,8 +512,9 @@ static double rel_err(const double *B, const double *X, size_t n)
 static void test_all_solvers_exact(void)
 {
     static const rad_solver which[] = {RAD_SOLVER_GAUSS, RAD_SOLVER_CHOLESKY,
-                                       RAD_SOLVER_JACOBI, RAD_SOLVER_GAUSS_SEIDEL};
-    static const char *const names[] = {"gauss", "cholesky", "jacobi", "gauss-seidel"};
+                                       RAD_SOLVER_JACOBI, RAD_SOLVER_GAUSS_SEIDEL,
+                                       RAD_SOLVER_CG};
+    static const char *const names[] = {"gauss", "cholesky", "jacobi", "gauss-seidel", "cg"};
     rad_scene s;
     rad_mesh m;
     rad_error err;
@@ -537,7 +538,7 @@ static void test_all_solvers_exact(void)
                    floor, e);
         else
             tap_ok(st == RAD_OK && e <= rep.error_bound + floor && rep.error_bound <= 1e-12 &&
-                       fabs(rep.contraction - q) <= 1e-9,
+                       fabs(rep.contraction - q) <= 1e-9 && rep.fallbacks == 0,
                    "%s: error %.3g within its bound %.3g <= 1e-12 (+ %.3g), %d sweeps, q = %.12g",
                    names[k], e, rep.error_bound, floor, rep.sweeps, rep.contraction);
     }
@@ -725,6 +726,47 @@ static void test_cholesky_ff_bound(void)
     rad_scene_free(&s);
 }
 
+/* Conjugate gradients where the symmetric form does not apply: the whole
+ * solve goes to cholesky (and on to LU), and the report says why. */
+static void test_cg_fallbacks(void)
+{
+    static const char *const w6[6] = {"w", "w", "w", "w", "w", "w"};
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    rad_solve_report rep;
+    double B[6];
+    rad_solve_options_init(&o);
+    o.solver = RAD_SOLVER_CG;
+    /* open pair, rho = 1: q = F < 1, CG converges; closed forms as above */
+    double *F = two_squares("material l reflect 1 emit 1\nmaterial w reflect 1\n", &s, &m);
+    const double f = F[1];
+    rad_status st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 0 && rep.error_bound <= 1e-12,
+           "cg: open pair, rho = 1, %d iterations, bound %.3g", rep.sweeps, rep.error_bound);
+    tap_close(B[0], 1 / (1 - f * f), 1e-12 + 1e-14, "cg, open rho = 1: B1 = 1/(1 - F^2)");
+    tap_close(B[1], f / (1 - f * f), 1e-12 / f + 1e-14, "cg, open rho = 1: B2 = F/(1 - F^2)");
+    F[2] *= 1 + 1e-9; /* not reciprocal */
+    st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 2 && strstr(rep.fallback, "cg: F is not reciprocal") &&
+               strstr(rep.fallback, "solved by LU"),
+           "cg, F not reciprocal: cholesky, then LU (%s)", rep.fallback);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+    free(F);
+    cube(3, "material w reflect 1 emit 1\n", w6, &s, &m);
+    F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *Bc = malloc(sizeof *Bc * 3 * (size_t)m.nelements);
+    st = rad_solve(&m, F, &o, Bc, &rep, &err);
+    tap_ok(st == RAD_ERR_SINGULAR && strstr(rep.fallback, ">= 1 bounds no error"),
+           "cg, closed box, rho = 1: no bound, cholesky says singular (%s)", rep.fallback);
+    free(Bc);
+    free(F);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
 int main(void)
 {
     test_blocked_lu();
@@ -737,5 +779,6 @@ int main(void)
     test_gauss_seidel_blocks();
     test_cholesky_fallbacks();
     test_cholesky_ff_bound();
+    test_cg_fallbacks();
     return tap_done();
 }
