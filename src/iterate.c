@@ -53,7 +53,7 @@
 #include "solvers.h"
 #include "status.h"
 
-#define GS_BLOCK 256
+#define GS_BLOCK 1024
 
 typedef struct iter {
     int n;

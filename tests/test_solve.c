@@ -503,7 +503,7 @@ static double rel_err(const double *B, const double *X, size_t n)
 }
 
 /* Every solver against the exact discrete solution of the same F, on the
- * 7x7 cube (294 elements: more than one Gauss-Seidel block of 256).
+ * 7x7 cube (294 elements).
  * Direct solvers: backward stable with growth factor <= 2 for a
  * diagonally dominant matrix (Higham 2002, thm. 9.9; Cholesky thm. 10.5),
  * so the error is <= 2 gamma_3n kappa, kappa_inf(I - rho F) <= (1 + q) /
@@ -560,7 +560,7 @@ static void test_gauss_seidel_blocks(void)
     rad_mesh m;
     rad_error err;
     rad_solve_options o;
-    cube(7, goral_materials, goral, &s, &m);
+    cube(14, goral_materials, goral, &s, &m); /* 1176 elements: two blocks of 1024 */
     const int n = m.nelements;
     const size_t n3 = (size_t)n * 3;
     double *F = form_factors(&m, RAD_ACCURACY_DEFAULT);
