@@ -1,10 +1,10 @@
 #!/bin/sh
 # bench.sh -- the fixed benchmarks behind `make bench`.  Prints figures; it
 # asserts nothing (the machines are shared: timings are not tests).
-# Usage: bench/bench.sh RADIOSITY LU_RATE DATADIR FF_RATE
+# Usage: bench/bench.sh RADIOSITY LU_RATE DATADIR FF_RATE SOLVE_RATE
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 set -e
-rad=$1 lu=$2 data=$3 ff=$4
+rad=$1 lu=$2 data=$3 ff=$4 sr=$5
 cube=$data/goral1984-cube.scene
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -18,6 +18,9 @@ echo
 echo "== LU (dgetrf) and Cholesky (dpotrf) against DGEMM, same run (GFLOP/s)"
 "$lu" ${BENCH_LU_SIZES:-2000 4000}
 echo
+echo "== solve phase per solver on one F, cube 20x20 (2400 elements), ${BENCH_SOLVE_REPEATS:-5} rounds"
+"$sr" "$cube" 20x20 ${BENCH_SOLVE_REPEATS:-5}
+echo
 echo "== sweep of the cube (error against the reference 20x20 solution)"
 "$rad" sweep -q --meshes 1,2,3,5,7,10,20 --solvers gauss,jacobi,gauss-seidel \
   --plot "${BENCH_PLOT:-sweep.png}" "$cube"
@@ -29,7 +32,10 @@ echo "(plot: ${BENCH_PLOT:-sweep.png})"
 if [ "${BENCH_CUBE50:-0}" = 1 ]; then
   mesh=${BENCH_CUBE50_MESH:-50x50}
   echo
-  echo "== solve phase per solver, cube $mesh, default accuracy (s; peak memory)"
+  echo "== solve phase per solver on one F, cube $mesh, ${BENCH_CUBE50_REPEATS:-3} rounds"
+  "$sr" "$cube" "$mesh" ${BENCH_CUBE50_REPEATS:-3}
+  echo
+  echo "== radiosity solve per solver, cube $mesh, default accuracy (s; peak memory)"
   printf 'solver\tsolve_s\tform_factors_s\tpeak_MiB\tsummary\n'
   for s in ${BENCH_CUBE50_SOLVERS:-gauss cholesky jacobi gauss-seidel cg}; do
     if command -v /usr/bin/time > /dev/null; then
