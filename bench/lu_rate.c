@@ -2,9 +2,12 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * For each N given (default 2000 4000): time DGEMM (2 N^3 flops) and DGETRF
- * (2/3 N^3 flops) on a radiosity-like matrix I - 0.5 F with F random and
- * row-stochastic, best of 3 runs each, and print GFLOP/s and their ratio.
+ * For each N given (default 2000 4000): time DGEMM (2 N^3 flops), DGETRF
+ * (2/3 N^3 flops) and DPOTRF (1/3 N^3 flops, on the upper triangle of the
+ * same matrix, symmetric by that reading and diagonally dominant, so
+ * positive definite) on a radiosity-like matrix I - 0.5 F with F random
+ * and row-stochastic, best of 3 runs each, and print GFLOP/s, their ratio
+ * to DGEMM's, and how many times faster Cholesky is than LU.
  * A benchmark, not a test: the machine is shared and noisy.
  */
 #include <config.h>
@@ -42,7 +45,8 @@ int main(int argc, char **argv)
         for (int k = 1; k < argc && ns < 8; k++)
             sizes[ns++] = atoi(argv[k]);
     }
-    printf("N\tdgemm_gflops\tdgetrf_gflops\tratio\tblocked_lu_gflops\tratio\n");
+    printf("N\tdgemm_gflops\tdgetrf_gflops\tratio\tblocked_lu_gflops\tratio\t"
+           "dpotrf_gflops\tratio\tlu_time/cholesky_time\n");
     for (int s = 0; s < ns; s++) {
         const int n = sizes[s];
         double *A = malloc(sizeof *A * (size_t)n * n), *B = malloc(sizeof *B * (size_t)n * n);
@@ -51,7 +55,7 @@ int main(int argc, char **argv)
         if (!A || !B || !C || !ipiv)
             return 1;
         const double one = 1, zero = 0;
-        double best_mm = 1e300, best_lu = 1e300, best_bl = 1e300;
+        double best_mm = 1e300, best_lu = 1e300, best_bl = 1e300, best_ch = 1e300;
         fill(A, n, 1);
         fill(B, n, 2);
         for (int r = 0; r < 3; r++) {
@@ -70,11 +74,18 @@ int main(int argc, char **argv)
             rad_lu_factor(n, C, ipiv, NULL, NULL, "lu", &stopped);
             t1 = now();
             best_bl = t1 - t0 < best_bl ? t1 - t0 : best_bl;
+            fill(C, n, 3);
+            t0 = now();
+            dpotrf_("U", &n, C, &n, &info, 1);
+            t1 = now();
+            best_ch = t1 - t0 < best_ch ? t1 - t0 : best_ch;
         }
         double mm = 2.0 * n * n * (double)n / best_mm / 1e9;
         double lu = 2.0 / 3.0 * n * n * (double)n / best_lu / 1e9;
         double bl = 2.0 / 3.0 * n * n * (double)n / best_bl / 1e9;
-        printf("%d\t%.1f\t%.1f\t%.2f\t%.1f\t%.2f\n", n, mm, lu, lu / mm, bl, bl / mm);
+        double ch = 1.0 / 3.0 * n * n * (double)n / best_ch / 1e9;
+        printf("%d\t%.1f\t%.1f\t%.2f\t%.1f\t%.2f\t%.1f\t%.2f\t%.2f\n", n, mm, lu, lu / mm, bl,
+               bl / mm, ch, ch / mm, best_lu / best_ch);
         fflush(stdout);
         free(A);
         free(B);

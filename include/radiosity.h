@@ -262,7 +262,10 @@ typedef enum rad_solver {
     RAD_SOLVER_GAUSS = 0,       /* LU with partial pivoting (LAPACK dgesv) */
     RAD_SOLVER_JACOBI,
     RAD_SOLVER_GAUSS_SEIDEL,
-    RAD_SOLVER_PROGRESSIVE      /* shooting, Cohen et al. 1988 (progressive.c) */
+    RAD_SOLVER_PROGRESSIVE,     /* shooting, Cohen et al. 1988 (progressive.c) */
+    RAD_SOLVER_CHOLESKY,        /* the symmetric form, LAPACK dpotrf (cholesky.c);
+                                   LU where it is not positive definite */
+    RAD_SOLVER_CG               /* conjugate gradients on the symmetric form (cg.c) */
 } rad_solver;
 
 /* One step of progressive refinement, for a trace (rad_solve_options.on_shot). */
@@ -282,7 +285,9 @@ typedef int (*rad_shot_fn)(void *user, const rad_shot *row);
 
 typedef struct rad_solve_options {
     rad_solver solver;
-    double tolerance;           /* iterative: relative change of B between sweeps */
+    double tolerance;           /* iterative: stop when a bound on the relative
+                                   error of B, ||B - B*||inf / ||B||inf, is below
+                                   it (rad_solve_report.error_bound) */
     int max_iterations;         /* iterative: sweeps before giving up */
     int bounces;                /* >= 0: exactly that many reflections,
                                    B_K = sum_{m=0..K} (rho F)^m E; -1: solve */
@@ -313,8 +318,11 @@ typedef struct rad_solve_report {
     int systems;                /* distinct reflectance sets factorised */
     int sweeps;                 /* iterative solvers, per the slowest band */
     double residual;            /* max over bands of ||(I - rho F)B - E||inf / ||E||inf */
-    double rcond;               /* reciprocal condition estimate (gauss), min over systems */
-    double ff_error_bound;      /* gauss, given ff_row_error: relative error of B
+    double rcond;               /* reciprocal condition estimate, min over systems:
+                                   gauss of I - diag(rho) F (1-norm, dgecon);
+                                   cholesky of its symmetric form scaled to a
+                                   unit diagonal (dpocon) */
+    double ff_error_bound;      /* gauss, cholesky, given ff_row_error: relative error of B
                                    (infinity norm) that F's error may cause,
                                    max over systems; NaN otherwise */
     double ferr, berr;          /* forward, backward error bounds (error_bounds) */
@@ -324,6 +332,15 @@ typedef struct rad_solve_report {
     double absorbed[RAD_BANDS]; /* sum A_i (1 - rho_i) H_i, H = F B */
     double escaped[RAD_BANDS];  /* sum A_i B_i (1 - sum_j F_ij) */
     double balance[RAD_BANDS];  /* (emitted - absorbed - escaped) / emitted */
+    /* the symmetric and iterative solvers */
+    double error_bound;         /* jacobi, gauss-seidel, cg: a bound on
+                                   ||B - B*||inf / ||B||inf at the stop, from the
+                                   contraction factor; NaN where none holds */
+    double contraction;         /* q = max_i rho_i sum_j |F_ij|, max over bands:
+                                   ||diag(rho) F||inf, the factor by which a
+                                   Jacobi sweep at least shrinks the error */
+    int fallbacks;              /* cholesky, cg: systems that went to LU */
+    char fallback[256];         /* why, or "" */
 } rad_solve_report;
 
 /* Solve for B given the mesh (reflectance, emission, area) and F.  F is

@@ -157,17 +157,21 @@ typedef struct cli_solve {
 
 #define CLI_SOLVE_HELP                                                             \
     "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
-    "                          jacobi, gauss-seidel or progressive (shooting,\n"  \
-    "                          Cohen et al. 1988)\n"                              \
+    "                          cholesky (the symmetric form diag(A/rho)(I - rho F),\n"\
+    "                          half LU's flops; LU where it is not positive\n"   \
+    "                          definite), jacobi, gauss-seidel, cg (conjugate\n" \
+    "                          gradients on the symmetric form) or progressive\n"\
+    "                          (shooting, Cohen et al. 1988)\n"                   \
     "      --trace FILE        progressive: one TSV row per shooting step (step\n" \
     "                          shooter shot unshot rms rms_ambient)\n"           \
     "      --patches           progressive: each surface shoots as one patch\n"    \
-    "      --tolerance T       jacobi, gauss-seidel, progressive: stop when the\n" \
-    "                          relative change of B between sweeps is below T\n" \
-    "                          (default 1e-12; progressive: unshot power /\n"    \
-    "                          emitted power)\n"                                 \
-    "      --max-iterations N  jacobi, gauss-seidel, progressive: give up after\n" \
-    "                          N sweeps or shooting steps (default 100000)\n"    \
+    "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\
+    "                          bound on the relative error of B is below T\n"   \
+    "                          (q/(1-q) times the last change, q the contraction\n"\
+    "                          factor; cg: residual/(1-q)) (default 1e-12;\n"   \
+    "                          progressive: unshot power / emitted power)\n"    \
+    "      --max-iterations N  jacobi, gauss-seidel, cg, progressive: give up\n" \
+    "                          after N sweeps or steps (default 100000)\n"     \
     "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\
     "                          (a solver of its own: no --solver, --tolerance)\n"\
     "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\

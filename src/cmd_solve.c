@@ -27,7 +27,8 @@ static double seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static const char *const solver_names[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
+static const char *const solver_names[] = {"gauss",       "jacobi",   "gauss-seidel",
+                                           "progressive", "cholesky", "cg"};
 static const char *const accuracy_names[] = {"classic", "default", "reference"};
 
 void cli_solve_init(cli_solve *s)
@@ -50,8 +51,13 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             s->solve.solver = RAD_SOLVER_GAUSS_SEIDEL;
         else if (strcmp(arg, "progressive") == 0)
             s->solve.solver = RAD_SOLVER_PROGRESSIVE;
+        else if (strcmp(arg, "cholesky") == 0)
+            s->solve.solver = RAD_SOLVER_CHOLESKY;
+        else if (strcmp(arg, "cg") == 0)
+            s->solve.solver = RAD_SOLVER_CG;
         else {
-            cli_error("--solver takes gauss, jacobi, gauss-seidel or progressive, not '%s'", arg);
+            cli_error("--solver takes gauss, cholesky, jacobi, gauss-seidel, cg or progressive, "
+                      "not '%s'", arg);
             return 2;
         }
         return 0;
@@ -117,9 +123,10 @@ int cli_solve_check(const cli_solve *s)
         bad = "--patches applies to --solver progressive";
     else if (s->solve.error_bounds && (v != RAD_SOLVER_GAUSS || s->given_bounces))
         bad = "--error-bounds applies to --solver gauss (LU) only";
-    else if ((s->given_tolerance || s->given_max_iterations) && v == RAD_SOLVER_GAUSS &&
-             !s->given_bounces)
-        bad = "--tolerance and --max-iterations apply to the iterative solvers, not to gauss";
+    else if ((s->given_tolerance || s->given_max_iterations) &&
+             (v == RAD_SOLVER_GAUSS || v == RAD_SOLVER_CHOLESKY) && !s->given_bounces)
+        bad = "--tolerance and --max-iterations apply to the iterative solvers, not to gauss "
+              "or cholesky";
     if (bad) {
         cli_error("%s%s%s", bad, s->given_solver ? "; the solver is " : "",
                   s->given_solver ? name : "");
@@ -279,19 +286,29 @@ static void summary(const cli_run *r)
         return;
     if (s->bounces >= 0)
         fprintf(stderr, "radiosity: %d bounces (Jacobi from B = E)", s->bounces);
-    else if (s->solver == RAD_SOLVER_GAUSS) {
-        fprintf(stderr, "radiosity: gauss, %d factorisation%s, rcond %.3g", s->systems,
-                s->systems == 1 ? "" : "s", s->rcond);
+    else if (s->solver == RAD_SOLVER_GAUSS || s->solver == RAD_SOLVER_CHOLESKY ||
+             (s->solver == RAD_SOLVER_CG && s->fallbacks)) {
+        fprintf(stderr, "radiosity: %s, %d factorisation%s, rcond %.3g", solver_names[s->solver],
+                s->systems, s->systems == 1 ? "" : "s", s->rcond);
         if (!isnan(s->ff_error_bound))
             fprintf(stderr, "; F's error moves B by %.3g relative at most", s->ff_error_bound);
     }
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
-    else
-        fprintf(stderr, "radiosity: %s, %d sweeps, convergence factor %.6g",
-                solver_names[s->solver], s->sweeps, s->spectral_radius);
+    else {
+        fprintf(stderr, "radiosity: %s, %d %s, ||diag(rho) F||inf %.6g, ", solver_names[s->solver],
+                s->sweeps, s->solver == RAD_SOLVER_CG ? "iterations" : "sweeps", s->contraction);
+        if (isnan(s->error_bound))
+            fprintf(stderr, "no error bound");
+        else
+            fprintf(stderr, "error <= %.3g relative", s->error_bound);
+        if (s->solver != RAD_SOLVER_CG)
+            fprintf(stderr, ", convergence factor %.6g", s->spectral_radius);
+    }
     fprintf(stderr, "; residual %.3g; F row sums [%.15g, %.15g]\n", s->residual,
             s->row_sum_min, s->row_sum_max);
+    if (s->fallbacks)
+        fprintf(stderr, "radiosity: %s\n", s->fallback);
     fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted: "
                     "%.3g %.3g %.3g\n",
             s->balance[0], s->balance[1], s->balance[2]);

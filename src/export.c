@@ -332,7 +332,8 @@ static void jstr(FILE *out, const char *key, const char *s)
 
 int rad_export_report(FILE *out, const rad_run_info *in)
 {
-    static const char *const solvers[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
+    static const char *const solvers[] = {"gauss",       "jacobi",   "gauss-seidel",
+                                          "progressive", "cholesky", "cg"};
     const rad_solve_report *s = in->solve;
     const rad_ff_stats *f = in->ff;
     fprintf(out, "{\n");

@@ -24,6 +24,18 @@ void dgesvx_(const char *fact, const char *trans, const int *n, const int *nrhs,
              double *c, double *b, const int *ldb, double *x, const int *ldx, double *rcond,
              double *ferr, double *berr, double *work, int *iwork, int *info, size_t fact_len,
              size_t trans_len, size_t equed_len);
+/* Cholesky of a symmetric positive definite matrix (cholesky.c) */
+void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info,
+             size_t uplo_len);
+void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
+             const int *lda, double *b, const int *ldb, int *info, size_t uplo_len);
+void dpocon_(const char *uplo, const int *n, const double *a, const int *lda,
+             const double *anorm, double *rcond, double *work, int *iwork, int *info,
+             size_t uplo_len);
+/* Hager-Higham 1-norm estimator by reverse communication (Higham 2002,
+ * algorithm 15.4): kase = 1 asks for x := A x, kase = 2 for x := A^T x */
+void dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase,
+             int *isave);
 void dlaswp_(const int *n, double *a, const int *lda, const int *k1, const int *k2,
              const int *ipiv, const int *incx);
 void dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag,

@@ -18,14 +18,12 @@
  *                 Bands whose reflectances agree on every element share one
  *                 factorisation with several right-hand sides, and only one
  *                 working matrix is alive at a time.
- *   jacobi        B <- E + diag(rho) F B, all bands in one DGEMM per sweep.
- *   gauss-seidel  B_i <- E_i + rho_i sum_j F_ij B_j in place, i ascending.
- *                 Row i of a column-major F is strided, so when F obeys
- *                 reciprocity (A_i F_ij = A_j F_ji, which the form-factor
- *                 fill guarantees) the sum is taken down column i instead:
- *                 sum_j F_ij B_j = (1/A_i) sum_j F_ji (A_j B_j).
- *   bounces K     exactly K Jacobi sweeps from B = E, no convergence test:
- *                 B_K = sum_{m=0..K} (diag(rho) F)^m E (the paper's fig. 7).
+ *   cholesky      the symmetric form diag(A/rho) (I - diag(rho) F), by
+ *                 LAPACK's dpotrf (cholesky.c), LU where it does not apply.
+ *   jacobi, gauss-seidel, bounces K   one pass over F per sweep for the
+ *                 three bands, stopping on a bound of the error (iterate.c).
+ *   cg            conjugate gradients on the symmetric form (cg.c).
+ *   progressive   shooting (progressive.c).
  * A system is reported singular when dgetrf meets an exact zero pivot or
  * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
  * than about 6 digits of B could be trusted (round-off 1e-16 times the
@@ -49,8 +47,10 @@
 #include <string.h>
 
 #include "lapack.h"
+#include "fpass.h"
 #include "lu.h"
 #include "radiosity.h"
+#include "solvers.h"
 #include "status.h"
 
 #define RAD_RCOND_MIN 1e-10
@@ -73,14 +73,6 @@ double rad_solve_bytes(int n, int with_errbounds)
     return nn * (with_errbounds ? 3 : 2) + 64.0 * n * sizeof(double);
 }
 
-/* H = F X for the three bands at once (DGEMM, n x n times n x 3). */
-static void mult_f(int n, const double *F, const double *X, double *H)
-{
-    const int three = RAD_BANDS;
-    const double one = 1, zero = 0;
-    dgemm_("N", "N", &n, &three, &n, &one, F, &n, X, &n, &zero, H, &n, 1, 1);
-}
-
 static double max_abs(const double *x, size_t n)
 {
     double m = 0;
@@ -93,9 +85,9 @@ static double max_abs(const double *x, size_t n)
 
 /* Factor and solve (I - diag(rho) F) X = E for the bands listed in
  * bands[0..nb): rho is that of bands[0]. */
-static rad_status solve_lu(int n, const double *F, const double *rho, const double *E,
-                           double *B, const int *bands, int nb, const rad_solve_options *opt,
-                           rad_solve_report *rep, rad_error *err)
+rad_status rad_solve_lu(int n, const double *F, const double *rho, const double *E,
+                        double *B, const int *bands, int nb, const rad_solve_options *opt,
+                        rad_solve_report *rep, rad_error *err)
 {
     const size_t nn = (size_t)n * n;
     double *A = malloc(sizeof *A * nn), *AF = NULL;
@@ -232,122 +224,13 @@ static rad_status solve_gauss(int n, const double *F, const double *rho, const d
         rep->systems++;
         if (opt->progress && opt->progress(opt->progress_user, "solve", rep->systems - 1, RAD_BANDS))
             return rad_fail(err, RAD_ERR_INVALID, "interrupted");
-        rad_status st = solve_lu(n, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, err);
+        rad_status st = rad_solve_lu(n, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, err);
         if (st)
             return st;
     }
     if (opt->progress)
         opt->progress(opt->progress_user, "solve", RAD_BANDS, RAD_BANDS);
     return RAD_OK;
-}
-
-/* ---- iterations ----------------------------------------------------------- */
-
-/* Does F obey A_i F_ij = A_j F_ji to round-off? */
-static int reciprocal(int n, const double *F, const double *area)
-{
-    for (int j = 0; j < n; j++)
-        for (int i = j + 1; i < n; i++) {
-            double a = area[i] * F[(size_t)i + (size_t)j * n];
-            double b = area[j] * F[(size_t)j + (size_t)i * n];
-            if (fabs(a - b) > 1e-12 * fmax(fabs(a), fabs(b)))
-                return 0;
-        }
-    return 1;
-}
-
-/* One Gauss-Seidel sweep in place; returns max |change|. */
-static double gs_sweep(int n, const double *F, const double *rho, const double *E, double *B,
-                       double *W, const double *area, int recip)
-{
-    double change = 0;
-    for (int i = 0; i < n; i++) {
-        double h[RAD_BANDS] = {0, 0, 0};
-        if (recip) { /* sum_j F_ji A_j B_j / A_i: column i is contiguous */
-            const double *col = F + (size_t)i * n;
-            for (int j = 0; j < n; j++)
-                for (int b = 0; b < RAD_BANDS; b++)
-                    h[b] += col[j] * W[(size_t)j + (size_t)b * n];
-            for (int b = 0; b < RAD_BANDS; b++)
-                h[b] /= area[i];
-        } else {
-            for (int j = 0; j < n; j++)
-                for (int b = 0; b < RAD_BANDS; b++)
-                    h[b] += F[(size_t)i + (size_t)j * n] * B[(size_t)j + (size_t)b * n];
-        }
-        for (int b = 0; b < RAD_BANDS; b++) {
-            size_t k = (size_t)i + (size_t)b * n;
-            double v = E[k] + rho[k] * h[b];
-            change = fmax(change, fabs(v - B[k]));
-            B[k] = v;
-            W[k] = area[i] * v;
-        }
-    }
-    return change;
-}
-
-static rad_status solve_iterative(int n, const double *F, const double *rho, const double *E,
-                                  const double *area, double *B, const rad_solve_options *opt,
-                                  rad_solve_report *rep, rad_error *err)
-{
-    const size_t n3 = (size_t)n * RAD_BANDS;
-    double *H = malloc(sizeof *H * n3), *W = malloc(sizeof *W * n3);
-    const int gs = opt->solver == RAD_SOLVER_GAUSS_SEIDEL && opt->bounces < 0;
-    const int limit = opt->bounces >= 0 ? opt->bounces : opt->max_iterations;
-    double change = 0, prev = 0, rate = 0;
-    int it;
-    rad_status st = RAD_OK;
-    if (!H || !W) {
-        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-        goto done;
-    }
-    const int recip = gs && reciprocal(n, F, area);
-    memcpy(B, E, sizeof *B * n3); /* B_0 = E */
-    for (size_t k = 0; k < n3; k++)
-        W[k] = area[k % (size_t)n] * B[k];
-    for (it = 1; it <= limit; it++) {
-        if (gs) {
-            change = gs_sweep(n, F, rho, E, B, W, area, recip);
-        } else {
-            mult_f(n, F, B, H);
-            change = 0;
-            for (size_t k = 0; k < n3; k++) {
-                double v = E[k] + rho[k] * H[k];
-                change = fmax(change, fabs(v - B[k]));
-                B[k] = v;
-            }
-        }
-        /* asymptotic convergence factor: ratio of successive changes */
-        if (prev > 0 && change > 0)
-            rate = change / prev;
-        prev = change;
-        if (opt->progress && it % 16 == 0 && opt->bounces < 0) {
-            double scale = max_abs(B, n3), goal = opt->tolerance * scale;
-            double frac = change > goal && rate > 0 && rate < 1
-                              ? log(prev / scale) / log(opt->tolerance) : 1;
-            if (opt->progress(opt->progress_user, "iterate", fmin(fmax(frac, 0), 1), 1)) {
-                st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
-                goto done;
-            }
-        }
-        if (opt->bounces < 0 && change <= opt->tolerance * max_abs(B, n3))
-            break;
-    }
-    rep->sweeps = it > limit ? limit : it;
-    rep->spectral_radius = rate;
-    if (opt->bounces < 0 && it > limit) {
-        st = rad_fail(err, RAD_ERR_NOCONV,
-                      "%s did not converge in %d sweeps: relative change %.3g > tolerance %g "
-                      "(convergence factor per sweep %.6f%s)",
-                      gs ? "gauss-seidel" : "jacobi", limit, change / fmax(max_abs(B, n3), DBL_MIN),
-                      opt->tolerance, rate,
-                      rate >= 1 - 1e-9 ? ": the system looks singular (rho = 1 in a closed scene?)"
-                                       : "; raise --max-iterations or use --solver gauss");
-    }
-done:
-    free(H);
-    free(W);
-    return st;
 }
 
 /* ---- diagnostics ---------------------------------------------------------- */
@@ -376,7 +259,11 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
         rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
         rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
     }
-    mult_f(n, F, B, H); /* H = F B: the irradiance of Cohen et al. 1988 */
+    if (rad_fpass_mul(n, F, B, H)) { /* H = F B: the irradiance of Cohen et al. 1988 */
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
     double emax = max_abs(E, n3), res = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
         double em = 0, ab = 0, es = 0;
@@ -455,10 +342,12 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     rep->ff_error_bound = NAN;
     rep->spectral_radius = NAN;
     rep->ferr = rep->berr = NAN;
+    rep->error_bound = rep->contraction = NAN;
     if (opt->tolerance <= 0 || opt->max_iterations < 1)
         return rad_fail(err, RAD_ERR_INVALID, "tolerance must be positive and max-iterations at least 1");
-    double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
-    double *area = malloc(sizeof *area * (size_t)(n ? n : 1));
+    /* calloc: GCC 12 cannot see that the loop below fills them */
+    double *rho = malloc(sizeof *rho * n3), *E = calloc(n3 ? n3 : 1, sizeof *E);
+    double *area = calloc((size_t)(n ? n : 1), sizeof *area);
     if (!rho || !E || !area) {
         free(rho);
         free(E);
@@ -480,12 +369,31 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     scale_by(area, (size_t)n, -ka);
     if (!late)
         scale_by(E, n3, -ke);
+    /* the solvers that weigh by area see the scaled areas (see Range):
+     * a shallow copy of the mesh with its elements' areas replaced */
+    rad_mesh ms = *m;
+    rad_element *els = progressive || (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
+                           ? NULL
+                           : malloc(sizeof *els * (size_t)(n ? n : 1));
+    if (els) {
+        memcpy(els, m->elements, sizeof *els * (size_t)n);
+        for (int i = 0; i < n; i++)
+            els[i].area = area[i];
+        ms.elements = els;
+    }
     if (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
         st = solve_gauss(n, F, rho, E, B, opt, rep, err);
     else if (progressive)
         st = rad_solve_progressive(m, F, rho, E, opt, B, rep, err);
+    else if (!els)
+        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    else if (opt->solver == RAD_SOLVER_CHOLESKY && opt->bounces < 0)
+        st = rad_solve_cholesky(&ms, F, rho, E, B, opt, rep, err);
+    else if (opt->solver == RAD_SOLVER_CG && opt->bounces < 0)
+        st = rad_solve_cg(&ms, F, rho, E, B, opt, rep, err);
     else
-        st = solve_iterative(n, F, rho, E, area, B, opt, rep, err);
+        st = rad_solve_iterate(&ms, F, rho, E, B, opt, rep, err);
+    free(els);
     if (late) {
         scale_by(E, n3, -ke);
         scale_by(B, n3, -ke);

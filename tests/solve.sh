@@ -41,7 +41,7 @@ if command -v python3 > /dev/null; then
 fi
 
 # solvers agree through the CLI too (table values, 1e-10)
-for s in jacobi gauss-seidel; do
+for s in cholesky jacobi gauss-seidel cg; do
   "$RADIOSITY" solve -q --mesh 3x3 --solver $s --elements "$work/e_$s.tsv" "$cube"
   paste "$work/e.tsv" "$work/e_$s.tsv" | awk -F'\t' 'NR > 1 { for (k = 12; k <= 14; k++) { d = $k - $(k + 14); if (d < 0) d = -d; if (d > 1e-10) bad = 1 } } END { exit bad }'
   ok $? "--solver $s agrees with gauss to 1e-10"
@@ -59,6 +59,13 @@ ok $? "closed box with reflectance 1: exit 1, 'singular', no output"
 [ $rc -eq 1 ] && grep -q 'did not converge' "$work/err" && [ ! -e "$work/nc.tsv" ]
 ok $? "jacobi stopped early: exit 1, says so, writes no table"
 "$RADIOSITY" solve --solver lu "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown solver: exit 2"
+"$RADIOSITY" solve --solver cholesky --tolerance 1e-9 "$cube" > /dev/null 2>&1; [ $? -eq 2 ]
+ok $? "--tolerance with cholesky: exit 2"
+# the iterative summary states its error bound, and it is met
+"$RADIOSITY" solve --mesh 3x3 --solver cg "$cube" 2> "$work/cg.err"
+sed -n 's/.*error <= \([^ ]*\) relative.*/\1/p' "$work/cg.err" | awk '{ n++; if (!($1 <= 1e-12)) bad = 1 } END { exit bad || n != 1 }'
+ok $? "cg: the summary reports an error bound <= 1e-12"
+
 "$RADIOSITY" solve --bounces -1 "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "negative bounces: exit 2"
 "$RADIOSITY" solve --help | grep -q -- '--bounces'; ok $? "solve --help lists --bounces"
 

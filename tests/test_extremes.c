@@ -1447,9 +1447,12 @@ static void test_reflectance(void)
  * with one rho on every element diag(rho) F = rho F has spectral radius
  * exactly rho.  Jacobi's error then shrinks by rho per sweep: from B = E
  * = 1 the changes are rho^k exactly, so the reported convergence factor
- * (the ratio of successive changes) is rho, and stopping at a relative
- * change of 1e-12 takes k = ln(1e-12 / (1 - rho)) / ln(rho) sweeps,
- * 20713 for rho = 0.999.  Gauss-Seidel converges faster but never slower
+ * (the ratio of successive changes) is rho.  The sweeps stop when the
+ * bound q/(1-q) rho^k on the error (q = rho here) falls to 1e-12 |B|, |B|
+ * = (1 - rho^(k+1)) / (1 - rho): at k = ceil(ln(1e-12) / ln(rho)) - 1,
+ * 27617 for rho = 0.999; the bound is the true error here.  The change
+ * there is 1e-12 |B| (1 - rho)/rho, 8.8 ulps of B = 1000, known to +-1
+ * ulp (11%), which moves the stop by ln(1.114) / -ln(rho) = 108 sweeps.  Gauss-Seidel converges faster but never slower
  * than Jacobi for a non-negative iteration matrix (Stein-Rosenberg): its
  * factor lies in (0, rho].  With rho = 1 nothing converges: the factor is 1. */
 static void test_iterative(void)
@@ -1463,7 +1466,7 @@ static void test_iterative(void)
         return;
     }
     const double rho = 0.999;
-    const int kpred = (int)ceil(log(1e-12 / (1 - rho)) / log(rho));
+    const int kpred = (int)ceil(log(1e-12) / log(rho)) - 1;
     double B[6 * RAD_BANDS];
     rad_solve_options so;
     rad_solve_report rep;
@@ -1474,11 +1477,11 @@ static void test_iterative(void)
     double w = 0;
     for (int k = 0; k < cl.n * RAD_BANDS; k++)
         w = nmax(w, fabs(B[k] - 1000) / 1000);
-    tap_ok(st == RAD_OK && abs(rep.sweeps - kpred) <= 2,
+    tap_ok(st == RAD_OK && abs(rep.sweeps - kpred) <= 110,
            "jacobi furnace rho=0.999: %d sweeps (predicted %d from rho^k), B rel err %.3g",
            rep.sweeps, kpred, w);
-    /* the factor is measured between the last sweeps, where the change is
-     * 1e-12 |B| and carries round-off eps |B|: about 1e-4 relative */
+    /* the factor is measured between the last sweeps whose change is above
+     * 1e4 eps |B|, so round-off eps |B| moves it by 1e-4 relative at most */
     tap_ok(fabs(rep.spectral_radius - rho) <= 1e-3 * rho,
            "jacobi furnace rho=0.999: convergence factor %.9f close to rho (within 1e-3)",
            rep.spectral_radius);

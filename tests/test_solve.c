@@ -13,11 +13,18 @@
  *     written here, for the exact discrete solution;
  *   - closed forms: the furnace B = E/(1 - rho); two facing squares with
  *     rho = 1, B1 = E/(1 - F^2);
- *   - identities: energy balance, mirror symmetry.
+ *   - identities: energy balance, mirror symmetry;
+ *   - every solver against the long-double solution of the same F, within
+ *     round-off (direct) or the error bound it reports (iterative);
+ *   - the symmetric form's fallbacks on matrices built to need them, with
+ *     closed-form answers; its bound from F's error against the exact
+ *     inverse.
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -464,6 +471,302 @@ static void test_blocked_lu(void)
     free(p2);
 }
 
+
+/* ---- the symmetric form (cholesky.c) --------------------------------------- */
+
+/* The exact discrete solution for this F, in long double: X (n x 3). */
+static void reference_solution(const rad_mesh *m, const double *F, double *X)
+{
+    const int n = m->nelements;
+    long double *A = malloc(sizeof *A * (size_t)n * n), *x = malloc(sizeof *x * (size_t)n);
+    for (int b = 0; b < 3; b++) {
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++)
+                A[(size_t)i * n + j] = (i == j) - (long double)m->elements[i].reflect[b] *
+                                                      F[i + (size_t)j * n];
+            x[i] = m->elements[i].emit[b];
+        }
+        ge_solve(n, A, x);
+        for (int i = 0; i < n; i++)
+            X[i + (size_t)b * n] = (double)x[i];
+    }
+    free(A);
+    free(x);
+}
+
+static double rel_err(const double *B, const double *X, size_t n)
+{
+    double big = 0;
+    for (size_t k = 0; k < n; k++)
+        big = fmax(big, fabs(X[k]));
+    return max_diff(B, X, n) / big;
+}
+
+/* Every solver against the exact discrete solution of the same F, on the
+ * 7x7 cube (294 elements).
+ * Direct solvers: backward stable with growth factor <= 2 for a
+ * diagonally dominant matrix (Higham 2002, thm. 9.9; Cholesky thm. 10.5),
+ * so the error is <= 2 gamma_3n kappa, kappa_inf(I - rho F) <= (1 + q) /
+ * (1 - q) = 9 for q = 0.8: we allow 6 n eps kappa.  Iterative solvers:
+ * their reported bound must hold, up to that same round-off. */
+static void test_all_solvers_exact(void)
+{
+    static const rad_solver which[] = {RAD_SOLVER_GAUSS, RAD_SOLVER_CHOLESKY,
+                                       RAD_SOLVER_JACOBI, RAD_SOLVER_GAUSS_SEIDEL,
+                                       RAD_SOLVER_CG};
+    static const char *const names[] = {"gauss", "cholesky", "jacobi", "gauss-seidel", "cg"};
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    rad_solve_report rep;
+    cube(7, goral_materials, goral, &s, &m);
+    const int n = m.nelements;
+    const size_t n3 = (size_t)n * 3;
+    double *F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *X = malloc(sizeof *X * n3), *B = malloc(sizeof *B * n3);
+    reference_solution(&m, F, X);
+    const double q = 0.8, kappa = (1 + q) / (1 - q), floor = 6 * n * DBL_EPSILON * kappa;
+    for (size_t k = 0; k < sizeof which / sizeof *which; k++) {
+        rad_solve_options_init(&o);
+        o.solver = which[k];
+        rad_status st = rad_solve(&m, F, &o, B, &rep, &err);
+        const double e = rel_err(B, X, n3);
+        if (k < 2)
+            tap_ok(st == RAD_OK && e <= floor && rep.fallbacks == 0,
+                   "%s: B within 6 n eps kappa = %.3g of the exact solution (%.3g)", names[k],
+                   floor, e);
+        else
+            tap_ok(st == RAD_OK && e <= rep.error_bound + floor && rep.error_bound <= 1e-12 &&
+                       fabs(rep.contraction - q) <= 1e-9 && rep.fallbacks == 0,
+                   "%s: error %.3g within its bound %.3g <= 1e-12 (+ %.3g), %d sweeps, q = %.12g",
+                   names[k], e, rep.error_bound, floor, rep.sweeps, rep.contraction);
+    }
+    free(F);
+    free(X);
+    free(B);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
+/* Three Gauss-Seidel sweeps written out here, element by element along
+ * the rows of F, against the solver's blocked sweeps down the columns
+ * (rad_solve stops after max_iterations with B the last iterate).  Three
+ * sweeps of sums of n terms each: round-off 3 gamma_n max|B| (Higham 2002,
+ * eq. 3.5), plus 2 eps for the reciprocal entries the solver reads. */
+static void test_gauss_seidel_blocks(void)
+{
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    cube(14, goral_materials, goral, &s, &m); /* 1176 elements: two blocks of 1024 */
+    const int n = m.nelements;
+    const size_t n3 = (size_t)n * 3;
+    double *F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *X = malloc(sizeof *X * n3), *B = malloc(sizeof *B * n3);
+    for (size_t k = 0; k < n3; k++)
+        X[k] = m.elements[k % n].emit[k / n];
+    for (int sweep = 0; sweep < 3; sweep++)
+        for (int i = 0; i < n; i++)
+            for (int b = 0; b < 3; b++) {
+                double h = 0;
+                for (int j = 0; j < n; j++)
+                    h += F[i + (size_t)j * n] * X[j + (size_t)b * n];
+                X[i + (size_t)b * n] = m.elements[i].emit[b] + m.elements[i].reflect[b] * h;
+            }
+    rad_solve_options_init(&o);
+    o.solver = RAD_SOLVER_GAUSS_SEIDEL;
+    o.max_iterations = 3;
+    rad_status st = rad_solve(&m, F, &o, B, NULL, &err);
+    const double e = rel_err(B, X, n3), tol = 3 * (n + 2) * DBL_EPSILON;
+    tap_ok(st == RAD_ERR_NOCONV && e <= tol,
+           "gauss-seidel in blocks of columns = element by element along rows, 3 sweeps "
+           "(%.3g <= %.3g)", e, tol);
+    free(F);
+    free(X);
+    free(B);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
+/* Two facing unit squares 1 apart (F from Howell C-11 within 1e-9). */
+static double *two_squares(const char *materials, rad_scene *s, rad_mesh *m)
+{
+    char text[512];
+    rad_error err;
+    snprintf(text, sizeof text, "%squad l 0 0 0  1 0 0  1 1 0  0 1 0\n"
+                                "quad w 0 0 1  0 1 1  1 1 1  1 0 1\n", materials);
+    rad_scene_parse(s, text, strlen(text), "two", &err);
+    rad_mesh_build(m, s, &err);
+    return form_factors(m, RAD_ACCURACY_REFERENCE);
+}
+
+static void test_cholesky_fallbacks(void)
+{
+    static const char *const w6[6] = {"w", "w", "w", "w", "w", "w"};
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    rad_solve_report rep;
+    double B[6], G[6];
+    rad_solve_options_init(&o);
+    o.solver = RAD_SOLVER_CHOLESKY;
+    /* open pair with rho = 1: K = [1 -F; -F 1] is positive definite */
+    double *F = two_squares("material l reflect 1 emit 1\nmaterial w reflect 1\n", &s, &m);
+    const double f = F[1];
+    rad_status st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 0, "cholesky: open pair, rho = 1, positive definite");
+    tap_close(B[0], 1 / (1 - f * f), 1e-14, "cholesky, open rho = 1: B1 = 1/(1 - F^2)");
+    tap_close(B[1], f / (1 - f * f), 1e-14, "cholesky, open rho = 1: B2 = F/(1 - F^2)");
+    /* F_12 = F_21 = 1.5 (not a form factor; reciprocal, equal areas), rho
+     * = 0.9: K = [1 -1.35; -1.35 1] has eigenvalue -0.35; M = K is not
+     * singular: B1 = 1 / (1 - 1.35^2), B2 = 1.35 B1 */
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+    free(F);
+    F = two_squares("material l reflect 0.9 emit 1\nmaterial w reflect 0.9\n", &s, &m);
+    F[2] = F[1] = 1.5;
+    st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 1 && strstr(rep.fallback, "not positive definite"),
+           "F_12 = 1.5: not positive definite, LU instead (%s)", rep.fallback);
+    tap_close(B[0], 1 / (1 - 1.35 * 1.35), 1e-14, "F_12 = 1.5: B1 = 1/(1 - 1.35^2) by LU");
+    tap_close(B[1], 1.35 / (1 - 1.35 * 1.35), 1e-14, "F_12 = 1.5: B2 = 1.35 B1 by LU");
+    /* not reciprocal: LU, the same B as gauss bit for bit (the same code) */
+    F[2] = 1.5 * (1 + 1e-9);
+    st = rad_solve(&m, F, &o, B, &rep, &err);
+    rad_solve_options_init(&o);
+    rad_solve(&m, F, &o, G, NULL, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 1 && strstr(rep.fallback, "not reciprocal") &&
+               memcmp(B, G, sizeof B) == 0,
+           "F not reciprocal to 1e-9: LU, equal to gauss (%s)", rep.fallback);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+    free(F);
+    /* closed box, rho = 1: singular, whichever way it is found */
+    cube(3, "material w reflect 1 emit 1\n", w6, &s, &m);
+    F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *Bc = malloc(sizeof *Bc * 3 * (size_t)m.nelements);
+    o.solver = RAD_SOLVER_CHOLESKY;
+    st = rad_solve(&m, F, &o, Bc, &rep, &err);
+    tap_ok(st == RAD_ERR_SINGULAR && strstr(err.message, "singular"),
+           "cholesky, closed box, rho = 1: singular (%s%s%s)", err.message,
+           rep.fallbacks ? "; " : "", rep.fallback);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+    /* furnace, rho = 0.5: B = E / (1 - rho) = 2, as gauss's test */
+    cube(3, "material w reflect 0.5 emit 1\n", w6, &s, &m);
+    st = rad_solve(&m, F, &o, Bc, &rep, &err);
+    double dev = fmax(fabs(rep.row_sum_max - 1), fabs(rep.row_sum_min - 1)), worst = 0;
+    for (int k = 0; k < 3 * m.nelements; k++)
+        worst = fmax(worst, fabs(Bc[k] - 2));
+    tap_ok(st == RAD_OK && rep.systems == 1 && worst <= 2 * dev + 1e-14,
+           "cholesky furnace: B = 2 (worst %.3g), one factorisation", worst);
+    free(Bc);
+    free(F);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
+/* The bound from F's error: cholesky estimates ||(I - rho F)^-1||_inf with
+ * dlacn2 through its factor; here it is computed exactly (the inverse, in
+ * long double, column by column).  Hager-Higham's estimate never exceeds
+ * the norm and is exact for a matrix with entries >= 0 (Higham 2002,
+ * section 15.3), which M^-1 is (M is an M-matrix: I minus a non-negative
+ * matrix of norm < 1). */
+static void test_cholesky_ff_bound(void)
+{
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    rad_solve_report rep;
+    cube(3, goral_materials, goral, &s, &m);
+    const int n = m.nelements;
+    double *F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *B = malloc(sizeof *B * (size_t)n * 3), *rowsum = calloc((size_t)n, sizeof *rowsum);
+    long double *A = malloc(sizeof *A * (size_t)n * n), *x = malloc(sizeof *x * (size_t)n);
+    double worst = 0; /* max over bands of rho_max ||M^-1||_inf */
+    for (int b = 0; b < 3; b++) {
+        double rmax = 0;
+        memset(rowsum, 0, sizeof *rowsum * (size_t)n);
+        for (int c = 0; c < n; c++) { /* column c of M^-1 */
+            for (int i = 0; i < n; i++) {
+                for (int j = 0; j < n; j++)
+                    A[(size_t)i * n + j] = (i == j) - (long double)m.elements[i].reflect[b] *
+                                                          F[i + (size_t)j * n];
+                x[i] = i == c;
+            }
+            ge_solve(n, A, x);
+            for (int i = 0; i < n; i++)
+                rowsum[i] += fabs((double)x[i]);
+        }
+        for (int i = 0; i < n; i++)
+            rmax = fmax(rmax, m.elements[i].reflect[b]);
+        double ninv = 0;
+        for (int i = 0; i < n; i++)
+            ninv = fmax(ninv, rowsum[i]);
+        worst = fmax(worst, rmax * ninv);
+    }
+    rad_solve_options_init(&o);
+    o.solver = RAD_SOLVER_CHOLESKY;
+    o.ff_row_error = 1e-6;
+    rad_status st = rad_solve(&m, F, &o, B, &rep, &err);
+    const double k = worst * 1e-6, want = k / (1 - k);
+    tap_ok(st == RAD_OK, "cholesky with the bound from F's error");
+    tap_close(rep.ff_error_bound, want, 1e-9,
+              "cholesky: F's error bound = k/(1-k), k = rho_max ||dF|| ||M^-1||, exact inverse");
+    free(F);
+    free(B);
+    free(rowsum);
+    free(A);
+    free(x);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
+/* Conjugate gradients where the symmetric form does not apply: the whole
+ * solve goes to cholesky (and on to LU), and the report says why. */
+static void test_cg_fallbacks(void)
+{
+    static const char *const w6[6] = {"w", "w", "w", "w", "w", "w"};
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    rad_solve_options o;
+    rad_solve_report rep;
+    double B[6];
+    rad_solve_options_init(&o);
+    o.solver = RAD_SOLVER_CG;
+    /* open pair, rho = 1: q = F < 1, CG converges; closed forms as above */
+    double *F = two_squares("material l reflect 1 emit 1\nmaterial w reflect 1\n", &s, &m);
+    const double f = F[1];
+    rad_status st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 0 && rep.error_bound <= 1e-12,
+           "cg: open pair, rho = 1, %d iterations, bound %.3g", rep.sweeps, rep.error_bound);
+    tap_close(B[0], 1 / (1 - f * f), 1e-12 + 1e-14, "cg, open rho = 1: B1 = 1/(1 - F^2)");
+    tap_close(B[1], f / (1 - f * f), 1e-12 / f + 1e-14, "cg, open rho = 1: B2 = F/(1 - F^2)");
+    F[2] *= 1 + 1e-9; /* not reciprocal */
+    st = rad_solve(&m, F, &o, B, &rep, &err);
+    tap_ok(st == RAD_OK && rep.fallbacks == 2 && strstr(rep.fallback, "cg: F is not reciprocal") &&
+               strstr(rep.fallback, "solved by LU"),
+           "cg, F not reciprocal: cholesky, then LU (%s)", rep.fallback);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+    free(F);
+    cube(3, "material w reflect 1 emit 1\n", w6, &s, &m);
+    F = form_factors(&m, RAD_ACCURACY_DEFAULT);
+    double *Bc = malloc(sizeof *Bc * 3 * (size_t)m.nelements);
+    st = rad_solve(&m, F, &o, Bc, &rep, &err);
+    tap_ok(st == RAD_ERR_SINGULAR && strstr(rep.fallback, ">= 1 bounds no error"),
+           "cg, closed box, rho = 1: no bound, cholesky says singular (%s)", rep.fallback);
+    free(Bc);
+    free(F);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
 int main(void)
 {
     test_blocked_lu();
@@ -472,5 +775,10 @@ int main(void)
     test_solvers_and_bounces();
     test_mirror();
     test_furnace_and_singular();
+    test_all_solvers_exact();
+    test_gauss_seidel_blocks();
+    test_cholesky_fallbacks();
+    test_cholesky_ff_bound();
+    test_cg_fallbacks();
     return tap_done();
 }

@@ -1,0 +1,40 @@
+/* solvers.h -- the band solvers behind rad_solve (internal).
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Each solves (I - diag(rho_b) F) B_b = E_b for the three bands; rho, E
+ * and B are n x RAD_BANDS column-major, F n x n column-major (solve.c
+ * says how).  They fill the solver's fields of the report; rad_solve
+ * fills the rest (residual, energy balance).
+ */
+#ifndef RAD_SOLVERS_H
+#define RAD_SOLVERS_H
+
+#include "radiosity.h"
+
+/* LU (solve.c) of the bands listed in bands[0..nb), which share the
+ * reflectances rho (those of bands[0]). */
+rad_status rad_solve_lu(int n, const double *F, const double *rho, const double *E, double *B,
+                        const int *bands, int nb, const rad_solve_options *opt,
+                        rad_solve_report *rep, rad_error *err);
+
+/* The symmetric form by Cholesky, LU where it is not positive definite
+ * (cholesky.c). */
+rad_status rad_solve_cholesky(const rad_mesh *m, const double *F, const double *rho,
+                              const double *E, double *B, const rad_solve_options *opt,
+                              rad_solve_report *rep, rad_error *err);
+
+/* Jacobi, Gauss-Seidel and --bounces (iterate.c). */
+rad_status rad_solve_iterate(const rad_mesh *m, const double *F, const double *rho,
+                             const double *E, double *B, const rad_solve_options *opt,
+                             rad_solve_report *rep, rad_error *err);
+
+/* Conjugate gradients on the symmetric form (cg.c). */
+rad_status rad_solve_cg(const rad_mesh *m, const double *F, const double *rho,
+                        const double *E, double *B, const rad_solve_options *opt,
+                        rad_solve_report *rep, rad_error *err);
+
+/* Append "why" to the report's fallback note (count it): cholesky, cg. */
+void rad_report_fallback(rad_solve_report *rep, const char *why);
+
+#endif /* RAD_SOLVERS_H */
