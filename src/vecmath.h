@@ -38,8 +38,8 @@
  * omitted term is below 2e-17 of the result.  pi/2 and pi/4 enter as head
  * and tail.  tests/test_vecmath.c checks 4 ulp against libm's atan2.
  */
-#ifndef RAD_VECLOG_H
-#define RAD_VECLOG_H
+#ifndef RAD_VECMATH_H
+#define RAD_VECMATH_H
 
 #include <float.h>
 #include <math.h>
@@ -204,4 +204,4 @@ RAD_LOG_INLINE rad_v4d rad_log4(rad_v4d x)
 #pragma GCC diagnostic pop
 #endif
 
-#endif /* RAD_VECLOG_H */
+#endif /* RAD_VECMATH_H */

@@ -10,10 +10,25 @@
  * ignore two polygons: the two ends of a segment lie on them and always
  * touch them.
  *
- * Predicates are exact (CGAL's Exact_predicates_inexact_constructions_kernel,
- * filtered interval arithmetic with an exact fallback): the tree and the
- * brute-force loop rad_vis_segment_blocked_brute agree on every segment,
- * touching included (triangles and segments are closed sets).
+ * What is exact: each query's answer, for the double coordinates it is
+ * given.  The queries use only predicates of CGAL's
+ * Exact_predicates_inexact_constructions_kernel (do_intersect, collinear:
+ * filtered interval arithmetic with an exact fallback), so the tree and
+ * the brute-force loop rad_vis_segment_blocked_brute agree on every
+ * segment, touching included (triangles and segments are closed sets).
+ * The coordinates themselves are rounded doubles computed by the caller.
+ *
+ * What is not: the hidden surfaces of the form factors.  occlusion.c uses
+ * only rad_vis_box_polygons, once per pair of surfaces at setup, as a
+ * conservative pre-filter: the box is the bounding box of the two surfaces
+ * clipped to the front of each other's plane (in floating point), padded
+ * by 1e-9 of the scene's size, so it holds the pair's shaft, and a surface
+ * it does not list cannot block the pair; one it lists may not block it.
+ * Whether and how much a listed surface hides is decided in occlusion.c in
+ * floating-point arithmetic with stated tolerances (separating planes of
+ * the shaft, the fully-hidden test, the integration of the hidden part),
+ * not by exact predicates.  The segment queries serve the tests
+ * (tests/test_visibility.c).
  *
  * Thread safety: the tree is built completely in rad_vis_create; after
  * that every query is const and may run from many threads at once.  No
