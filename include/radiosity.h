@@ -203,6 +203,8 @@ typedef struct rad_ff_options {
 #define RAD_ROW_SUM_SLACK 1e-6
 
 RAD_API void rad_ff_options_init(rad_ff_options *opt);
+/* An accuracy mode's name ("classic", "default", "reference"), or NULL. */
+RAD_API const char *rad_accuracy_name(int accuracy);
 
 /* Form factor from polygon a (na vertices, area computed) to polygon b, both
  * planar and convex, counter-clockwise about their fronts.  If errest is not
@@ -311,6 +313,9 @@ typedef struct rad_solve_options {
 } rad_solve_options;
 
 RAD_API void rad_solve_options_init(rad_solve_options *opt);
+/* A solver's name as the command line spells it ("gauss", "cholesky",
+ * ...), or NULL for a value out of range. */
+RAD_API const char *rad_solver_name(int solver);
 
 typedef struct rad_solve_report {
     rad_solver solver;

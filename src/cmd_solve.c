@@ -27,9 +27,6 @@ static double seconds(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static const char *const solver_names[] = {"gauss",       "jacobi",   "gauss-seidel",
-                                           "progressive", "cholesky", "cg"};
-static const char *const accuracy_names[] = {"classic", "default", "reference"};
 
 void cli_solve_init(cli_solve *s)
 {
@@ -109,7 +106,7 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
 int cli_solve_check(const cli_solve *s)
 {
     const rad_solver v = s->solve.solver;
-    const char *name = solver_names[v];
+    const char *name = rad_solver_name(v);
     const char *bad = NULL;
     if (s->given_bounces && s->given_solver)
         bad = "--bounces K is its own solver (Jacobi from B = E, exactly K reflections): "
@@ -189,7 +186,7 @@ static void run_info(const cli_run *r, rad_run_info *in)
     const rad_result *res = &r->res;
     memset(in, 0, sizeof *in);
     in->scene = r->scene.filename;
-    in->accuracy = accuracy_names[r->s->common.ff.accuracy];
+    in->accuracy = rad_accuracy_name(r->s->common.ff.accuracy);
     in->quadrature = r->s->common.ff.quadrature;
     in->nelements = res->mesh.nelements;
     in->memory_bytes = res->memory_bytes;
@@ -288,7 +285,7 @@ static void summary(const cli_run *r)
         fprintf(stderr, "radiosity: %d bounces (Jacobi from B = E)", s->bounces);
     else if (s->solver == RAD_SOLVER_GAUSS || s->solver == RAD_SOLVER_CHOLESKY ||
              (s->solver == RAD_SOLVER_CG && s->fallbacks)) {
-        fprintf(stderr, "radiosity: %s, %d factorisation%s, rcond %.3g", solver_names[s->solver],
+        fprintf(stderr, "radiosity: %s, %d factorisation%s, rcond %.3g", rad_solver_name(s->solver),
                 s->systems, s->systems == 1 ? "" : "s", s->rcond);
         if (!isnan(s->ff_error_bound))
             fprintf(stderr, "; F's error moves B by %.3g relative at most", s->ff_error_bound);
@@ -296,7 +293,7 @@ static void summary(const cli_run *r)
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
         fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
     else {
-        fprintf(stderr, "radiosity: %s, %d %s, ||diag(rho) F||inf %.6g, ", solver_names[s->solver],
+        fprintf(stderr, "radiosity: %s, %d %s, ||diag(rho) F||inf %.6g, ", rad_solver_name(s->solver),
                 s->sweeps, s->solver == RAD_SOLVER_CG ? "iterations" : "sweeps", s->contraction);
         if (isnan(s->error_bound))
             fprintf(stderr, "no error bound");

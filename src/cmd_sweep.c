@@ -32,8 +32,6 @@ enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT 
 
 #define MAX_LIST 32
 
-static const char *const acc_names[] = {"classic", "default", "reference"};
-static const char *const solver_names[] = {"gauss", "jacobi", "gauss-seidel", "progressive"};
 
 typedef struct sweep_args {
     cli_common common;
@@ -90,7 +88,7 @@ static void help(void)
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
-static int parse_list(const char *arg, const char *const *names, int nnames, int *out, int max)
+static int parse_list(const char *arg, const char *(*name)(int), int nnames, int *out, int max)
 {
     char buf[256];
     int n = 0;
@@ -99,9 +97,9 @@ static int parse_list(const char *arg, const char *const *names, int nnames, int
     strcpy(buf, arg);
     for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         int v = -1;
-        if (names) {
+        if (name) {
             for (int k = 0; k < nnames; k++)
-                if (strcmp(t, names[k]) == 0)
+                if (strcmp(t, name(k)) == 0)
                     v = k;
         } else if (cli_parse_int(t, 1, 1000, &v)) {
             v = -1;
@@ -148,13 +146,13 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             }
             break;
         case OPT_ACCURACIES:
-            if ((a->nacc = parse_list(optarg, acc_names, 3, a->acc, 3)) < 0) {
+            if ((a->nacc = parse_list(optarg, rad_accuracy_name, 3, a->acc, 3)) < 0) {
                 cli_error("--accuracies takes classic, default, reference separated by commas");
                 return 2;
             }
             break;
         case OPT_SOLVERS:
-            if ((a->nsolvers = parse_list(optarg, solver_names, 3, a->solvers, 4)) < 0) {
+            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 3, a->solvers, 4)) < 0) {
                 cli_error("--solvers takes gauss, jacobi, gauss-seidel separated by commas");
                 return 2;
             }
@@ -218,7 +216,7 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
         runs++;
     }
     if (st != RAD_OK) {
-        cli_error("mesh %dx%d, %s, %s: %s", n, n, acc_names[ff->accuracy], solver_names[solver],
+        cli_error("mesh %dx%d, %s, %s: %s", n, n, rad_accuracy_name(ff->accuracy), rad_solver_name(solver),
                   err.message);
         rad_result_free(out);
         return 1;
@@ -253,7 +251,7 @@ static int write_table(FILE *out, const row *r, int nr, const char *truth)
                  "seconds_total\trms_error\tmax_error\ttruth\n");
     for (int k = 0; k < nr; k++)
         fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n", r[k].mesh,
-                r[k].mesh, r[k].elements, acc_names[r[k].acc], solver_names[r[k].solver],
+                r[k].mesh, r[k].elements, rad_accuracy_name(r[k].acc), rad_solver_name(r[k].solver),
                 r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve, r[k].rms, r[k].max, truth);
     return ferror(out) ? -1 : 0;
 }
@@ -284,8 +282,8 @@ static int plot(const sweep_args *a, const row *r, int nr, const char *title)
     for (int i = 0; i < a->nacc; i++)
         for (int j = 0; j < a->nsolvers && ns < 12; j++, ns++) {
             s[ns].n = 0;
-            snprintf(labels[ns], sizeof labels[ns], "%s, %s", acc_names[a->acc[i]],
-                     solver_names[a->solvers[j]]);
+            snprintf(labels[ns], sizeof labels[ns], "%s, %s", rad_accuracy_name(a->acc[i]),
+                     rad_solver_name(a->solvers[j]));
             for (int k = 0; k < nr; k++)
                 if (r[k].acc == a->acc[i] && r[k].solver == a->solvers[j] && s[ns].n < MAX_LIST) {
                     x[ns][s[ns].n] = r[k].t_ff + r[k].t_solve;
@@ -357,7 +355,7 @@ int cmd_sweep(int argc, char **argv)
                                    truth.B, closed, &w->rms, &w->max);
                 if (!a.common.quiet)
                     fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n",
-                            w->mesh, w->mesh, acc_names[w->acc], solver_names[w->solver],
+                            w->mesh, w->mesh, rad_accuracy_name(w->acc), rad_solver_name(w->solver),
                             w->t_ff + w->t_solve, w->rms);
                 nr++;
                 rad_result_free(&sol);

@@ -332,8 +332,6 @@ static void jstr(FILE *out, const char *key, const char *s)
 
 int rad_export_report(FILE *out, const rad_run_info *in)
 {
-    static const char *const solvers[] = {"gauss",       "jacobi",   "gauss-seidel",
-                                          "progressive", "cholesky", "cg"};
     const rad_solve_report *s = in->solve;
     const rad_ff_stats *f = in->ff;
     fprintf(out, "{\n");
@@ -369,7 +367,7 @@ int rad_export_report(FILE *out, const rad_run_info *in)
                 f->vis_pairs_blocked, f->vis_pairs_partial, f->vis_seconds);
     }
     if (s) {
-        jstr(out, "solver", solvers[s->solver]);
+        jstr(out, "solver", rad_solver_name(s->solver));
         fprintf(out, "  \"bounces\": %d,\n  \"systems_factorised\": %d,\n  \"sweeps\": %d,\n",
                 s->bounces, s->systems, s->sweeps);
         jnum(out, "residual", s->residual, 1);

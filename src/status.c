@@ -44,3 +44,18 @@ rad_status rad_fail_vat(rad_error *err, const char *file, int line, const char *
     vsnprintf(what, sizeof what, fmt, ap);
     return rad_fail(err, RAD_ERR_PARSE, "%s:%d: %s", file, line, what);
 }
+
+/* The one table of each: the command line parses and prints these names,
+ * the report writes them. */
+const char *rad_solver_name(int solver)
+{
+    static const char *const names[] = {"gauss",       "jacobi",   "gauss-seidel",
+                                        "progressive", "cholesky", "cg"};
+    return solver >= 0 && solver < (int)(sizeof names / sizeof *names) ? names[solver] : NULL;
+}
+
+const char *rad_accuracy_name(int accuracy)
+{
+    static const char *const names[] = {"classic", "default", "reference"};
+    return accuracy >= 0 && accuracy < 3 ? names[accuracy] : NULL;
+}
