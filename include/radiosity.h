@@ -151,6 +151,8 @@ typedef struct rad_mesh {
     int *surface_n, *surface_m; /* grid size per surface (1 x 1 for polygons) */
 } rad_mesh;
 
+/* Refuses (RAD_ERR_INVALID, naming the scene's line) an element whose area
+ * is not a normal double: the areas are in the user's units. */
 RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
 RAD_API void rad_mesh_free(rad_mesh *mesh);
 /* The vertex v (0..nverts-1) of element e. */
@@ -299,7 +301,10 @@ typedef struct rad_solve_report {
 /* Solve for B given the mesh (reflectance, emission, area) and F.  F is
  * not modified.  RAD_ERR_SINGULAR for a (numerically) singular system,
  * RAD_ERR_NOCONV for an iteration that did not converge (B then holds the
- * last iterate, which the caller must not present as the answer). */
+ * last iterate, which the caller must not present as the answer),
+ * RAD_ERR_INVALID for a B beyond the largest double: a B returned with
+ * RAD_OK is finite.  The report's powers may be inf when they exceed the
+ * double range (large areas times large E); its balance is a ratio. */
 RAD_API rad_status rad_solve(const rad_mesh *mesh, const double *F, const rad_solve_options *opt,
                      double *B, rad_solve_report *report, rad_error *err);
 

@@ -159,8 +159,10 @@ typedef struct cli_solve {
     "                          (a solver of its own: no --solver, --tolerance)\n"\
     "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\
     "      --report FILE       full diagnostics as JSON\n"                         \
-    "      --elements FILE     per-element table (TSV)\n"                          \
-    "      --form-factors FILE the form-factor matrix (Matrix Market)\n"          \
+    "      --elements FILE     per-element table (TSV; FILE.npy: B as an n x 3\n"  \
+    "                          float64 NumPy array)\n"                           \
+    "      --form-factors FILE the form-factor matrix (Matrix Market; FILE.npy:\n"\
+    "                          n x n float64 NumPy array, row i = from i)\n"     \
     CLI_COMMON_HELP
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "plotxy.h"
 #include "progressive.h"
 #include "radiosity/render.h"
 
@@ -195,12 +196,31 @@ typedef struct plot_ctx {
     const char *title;
 } plot_ctx;
 
+/* Figure 7 of Cohen et al. 1988: the RMS error of each method against the
+ * step, on a log axis (steps where it is 0 are not drawn). */
 static int write_plot_to(FILE *out, const void *ctx)
 {
+    static const char *const label[RAD_RACE_METHODS] = {
+        "gathering (Gauss-Seidel)", "shooting, file order", "shooting, sorted",
+        "sorted + ambient"};
     const plot_ctx *p = ctx;
+    const size_t rows = (size_t)p->steps + 1;
+    rad_series s[RAD_RACE_METHODS];
     rad_error err;
-    if (rad_race_plot(p->rms, p->steps, p->title, PLOT_WIDTH, PLOT_HEIGHT, out, &err) !=
-        RAD_OK) {
+    double *x = malloc(sizeof *x * rows);
+    if (!x) {
+        cli_error("out of memory for the plot");
+        return -1;
+    }
+    for (size_t k = 0; k < rows; k++)
+        x[k] = (double)k;
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        s[m] = (rad_series){label[m], x, p->rms + (size_t)m * rows, (int)rows};
+    const rad_plot_spec spec = {p->title, "shooting or gathering steps",
+                                "RMS error of B (eq. 14)", 0, 1, PLOT_WIDTH, PLOT_HEIGHT};
+    rad_status st = rad_plot_xy(s, RAD_RACE_METHODS, &spec, out, &err);
+    free(x);
+    if (st != RAD_OK) {
         cli_error_rec(&err);
         return -1;
     }
@@ -251,55 +271,35 @@ static void summary(const rad_mesh *m, const rad_race_options *o, const double *
 
 typedef struct pipeline {
     rad_scene scene;
-    rad_mesh mesh;
-    double *F, *Bref, *rms, *Bv;
+    rad_result res;             /* mesh, F and the converged (gauss) B */
+    double *rms, *Bv;
     int reached[RAD_RACE_METHODS];
 } pipeline;
 
 static void pipeline_free(pipeline *p)
 {
-    free(p->F);
-    free(p->Bref);
     free(p->rms);
     free(p->Bv);
-    rad_mesh_free(&p->mesh);
+    rad_result_free(&p->res);
     rad_scene_free(&p->scene);
 }
 
-/* Mesh, form factors and the gauss solution. */
+/* Mesh, form factors and the gauss solution: the library's pipeline,
+ * keeping F for the race. */
 static int prepare(progress_args *a, pipeline *p)
 {
     rad_error err;
-    rad_solve_options g;
-    if (rad_mesh_build(&p->mesh, &p->scene, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    const int n = p->mesh.nelements;
-    const double need = rad_solve_bytes(n, 0), have = rad_memory_available();
-    if (have > 0 && need > have) {
-        cli_error("%d elements need %.0f MiB for the matrices, but only %.0f MiB are "
-                  "available; use a coarser --mesh",
-                  n, need / 1048576.0, have / 1048576.0);
-        return 1;
-    }
-    const size_t nn = (size_t)n * (size_t)n;
-    p->F = malloc(sizeof *p->F * (nn ? nn : 1));
-    p->Bref = malloc(sizeof *p->Bref * (size_t)(n ? n : 1) * RAD_BANDS);
-    if (!p->F || !p->Bref) {
-        cli_error("out of memory for %d elements", n);
-        return 1;
-    }
+    rad_pipeline_options po;
+    rad_pipeline_options_init(&po);
     cli_progress_attach(&a->common);
-    if (rad_ff_matrix(&p->mesh, &a->common.ff, p->F, NULL, NULL, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
-    }
-    rad_solve_options_init(&g);
-    g.progress = a->common.ff.progress;
-    g.progress_user = a->common.ff.progress_user;
-    if (rad_solve(&p->mesh, p->F, &g, p->Bref, NULL, &err) != RAD_OK) {
-        cli_error("the converged (gauss) solution: %s", err.message);
+    po.ff = a->common.ff;
+    po.keep_form_factors = 1;
+    rad_status st = rad_pipeline_run(&p->scene, &po, &p->res, &err);
+    if (st != RAD_OK) {
+        if (p->res.ff_done)
+            cli_error("the converged (gauss) solution: %s", err.message);
+        else
+            cli_error_rec(&err);
         return 1;
     }
     return 0;
@@ -309,7 +309,7 @@ static int race(progress_args *a, pipeline *p)
 {
     rad_error err;
     snap_ctx sc;
-    const int n = p->mesh.nelements;
+    const int n = p->res.mesh.nelements;
     if (a->race.steps == 0)
         a->race.steps = 2 * n < 1 ? 1 : 2 * n > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : 2 * n;
     p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
@@ -319,15 +319,15 @@ static int race(progress_args *a, pipeline *p)
     }
     memset(&sc, 0, sizeof sc);
     if (a->race.snapshot_every > 0) {
-        sc.mesh = &p->mesh;
+        sc.mesh = &p->res.mesh;
         sc.prefix = a->prefix ? a->prefix : "progress";
         rad_render_options_init(&sc.ropt);
         sc.ropt.camera = p->scene.camera;
         double top = 0;
         for (size_t k = 0; k < (size_t)n * RAD_BANDS; k++)
-            top = fmax(top, p->Bref[k]);
+            top = fmax(top, p->res.B[k]);
         sc.ropt.exposure = top > 0 ? 1 / top : 1;
-        p->Bv = malloc(sizeof *p->Bv * (size_t)(p->mesh.nvertices ? p->mesh.nvertices : 1) *
+        p->Bv = malloc(sizeof *p->Bv * (size_t)(p->res.mesh.nvertices ? p->res.mesh.nvertices : 1) *
                        RAD_BANDS);
         if (!p->Bv) {
             cli_error("out of memory");
@@ -339,7 +339,7 @@ static int race(progress_args *a, pipeline *p)
     }
     a->race.progress = a->common.ff.progress;
     a->race.progress_user = a->common.ff.progress_user;
-    if (rad_race_run(&p->mesh, p->F, p->Bref, &a->race, p->rms, p->reached, &err) != RAD_OK) {
+    if (rad_race_run(&p->res.mesh, p->res.F, p->res.B, &a->race, p->rms, p->reached, &err) != RAD_OK) {
         cli_error_rec(sc.failed ? &sc.err : &err);
         return 1;
     }
@@ -359,7 +359,7 @@ static int outputs(const progress_args *a, const pipeline *p)
     if (cli_outputs_write(o, 2))
         return 1;
     if (!a->common.quiet)
-        summary(&p->mesh, &a->race, p->rms, p->reached);
+        summary(&p->res.mesh, &a->race, p->rms, p->reached);
     return 0;
 }
 
@@ -379,7 +379,9 @@ static int run(progress_args *a, const char *path)
             cli_error("%s: --snapshots needs a camera line in the scene", path);
         goto done;
     }
-    if (prepare(a, &p) || race(a, &p) || outputs(a, &p))
+    const cli_output out[2] = {{a->output, write_table_to, NULL},
+                               {a->plot, write_plot_to, NULL}};
+    if (cli_outputs_check(out, 2) || prepare(a, &p) || race(a, &p) || outputs(a, &p))
         goto done;
     status = 0;
 done:

@@ -165,6 +165,18 @@ static int w_matrix(FILE *out, const void *c)
     return rad_export_matrix_market(out, r->res.F, r->res.mesh.nelements, comment);
 }
 
+static int w_elements_npy(FILE *out, const void *c)
+{
+    const cli_run *r = c;
+    return rad_export_elements_npy(out, &r->res.mesh, r->res.B);
+}
+
+static int w_matrix_npy(FILE *out, const void *c)
+{
+    const cli_run *r = c;
+    return rad_export_matrix_npy(out, r->res.F, r->res.mesh.nelements);
+}
+
 static void run_info(const cli_run *r, rad_run_info *in)
 {
     const rad_result *res = &r->res;
@@ -214,10 +226,13 @@ int cli_run_outputs(const cli_run *run, int done, cli_output *o)
     const cli_solve *s = run->s;
     const int ok = !done || run->status == RAD_OK;
     int n = 0;
+    /* a name ending in .npy asks for NumPy's binary format */
     if (ok && s->elements)
-        o[n++] = (cli_output){s->elements, w_elements, run};
+        o[n++] = (cli_output){s->elements,
+                              rad_export_is_npy(s->elements) ? w_elements_npy : w_elements, run};
     if (ok && s->form_factors)
-        o[n++] = (cli_output){s->form_factors, w_matrix, run};
+        o[n++] = (cli_output){s->form_factors,
+                              rad_export_is_npy(s->form_factors) ? w_matrix_npy : w_matrix, run};
     if (s->trace && (ok || run->status == RAD_ERR_NOCONV)) /* it says why */
         o[n++] = (cli_output){s->trace, w_trace, run};
     if (s->report && (!done || run->res.ff_done))

@@ -24,6 +24,7 @@
 #include <time.h>
 
 #include "cli.h"
+#include "radiosity/accuracy.h"
 #include "lapack.h"
 #include "plotxy.h"
 
@@ -211,10 +212,10 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
         return 1;
     }
     const size_t ne = (size_t)out->mesh.nelements;
-    double need = rad_solve_bytes((int)ne, 0), have = rad_memory_available();
-    if (have > 0 && need > have) {
-        cli_error("mesh %dx%d: %zu elements need %.0f MiB, %.0f MiB available", n, n, ne,
-                  need / 1048576, have / 1048576);
+    char what[64];
+    snprintf(what, sizeof what, "mesh %dx%d: %zu elements", n, n, ne);
+    if (rad_memory_check(rad_solve_bytes((int)ne, 0), what, NULL, &err) != RAD_OK) {
+        cli_error_rec(&err);
         rad_mesh_free(&out->mesh);
         return 1;
     }
@@ -259,74 +260,6 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
     *t_ff = median(tf, nf);
     *t_solve = median(ts, ns);
     return 0;
-}
-
-/* Closed form: one material everywhere and a closed scene. */
-static int furnace_truth(const rad_scene *s, double out[RAD_BANDS])
-{
-    if (s->nmaterials < 1)
-        return 0;
-    for (int k = 1; k < s->nsurfaces; k++)
-        if (s->surfaces[k].material != s->surfaces[0].material)
-            return 0;
-    const rad_material *m = &s->materials[s->surfaces[0].material];
-    for (int b = 0; b < RAD_BANDS; b++) {
-        if (!(m->reflect[b] < 1))
-            return 0;
-        out[b] = m->emit[b] / (1 - m->reflect[b]);
-    }
-    return 1;
-}
-
-static int is_closed(rad_scene *s)
-{
-    solution t;
-    rad_ff_options o;
-    double a, b;
-    rad_ff_options_init(&o);
-    o.accuracy = RAD_ACCURACY_REFERENCE;
-    if (run_one(s, 1, &o, RAD_SOLVER_GAUSS, &t, &a, &b))
-        return 0;
-    /* closed iff the reference row sums are 1: recompute cheaply */
-    const int n = t.mesh.nelements;
-    double *F = malloc(sizeof *F * (size_t)n * n);
-    rad_error err;
-    int closed = F && rad_ff_matrix(&t.mesh, &o, F, NULL, NULL, &err) == RAD_OK;
-    for (int i = 0; closed && i < n; i++) {
-        double r = 0;
-        for (int j = 0; j < n; j++)
-            r += F[i + (size_t)j * n];
-        closed = fabs(r - 1) < 1e-8;
-    }
-    free(F);
-    free(t.B);
-    rad_mesh_free(&t.mesh);
-    return closed;
-}
-
-/* Error of solution c against truth t (same scene, finer or equal mesh). */
-static void compare(const solution *c, const solution *t, const double *closed, double *rms,
-                    double *maxerr)
-{
-    double s2 = 0, area = 0;
-    *maxerr = 0;
-    const rad_mesh *mt = t ? &t->mesh : &c->mesh;
-    const int nt = mt->nelements, nc = c->mesh.nelements;
-    for (int f = 0; f < nt; f++) {
-        const rad_element *el = &mt->elements[f];
-        const int s = el->surface;
-        int ci = (int)floor((el->gi + 0.5) * c->mesh.surface_n[s] / mt->surface_n[s]);
-        int cj = (int)floor((el->gj + 0.5) * c->mesh.surface_m[s] / mt->surface_m[s]);
-        int e = c->mesh.surface_first[s] + cj * c->mesh.surface_n[s] + ci;
-        for (int b = 0; b < RAD_BANDS; b++) {
-            double truth = closed ? closed[b] : t->B[f + (size_t)b * nt];
-            double d = c->B[e + (size_t)b * nc] - truth;
-            s2 += el->area * d * d;
-            *maxerr = fmax(*maxerr, fabs(d));
-        }
-        area += el->area;
-    }
-    *rms = sqrt(s2 / (area * RAD_BANDS));
 }
 
 typedef struct row {
@@ -413,7 +346,14 @@ int cmd_sweep(int argc, char **argv)
     if (cli_outputs_check(outs, 2) || cli_load_scene(argv[optind], &a.common, &scene))
         return 1;
     double closed[RAD_BANDS];
-    int have_closed = furnace_truth(&scene, closed) && is_closed(&scene);
+    int have_closed = 0;
+    rad_error err;
+    if (rad_furnace_radiosity(&scene, closed) &&
+        rad_scene_closed(&scene, 1e-8, &have_closed, NULL, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        rad_scene_free(&scene);
+        return 1;
+    }
     solution truth = {0};
     int finest = a.truth_mesh;
     for (int k = 0; k < a.nmeshes; k++)
@@ -446,8 +386,8 @@ int cmd_sweep(int argc, char **argv)
                 w->elements = sol.mesh.nelements;
                 w->acc = a.acc[i];
                 w->solver = a.solvers[j];
-                compare(&sol, have_closed ? NULL : &truth, have_closed ? closed : NULL, &w->rms,
-                        &w->max);
+                rad_solution_error(&sol.mesh, sol.B, have_closed ? NULL : &truth.mesh,
+                                   truth.B, closed, &w->rms, &w->max);
                 if (!a.common.quiet)
                     fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n",
                             w->mesh, w->mesh, acc_names[w->acc], solver_names[w->solver],

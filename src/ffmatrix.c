@@ -10,6 +10,17 @@
  * has n-1-i pairs); each thread owns its clipping scratch.  The work is cut
  * into blocks of rows so that the progress callback runs between blocks,
  * on the calling thread.
+ *
+ * Form factors are dimensionless: a scene and the same scene scaled by any
+ * factor and moved anywhere have the same F (Goral et al. 1984, eq. 2 has
+ * lengths only in ratios).  The kernel's tolerances and the squares and
+ * logarithms it takes are those of a scene of size about 1, so everything
+ * here works on a private copy of the geometry shifted exactly and scaled
+ * by a power of two into [-1, 1]^3 (rad_mesh_normalized, mesh.h): F and its
+ * error estimates are then those of the unit-size scene at every scale (two
+ * polygons of side 1e-300 or 1e300 alike; a mesh at any scale whose areas
+ * rad_mesh_build accepts), and the caller's mesh (areas, centroids: the
+ * user's units) is left alone.
  */
 #include <config.h>
 
@@ -24,6 +35,7 @@
 #endif
 
 #include "formfactor.h"
+#include "mesh.h"
 #include "occlusion.h"
 #include "radiosity.h"
 #include "status.h"
@@ -70,20 +82,42 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     ff_poly_lengths(poly);
 }
 
+/* The two polygons in the frame of their common bounding box (mesh.h):
+ * out[0..na) is a, out[na..na+nb) is b.  -1 if the box is not finite. */
+static int polygons_normalized(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+                               rad_vec3 *out)
+{
+    rad_vec3 alo, ahi, blo, bhi;
+    rad_frame fr;
+    v3_bounds(a, na, &alo, &ahi);
+    v3_bounds(b, nb, &blo, &bhi);
+    if (rad_frame_fit(&fr, v3(fmin(alo.x, blo.x), fmin(alo.y, blo.y), fmin(alo.z, blo.z)),
+                      v3(fmax(ahi.x, bhi.x), fmax(ahi.y, bhi.y), fmax(ahi.z, bhi.z))) != 0)
+        return -1;
+    for (int k = 0; k < na; k++)
+        out[k] = rad_frame_apply(&fr, a[k]);
+    for (int k = 0; k < nb; k++)
+        out[na + k] = rad_frame_apply(&fr, b[k]);
+    return 0;
+}
+
 double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
                        const rad_ff_options *opt, double *errest)
 {
     rad_ff_poly pa, pb;
     rad_ff_scratch w;
     double s;
+    const size_t nab = (size_t)na + (size_t)nb;
     rad_ff_edge *ea = malloc(sizeof *ea * (size_t)na), *eb = malloc(sizeof *eb * (size_t)nb);
-    if (!ea || !eb) {
+    rad_vec3 *v = malloc(sizeof *v * nab);
+    if (!ea || !eb || !v || polygons_normalized(a, na, b, nb, v) != 0) {
         free(ea);
         free(eb);
+        free(v);
         return NAN;
     }
-    rad_ff_poly_make(&pa, a, na, ea);
-    rad_ff_poly_make(&pb, b, nb, eb);
+    rad_ff_poly_make(&pa, v, na, ea);
+    rad_ff_poly_make(&pb, v + na, nb, eb);
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
@@ -91,6 +125,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     rad_ff_scratch_free(&w);
     free(ea);
     free(eb);
+    free(v);
     return f;
 }
 
@@ -208,9 +243,30 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     return rad_ff_matrix_occ(m, opt, RAD_OCC_AUTO, F, errest, stats, NULL, err);
 }
 
+static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
+                                 rad_occ_mode mode, double *F, double *errest,
+                                 rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err);
+
 rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_occ_mode mode,
                              double *F, double *errest, rad_ff_stats *stats,
                              rad_occ_stats *vstats, rad_error *err)
+{
+    rad_mesh unit;
+    if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
+        return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
+                        RAD_GAUSS_MAX, opt->quadrature);
+    rad_status st = rad_mesh_normalized(m, &unit, NULL, err);
+    if (st != RAD_OK)
+        return st;
+    st = ff_matrix_unit(&unit, opt, mode, F, errest, stats, vstats, err);
+    rad_mesh_free(&unit);
+    return st;
+}
+
+/* The fill itself, on a mesh of size about 1 (rad_mesh_normalized). */
+static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
+                                 rad_occ_mode mode, double *F, double *errest,
+                                 rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err)
 {
     const int n = m->nelements;
     rad_ff_poly *polys = NULL;
@@ -218,9 +274,6 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
     rad_ff_edge *edges = NULL;
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0;
-    if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
-        return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
-                        RAD_GAUSS_MAX, opt->quadrature);
     if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);

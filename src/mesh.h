@@ -15,4 +15,27 @@
 rad_status rad_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
                           size_t *nindex);
 
+/* A frame that makes geometry scale-free: p -> (p - shift) 2^-exponent
+ * maps a bounding box into [-1, 1]^3 exactly (the shift is 0, or an end of
+ * the box that lies within a factor 2 of all of it, so the subtraction is
+ * exact by Sterbenz's lemma; the scaling is by a power of two), barring
+ * subnormal results. */
+typedef struct rad_frame {
+    rad_vec3 shift;
+    int exponent;
+} rad_frame;
+
+/* The frame of the box [lo, hi]; -1 (and the identity) when the box is a
+ * point or not finite. */
+int rad_frame_fit(rad_frame *frame, rad_vec3 lo, rad_vec3 hi);
+rad_vec3 rad_frame_apply(const rad_frame *frame, rad_vec3 p);
+
+/* A private copy of the mesh's geometry in the frame of its bounding box
+ * (frame may be NULL): the same elements, surfaces, normals and vertex
+ * lists; vertices, areas and centroids in the frame.  Form factors and
+ * visibility computed on it are those of the mesh at any scale.  Free it
+ * with rad_mesh_free. */
+rad_status rad_mesh_normalized(const rad_mesh *mesh, rad_mesh *out, rad_frame *frame,
+                               rad_error *err);
+
 #endif /* RAD_MESH_H */

@@ -65,17 +65,17 @@
  * The race of figure 7 (progressive.h) runs the gathering method of
  * Gauss-Seidel, one element row per step, B_i <- E_i + rho_i sum_j F_ij B_j
  * for i = step mod n, beside shooting in file order, sorted shooting, and
- * sorted shooting shown with the ambient term; rad_race_plot draws the
- * four error curves on a log axis (cairo, written through plot.c).
+ * sorted shooting shown with the ambient term; the command draws the four
+ * error curves through the plotting module (plotxy.c).
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <cairo.h>
 
 #include "plot.h"
 #include "progressive.h"
@@ -305,7 +305,18 @@ static void ambient_display(int n, const double *B, const double *rho, const dou
         }
 }
 
-/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be NULL. */
+/* Element i's difference from the reference in band b (eq. 13-14). */
+static double rms_diff(int n, int i, int b, const double *rho, const double *amb,
+                       const double *B, const double *Bref)
+{
+    size_t k = (size_t)i + (size_t)b * n;
+    return B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
+}
+
+/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be
+ * NULL.  Weights A_i / sum A and differences over their largest |d|, so
+ * that neither A d^2 nor d^2 overflows or underflows where the RMS itself
+ * is a double (as hypot; areas of 1e300, radiosities of 1e300). */
 static double rms_error(int n, const double *area, double total_area, const double *rho,
                         const double *amb, const double *B, const double *Bref)
 {
@@ -313,13 +324,16 @@ static double rms_error(int n, const double *area, double total_area, const doub
     if (!(total_area > 0))
         return 0;
     for (int b = 0; b < NB; b++) {
-        double s = 0;
+        double dmax = 0, s = 0;
+        for (int i = 0; i < n; i++)
+            dmax = fmax(dmax, fabs(rms_diff(n, i, b, rho, amb, B, Bref)));
+        if (!(dmax > 0))
+            continue;
         for (int i = 0; i < n; i++) {
-            size_t k = (size_t)i + (size_t)b * n;
-            double d = B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
-            s += area[i] * d * d;
+            double d = rms_diff(n, i, b, rho, amb, B, Bref) / dmax;
+            s += area[i] / total_area * d * d;
         }
-        mean += sqrt(s / total_area);
+        mean += dmax * sqrt(s);
     }
     return mean / NB;
 }
@@ -464,6 +478,14 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
         r.emitted[b] = 0;
         for (int i = 0; i < n; i++)
             r.emitted[b] += r.area[i] * fabs(E[(size_t)i + (size_t)b * n]);
+        if (!isfinite(r.emitted[b])) { /* U <= tol * inf would stop at once */
+            free(r.area);
+            return rad_fail(err, RAD_ERR_INVALID,
+                            "the emitted power sum A_i E_i exceeds the largest double (%.3g): "
+                            "progressive refinement with a trace measures power in the "
+                            "scene's units; scale the emission or the scene down",
+                            DBL_MAX);
+        }
     }
     st = shooter_init(&r.sh, m, F, rho, E, r.area, opt->patches != 0, opt->sort != 0, B, err);
     if (st) {
@@ -632,210 +654,4 @@ done:
     free(disp);
     free(area);
     return st;
-}
-
-/* ---- the plot ----------------------------------------------------------- */
-
-#define FONT "DejaVu Sans"
-#define LEFT 80.0
-#define RIGHT 24.0
-#define TOP 40.0
-#define BOTTOM 56.0
-
-static const double race_colour[RAD_RACE_METHODS][3] = {
-    {0.45, 0.45, 0.45}, {0.0, 0.35, 0.85}, {0.0, 0.6, 0.2}, {0.85, 0.0, 0.0}};
-static const char *const race_label[RAD_RACE_METHODS] = {
-    "gathering (Gauss-Seidel)", "shooting, file order", "shooting, sorted",
-    "sorted + ambient"};
-
-/* The frame: x in steps, y in log10 of the error, and the page box. */
-typedef struct lframe {
-    double x1;                  /* x from 0 to x1 */
-    double xstep;
-    int d0, d1, dstep;          /* decades 10^d0 .. 10^d1 */
-    double left, right, top, bottom;
-} lframe;
-
-static double nice_step(double range, int target)
-{
-    double raw = range / target;
-    double mag = pow(10.0, floor(log10(raw)));
-    double r = raw / mag;
-    return (r < 1.5 ? 1 : r < 3 ? 2 : r < 7 ? 5 : 10) * mag;
-}
-
-static lframe race_frame(const double *rms, int steps, int width, int height)
-{
-    lframe fr;
-    double lo = HUGE_VAL, hi = 0;
-    for (size_t k = 0; k < (size_t)(steps + 1) * RAD_RACE_METHODS; k++)
-        if (isfinite(rms[k]) && rms[k] > 0) {
-            lo = fmin(lo, rms[k]);
-            hi = fmax(hi, rms[k]);
-        }
-    if (!(hi > 0)) {
-        lo = 1e-3;
-        hi = 1;
-    }
-    fr.d0 = (int)floor(log10(lo));
-    fr.d1 = (int)ceil(log10(hi));
-    if (fr.d1 <= fr.d0)
-        fr.d1 = fr.d0 + 1;
-    fr.dstep = (fr.d1 - fr.d0 + 7) / 8;
-    fr.x1 = steps;
-    fr.xstep = fmax(1.0, nice_step(fr.x1, 8));
-    fr.left = LEFT;
-    fr.right = width - RIGHT;
-    fr.top = TOP;
-    fr.bottom = height - BOTTOM;
-    return fr;
-}
-
-static double race_px(const lframe *fr, double x)
-{
-    return fr->left + x / fr->x1 * (fr->right - fr->left);
-}
-
-static double race_py(const lframe *fr, double v)
-{
-    return fr->bottom - (log10(v) - fr->d0) / (fr->d1 - fr->d0) * (fr->bottom - fr->top);
-}
-
-static void show_text(cairo_t *cr, double x, double y, double align, const char *s)
-{
-    cairo_text_extents_t te;
-    cairo_text_extents(cr, s, &te);
-    cairo_move_to(cr, x - align * te.x_advance, y);
-    cairo_show_text(cr, s);
-}
-
-static void grid_line(cairo_t *cr, double x0, double y0, double x1, double y1)
-{
-    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, x0, y0);
-    cairo_line_to(cr, x1, y1);
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-}
-
-static void race_axes(cairo_t *cr, const lframe *fr)
-{
-    char buf[32];
-    cairo_set_font_size(cr, 12);
-    cairo_set_line_width(cr, 1);
-    for (int d = fr->d0; d <= fr->d1; d += fr->dstep) {
-        double py = floor(race_py(fr, pow(10.0, d))) + 0.5;
-        grid_line(cr, fr->left, py, fr->right, py);
-        cairo_move_to(cr, fr->left - 5, py);
-        cairo_line_to(cr, fr->left, py);
-        cairo_stroke(cr);
-        snprintf(buf, sizeof buf, "1e%d", d);
-        show_text(cr, fr->left - 8, py + 4, 1, buf);
-    }
-    for (long k = 0; k * fr->xstep <= fr->x1 * (1 + 1e-12); k++) {
-        double px = floor(race_px(fr, k * fr->xstep)) + 0.5;
-        grid_line(cr, px, fr->top, px, fr->bottom);
-        cairo_move_to(cr, px, fr->bottom);
-        cairo_line_to(cr, px, fr->bottom + 5);
-        cairo_stroke(cr);
-        snprintf(buf, sizeof buf, "%.6g", k * fr->xstep);
-        show_text(cr, px, fr->bottom + 18, 0.5, buf);
-    }
-    cairo_rectangle(cr, floor(fr->left) + 0.5, floor(fr->top) + 0.5,
-                    floor(fr->right) - floor(fr->left), floor(fr->bottom) - floor(fr->top));
-    cairo_stroke(cr);
-}
-
-static void race_labels(cairo_t *cr, const lframe *fr, int width, const char *title)
-{
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_font_size(cr, 14);
-    show_text(cr, 0.5 * (fr->left + fr->right), fr->bottom + 42, 0.5,
-              "step (element updates or shots)");
-    cairo_save(cr);
-    cairo_translate(cr, 20, 0.5 * (fr->top + fr->bottom));
-    cairo_rotate(cr, -0.5 * 3.14159265358979323846);
-    show_text(cr, 0, 0, 0.5, "area-weighted RMS error");
-    cairo_restore(cr);
-    if (title && *title) {
-        cairo_set_font_size(cr, 15);
-        show_text(cr, 0.5 * width, 26, 0.5, title);
-    }
-}
-
-static void race_curves(cairo_t *cr, const lframe *fr, const double *rms, int steps)
-{
-    /* a few points per pixel column are enough */
-    const int stride = (int)fmax(1, floor(steps / (2 * (fr->right - fr->left))));
-    cairo_save(cr);
-    cairo_rectangle(cr, fr->left, fr->top, fr->right - fr->left, fr->bottom - fr->top);
-    cairo_clip(cr);
-    cairo_set_line_width(cr, 1.6);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    for (int m = 0; m < RAD_RACE_METHODS; m++) {
-        const double *y = rms + (size_t)m * (size_t)(steps + 1);
-        int pen = 0;
-        cairo_set_source_rgb(cr, race_colour[m][0], race_colour[m][1], race_colour[m][2]);
-        for (int k = 0;; k = k + stride < steps ? k + stride : steps) {
-            if (isfinite(y[k]) && y[k] > 0) {
-                if (pen)
-                    cairo_line_to(cr, race_px(fr, k), race_py(fr, y[k]));
-                else
-                    cairo_move_to(cr, race_px(fr, k), race_py(fr, y[k]));
-                pen = 1;
-            } else { /* nothing to draw on a log axis */
-                pen = 0;
-            }
-            if (k == steps)
-                break;
-        }
-        cairo_stroke(cr);
-    }
-    cairo_restore(cr);
-}
-
-static void race_legend(cairo_t *cr, const lframe *fr)
-{
-    const double w = 200, h = 18.0 * RAD_RACE_METHODS + 8;
-    const double x = fr->right - w - 8, y = fr->top + 8;
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_rectangle(cr, x, y, w, h);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
-    cairo_set_line_width(cr, 1);
-    cairo_stroke(cr);
-    cairo_set_font_size(cr, 12);
-    cairo_set_line_width(cr, 2);
-    for (int m = 0; m < RAD_RACE_METHODS; m++) {
-        double ly = y + 14 + 18.0 * m;
-        cairo_set_source_rgb(cr, race_colour[m][0], race_colour[m][1], race_colour[m][2]);
-        cairo_move_to(cr, x + 8, ly - 4);
-        cairo_line_to(cr, x + 30, ly - 4);
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        show_text(cr, x + 36, ly, 0, race_label[m]);
-    }
-}
-
-rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
-                         int height, FILE *out, rad_error *err)
-{
-    if (steps < 1)
-        return rad_fail(err, RAD_ERR_INVALID, "a race plot needs at least one step");
-    if (width < 300 || height < 200 || width > 16384 || height > 16384)
-        return rad_fail(err, RAD_ERR_INVALID,
-                        "plot size %d x %d is outside 300 x 200 to 16384 x 16384", width,
-                        height);
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-    cairo_t *cr = cairo_create(s);
-    const lframe fr = race_frame(rms, steps, width, height);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_select_font_face(cr, FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    race_axes(cr, &fr);
-    race_curves(cr, &fr, rms, steps);
-    race_legend(cr, &fr);
-    race_labels(cr, &fr, width, title);
-    return rad_plot_finish(cr, s, out, err);
 }

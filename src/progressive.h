@@ -12,8 +12,6 @@
 #ifndef RAD_PROGRESSIVE_H
 #define RAD_PROGRESSIVE_H
 
-#include <stdio.h>
-
 #include "radiosity.h"
 
 /* The four methods of the race, in the order of the table's columns. */
@@ -55,9 +53,5 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
                         const rad_race_options *opt, double *rms, int *reached,
                         rad_error *err);
 
-/* Plot the race (rms as rad_race_run leaves it) as a PNG of width x height
- * pixels to out: log-scale error axis, one labelled curve per method. */
-rad_status rad_race_plot(const double *rms, int steps, const char *title, int width,
-                         int height, FILE *out, rad_error *err);
 
 #endif /* RAD_PROGRESSIVE_H */

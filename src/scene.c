@@ -196,6 +196,8 @@ rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
     rad_vec3 lo, hi;
     v3_bounds(p, n, &lo, &hi);
     double diam = v3_norm(v3_sub(hi, lo));
+    if (diam > 0 && !(diam >= 0x1p-510 && diam <= 0x1p510)) /* areas: normal doubles (mesh.c) */
+        return fail_at(&c, "%s is %.3g across, outside the sizes this program accepts (%.3g to %.3g, so that areas are normal doubles); rescale the scene", what, diam, 0x1p-510, 0x1p510);
     if (!(diam > 0) || !isfinite(diam))
         return fail_at(&c, "%s has zero area (all vertices coincide)", what);
     for (int k = 0; k < n; k++)

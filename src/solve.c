@@ -30,6 +30,16 @@
  * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
  * than about 6 digits of B could be trusted (round-off 1e-16 times the
  * condition number 1e10).
+ *
+ * Range.  The system is linear in E and the solvers weigh by area only in
+ * ratios, so E is scaled by a power of two (exact) to a largest value near
+ * 1 before solving, and the areas to a largest value near 1, and B scaled
+ * back at the end: an emission of 1e308 or 1e-308 solves as one of 1
+ * would, and nothing overflows on the way.  Only B itself may not exist
+ * in doubles (B = E / (1 - rho) > 1.8e308); then rad_solve refuses with
+ * RAD_ERR_INVALID, naming the limit, rather than return an infinity.
+ * Progressive refinement with a trace gets E as it is (the trace writes
+ * powers and errors in the user's units) and B is scaled after it.
  */
 #include <config.h>
 
@@ -230,12 +240,12 @@ static rad_status solve_gauss(int n, const double *F, const double *rho, const d
 /* ---- iterations ----------------------------------------------------------- */
 
 /* Does F obey A_i F_ij = A_j F_ji to round-off? */
-static int reciprocal(int n, const double *F, const rad_mesh *m)
+static int reciprocal(int n, const double *F, const double *area)
 {
     for (int j = 0; j < n; j++)
         for (int i = j + 1; i < n; i++) {
-            double a = m->elements[i].area * F[(size_t)i + (size_t)j * n];
-            double b = m->elements[j].area * F[(size_t)j + (size_t)i * n];
+            double a = area[i] * F[(size_t)i + (size_t)j * n];
+            double b = area[j] * F[(size_t)j + (size_t)i * n];
             if (fabs(a - b) > 1e-12 * fmax(fabs(a), fabs(b)))
                 return 0;
         }
@@ -272,25 +282,22 @@ static double gs_sweep(int n, const double *F, const double *rho, const double *
     return change;
 }
 
-static rad_status solve_iterative(const rad_mesh *m, int n, const double *F, const double *rho,
-                                  const double *E, double *B, const rad_solve_options *opt,
+static rad_status solve_iterative(int n, const double *F, const double *rho, const double *E,
+                                  const double *area, double *B, const rad_solve_options *opt,
                                   rad_solve_report *rep, rad_error *err)
 {
     const size_t n3 = (size_t)n * RAD_BANDS;
     double *H = malloc(sizeof *H * n3), *W = malloc(sizeof *W * n3);
-    double *area = malloc(sizeof *area * (size_t)n);
     const int gs = opt->solver == RAD_SOLVER_GAUSS_SEIDEL && opt->bounces < 0;
     const int limit = opt->bounces >= 0 ? opt->bounces : opt->max_iterations;
     double change = 0, prev = 0, rate = 0;
     int it;
     rad_status st = RAD_OK;
-    if (!H || !W || !area) {
+    if (!H || !W) {
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
         goto done;
     }
-    for (int i = 0; i < n; i++)
-        area[i] = m->elements[i].area;
-    const int recip = gs && reciprocal(n, F, m);
+    const int recip = gs && reciprocal(n, F, area);
     memcpy(B, E, sizeof *B * n3); /* B_0 = E */
     for (size_t k = 0; k < n3; k++)
         W[k] = area[k % (size_t)n] * B[k];
@@ -336,15 +343,18 @@ static rad_status solve_iterative(const rad_mesh *m, int n, const double *F, con
 done:
     free(H);
     free(W);
-    free(area);
     return st;
 }
 
 /* ---- diagnostics ---------------------------------------------------------- */
 
-static rad_status diagnose(const rad_mesh *m, int n, const double *F, const double *rho,
-                           const double *E, const double *B, rad_solve_report *rep,
-                           rad_error *err)
+/* The report's powers are sum A_i x_i in the user's units: the sums are
+ * taken with the scaled areas and E (2^-ka, 2^-ke) and scaled back, so
+ * they are inf only when the power itself exceeds the double range; the
+ * balance, a ratio, is computed before that. */
+static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
+                           const double *B, const double *area, int ka, int ke,
+                           rad_solve_report *rep, rad_error *err)
 {
     const size_t n3 = (size_t)n * RAD_BANDS;
     double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
@@ -368,20 +378,60 @@ static rad_status diagnose(const rad_mesh *m, int n, const double *F, const doub
         double em = 0, ab = 0, es = 0;
         for (int i = 0; i < n; i++) {
             size_t k = (size_t)i + (size_t)b * n;
-            double a = m->elements[i].area;
+            double a = area[i];
             res = fmax(res, fabs(B[k] - rho[k] * H[k] - E[k]));
             em += a * E[k];
             ab += a * (1 - rho[k]) * H[k];
             es += a * B[k] * (1 - rs[i]);
         }
-        rep->emitted[b] = em;
-        rep->absorbed[b] = ab;
-        rep->escaped[b] = es;
-        rep->balance[b] = em > 0 ? (em - ab - es) / em : em - ab - es;
+        rep->emitted[b] = ldexp(em, ka + ke);
+        rep->absorbed[b] = ldexp(ab, ka + ke);
+        rep->escaped[b] = ldexp(es, ka + ke);
+        rep->balance[b] = em > 0 ? (em - ab - es) / em : ldexp(em - ab - es, ka + ke);
     }
     rep->residual = emax > 0 ? res / emax : res;
     free(H);
     free(rs);
+    return RAD_OK;
+}
+
+/* 2^e with 2^(e-1) <= max |x_k| < 2^e (0 for all zeros or a non-finite
+ * maximum): the exponent that scales x to a largest value in [1/2, 1). */
+static int scale_exponent(const double *x, size_t n)
+{
+    int e = 0;
+    const double m = max_abs(x, n);
+    if (m > 0 && isfinite(m))
+        frexp(m, &e);
+    return e;
+}
+
+static void scale_by(double *x, size_t n, int e)
+{
+    for (size_t k = 0; k < n; k++)
+        x[k] = ldexp(x[k], e);
+}
+
+/* B = B' 2^ke, or RAD_ERR_INVALID when that leaves the double range (or B'
+ * is not finite: an overflow inside a solver that got E unscaled). */
+static rad_status unscale_b(double *B, size_t n3, int ke, rad_error *err)
+{
+    const double m = max_abs(B, n3);
+    for (size_t k = 0; k < n3; k++)
+        if (!isfinite(B[k]))
+            return rad_fail(err, RAD_ERR_INVALID,
+                            "the radiosity overflows: it exceeds the largest double (%.3g); "
+                            "scale the emission down",
+                            DBL_MAX);
+    if (ke > 0 && !(m <= ldexp(DBL_MAX, -ke))) {
+        /* m 2^ke as d 10^p, for the message */
+        const double l = log10(m) + ke * log10(2.0), p = floor(l);
+        return rad_fail(err, RAD_ERR_INVALID,
+                        "the radiosity would reach %.3ge%+.0f, beyond the largest double "
+                        "(%.3g); scale the emission down by a factor of %.3g at least",
+                        pow(10, l - p), p, DBL_MAX, pow(10, l - log10(DBL_MAX)));
+    }
+    scale_by(B, n3, ke);
     return RAD_OK;
 }
 
@@ -404,31 +454,52 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     if (opt->tolerance <= 0 || opt->max_iterations < 1)
         return rad_fail(err, RAD_ERR_INVALID, "tolerance must be positive and max-iterations at least 1");
     double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
-    if (!rho || !E) {
+    double *area = malloc(sizeof *area * (size_t)(n ? n : 1));
+    if (!rho || !E || !area) {
         free(rho);
         free(E);
+        free(area);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     }
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
+        area[i] = m->elements[i].area;
         for (int b = 0; b < RAD_BANDS; b++) {
             rho[(size_t)i + (size_t)b * n] = m->elements[i].reflect[b];
             E[(size_t)i + (size_t)b * n] = m->elements[i].emit[b];
         }
+    }
+    /* E and the areas to a largest value in [1/2, 1), exactly (see Range);
+     * a traced progressive run shoots the user's E and scales after */
+    const int progressive = opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0;
+    const int ke = scale_exponent(E, n3), ka = scale_exponent(area, (size_t)n);
+    const int late = progressive && opt->on_shot;
+    scale_by(area, (size_t)n, -ka);
+    if (!late)
+        scale_by(E, n3, -ke);
     if (opt->solver == RAD_SOLVER_GAUSS && opt->bounces < 0)
         st = solve_gauss(n, F, rho, E, B, opt, rep, err);
-    else if (opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0)
+    else if (progressive)
         st = rad_solve_progressive(m, F, rho, E, opt, B, rep, err);
     else
-        st = solve_iterative(m, n, F, rho, E, B, opt, rep, err);
+        st = solve_iterative(n, F, rho, E, area, B, opt, rep, err);
+    if (late) {
+        scale_by(E, n3, -ke);
+        scale_by(B, n3, -ke);
+    }
     if (st == RAD_OK || st == RAD_ERR_NOCONV) {
         rad_error derr;
-        if (diagnose(m, n, F, rho, E, B, rep, &derr) != RAD_OK && st == RAD_OK) {
+        if (diagnose(n, F, rho, E, B, area, ka, ke, rep, &derr) != RAD_OK && st == RAD_OK) {
             st = derr.status;
             if (err)
                 *err = derr;
         }
     }
+    if (st == RAD_OK)
+        st = unscale_b(B, n3, ke, err);
+    else if (st == RAD_ERR_NOCONV) /* the last iterate, for the caller to inspect */
+        scale_by(B, n3, ke);
     free(rho);
     free(E);
+    free(area);
     return st;
 }

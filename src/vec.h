@@ -22,7 +22,6 @@ static inline rad_vec3 v3_cross(rad_vec3 a, rad_vec3 b)
 {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-static inline double v3_norm(rad_vec3 a) { return sqrt(v3_dot(a, a)); }
 static inline double v3_maxabs(rad_vec3 a)
 {
     /* comparisons, not fmax: this sits in the pair kernel's hot path and
@@ -30,6 +29,24 @@ static inline double v3_maxabs(rad_vec3 a)
     double x = fabs(a.x), y = fabs(a.y), z = fabs(a.z);
     double m = x > y ? x : y;
     return m > z ? m : z;
+}
+/* Euclidean length, finite for every finite vector: the squares of
+ * components beyond 1.3e154 overflow and those below 1.5e-154 underflow
+ * (a square of side 1e-150 has a Newell vector 2e-300 long, whose square
+ * is 0 in doubles), so
+ * outside the range where |a|^2 is a normal double the vector is first
+ * scaled by its largest component (as hypot does; Blue 1978, ACM TOMS 4).
+ * The common case costs two comparisons. */
+static inline double v3_norm(rad_vec3 a)
+{
+    const double d = v3_dot(a, a);
+    if (d >= 0x1p-1000 && d <= 0x1p1000)
+        return sqrt(d);
+    const double m = v3_maxabs(a);
+    if (!(m > 0) || isinf(m))
+        return d == d ? m : d; /* 0, inf, or NaN as it is */
+    const rad_vec3 u = v3(a.x / m, a.y / m, a.z / m);
+    return m * sqrt(v3_dot(u, u));
 }
 /* Bounding box of p[0..n), n >= 1. */
 static inline void v3_bounds(const rad_vec3 *p, int n, rad_vec3 *lo, rad_vec3 *hi)

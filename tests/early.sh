@@ -53,6 +53,11 @@ timeout 20 "$RADIOSITY" solve --mesh 4000x4000 "$cube" 2> "$work/err"; rc=$?
 ok $? "--mesh 4000x4000: refused with both numbers ($(head -c 200 "$work/err"))"
 timeout 20 "$RADIOSITY" render --mesh 4000x4000 -o "$work/m.png" "$cube" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q 'MiB are available' "$work/err"; ok $? "render --mesh 4000x4000: refused"
+timeout 20 "$RADIOSITY" formfactor --mesh 4000x4000 -o "$work/ff.tsv" "$cube" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q 'MiB, but only [0-9]* MiB are available' "$work/err" && [ ! -e "$work/ff.tsv" ]
+ok $? "formfactor --mesh 4000x4000: refused with both numbers, before meshing"
+"$RADIOSITY" formfactor --mesh 12x12 -o "$work/missing/ff.tsv" "$cube" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q 'missing/ff.tsv' "$work/err"; ok $? "formfactor -o in a missing directory: exit 1"
 # a process limit counts too (ulimit -v: address space, KiB)
 if [ -n "${RADIOSITY_SANITIZE-}" ]; then
   # ASan maps terabytes of shadow at start-up: under any ulimit -v or -d
