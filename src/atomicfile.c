@@ -89,11 +89,13 @@ static char *follow_links(const char *path)
     return NULL;
 }
 
+/* The message first: path may be f->user_path, which the abort frees. */
 static rad_status fail_errno(rad_afile *f, rad_error *err, const char *path, int e)
 {
+    rad_status st = rad_fail(err, e == ENOMEM ? RAD_ERR_NOMEM : RAD_ERR_IO, "%s: %s", path,
+                             strerror(e));
     rad_afile_abort(f);
-    return rad_fail(err, e == ENOMEM ? RAD_ERR_NOMEM : RAD_ERR_IO, "%s: %s", path,
-                    strerror(e));
+    return st;
 }
 
 /* Write straight into fd (a descriptor of ours, or one we opened). */

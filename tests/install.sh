@@ -17,7 +17,9 @@ pc=$(find "$stage" -name radiosity.pc | head -n 1)
 [ -n "$pc" ]; ok $? "radiosity.pc is installed"
 export PKG_CONFIG_PATH="$(dirname "$pc")"
 flags=$(pkg-config --cflags --libs radiosity); ok $? "pkg-config --cflags --libs radiosity: $flags"
-${CC:-cc} -o "$work/solve_cube" "$top_srcdir/examples/solve_cube.c" $flags 2> "$work/cc.err"
+# an instrumented library (make check-sanitize) needs its sanitizer runtime
+# linked into the program too, as any user of such a build must
+${CC:-cc} ${RADIOSITY_SANITIZE-} -o "$work/solve_cube" "$top_srcdir/examples/solve_cube.c" $flags 2> "$work/cc.err"
 ok $? "the example builds with pkg-config's flags alone $(head -c 300 "$work/cc.err")"
 libdir=$(pkg-config --variable=libdir radiosity)
 LD_LIBRARY_PATH="$libdir" "$work/solve_cube" "$top_srcdir/data/goral1984-cube.scene" > "$work/out"
