@@ -42,6 +42,10 @@ static void help(void)
                cases[k].what);
     printf("\nOptions:\n"
            "  -h, --help              show this help and exit\n"
+           "\nExamples:\n"
+           "  radiosity analytic parallel-rectangles 1 1 1     (0.19982489569838...)\n"
+           "  radiosity analytic perpendicular-rectangles 1 1 1 (0.20004377607540...)\n"
+           "  radiosity analytic disk-disk 1 1 1e-300\n"
            "\nExit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 

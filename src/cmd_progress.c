@@ -73,6 +73,11 @@ static void help(void)
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
            CLI_COMMON_HELP
            "\n"
+           "Examples:\n"
+           "  radiosity progress --mesh 3x3 data/goral1984-cube.scene --plot race.png\n"
+           "  radiosity progress --patches --mesh 3x3 data/cornell-box.scene -o race.tsv\n"
+           "  radiosity progress --mesh 3x3 --snapshots 24 data/cornell-box.scene\n"
+           "\n"
            "A regular file is written to a temporary beside it and renamed at the end:\n"
            "a failed or interrupted run leaves the old file whole; a device or FIFO is\n"
            "written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"

@@ -377,6 +377,11 @@ static void help(void)
            "                          radiosity, element radiosity); '-' is stdout\n"
            CLI_SOLVE_HELP
            "\n"
+           "Examples:\n"
+           "  radiosity solve data/goral1984-cube.scene --elements B.tsv --report run.json\n"
+           "  radiosity solve --mesh 20x20 --solver cg data/goral1984-cube.scene -o cube.ply\n"
+           "  radiosity solve --accuracy reference --strict data/grey-cube.scene --elements B.npy\n"
+           "\n"
            "Output paths are checked before any work.  A regular file is written to\n"
            "a temporary beside it, and all outputs are renamed together at the end:\n"
            "a failed or interrupted run (SIGINT, SIGTERM, SIGHUP: exit 128 + signal)\n"

@@ -85,6 +85,12 @@ static void help(void)
            "\n"
            "Columns: mesh elements accuracy solver seconds_formfactor seconds_solve\n"
            "seconds_total rms_error max_error truth.\n"
+           "\n"
+           "Examples:\n"
+           "  radiosity sweep --meshes 1,2,4,8 data/furnace.scene\n"
+           "  radiosity sweep --meshes 2,5,10 --accuracies classic,default data/goral1984-cube.scene\n"
+           "  radiosity sweep --meshes 1,2,3,5 --solvers gauss,jacobi --plot sweep.png data/grey-cube.scene\n"
+           "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
