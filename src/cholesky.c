@@ -350,28 +350,21 @@ rad_status rad_solve_cholesky(const rad_mesh *m, const double *F, const double *
                               rad_solve_report *rep, rad_error *err)
 {
     const int n = m->nelements;
-    int done[RAD_BANDS] = {0};
+    int done[RAD_BANDS] = {0}, bands[RAD_BANDS], nb;
     const int lu_only = check_reciprocity(m, F, rep);
     if (lu_only < 0)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    for (int b = 0; b < RAD_BANDS; b++) {
-        int bands[RAD_BANDS], nb = 0, not_pd = 0;
-        if (done[b])
-            continue;
-        for (int c = b; c < RAD_BANDS; c++) /* bands with the same reflectances */
-            if (!done[c] && memcmp(rho + (size_t)b * n, rho + (size_t)c * n,
-                                   sizeof *rho * (size_t)n) == 0) {
-                bands[nb++] = c;
-                done[c] = 1;
-            }
+    while ((nb = rad_next_band_set(n, rho, done, bands)) > 0) {
+        const double *rb = rho + (size_t)bands[0] * n;
+        int not_pd = 0;
         rep->systems++;
         if (opt->progress && opt->progress(opt->progress_user, "solve", rep->systems - 1, RAD_BANDS))
             return rad_fail(err, RAD_ERR_INVALID, "interrupted");
         rad_status st = RAD_ERR_SINGULAR;
         if (!lu_only)
-            st = solve_set(m, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, &not_pd, err);
+            st = solve_set(m, F, rb, E, B, bands, nb, opt, rep, &not_pd, err);
         if (lu_only || not_pd)
-            st = rad_solve_lu(n, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, err);
+            st = rad_solve_lu(n, F, rb, E, B, bands, nb, opt, rep, err);
         if (st)
             return st;
     }

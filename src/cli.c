@@ -188,7 +188,7 @@ typedef struct progress_state {
     double last;
 } progress_state;
 
-static double now_seconds(void)
+double cli_seconds(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
@@ -198,7 +198,7 @@ static double now_seconds(void)
 int cli_progress(void *user, const char *stage, double done, double total)
 {
     progress_state *p = user;
-    double t = now_seconds();
+    double t = cli_seconds();
     if (strncmp(p->stage, stage, sizeof p->stage - 1) != 0) {
         snprintf(p->stage, sizeof p->stage, "%s", stage);
         p->start.tv_sec = (time_t)t;

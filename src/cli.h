@@ -112,6 +112,9 @@ int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx);
  * failure. */
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene);
 
+/* Wall-clock seconds (CLOCK_MONOTONIC), for the summary's timings. */
+double cli_seconds(void);
+
 /* A progress bar with time left on standard error when it is a terminal. */
 int cli_progress(void *user, const char *stage, double done, double total);
 void cli_progress_attach(cli_common *c);

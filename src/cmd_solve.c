@@ -15,17 +15,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "cli.h"
 #include "radiosity/export.h"
-
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 
 void cli_solve_init(cli_solve *s)
@@ -137,10 +129,10 @@ int cli_run_load(cli_run *run, cli_solve *s, const char *path)
     memset(run, 0, sizeof *run);
     run->s = s;
     run->status = RAD_OK;
-    double t0 = seconds();
+    double t0 = cli_seconds();
     if (cli_load_scene(path, &s->common, &run->scene))
         return 1;
-    run->t_parse = seconds() - t0;
+    run->t_parse = cli_seconds() - t0;
     return 0;
 }
 
@@ -357,9 +349,9 @@ int cli_run_write(cli_run *run, const cli_output *extra, int n_extra)
     int n = cli_run_outputs(run, 1, o);
     for (int k = 0; k < n_extra && run->status == RAD_OK; k++)
         o[n++] = extra[k];
-    double t0 = seconds();
+    double t0 = cli_seconds();
     int st = cli_outputs_write(o, n);
-    run->t_output = seconds() - t0;
+    run->t_output = cli_seconds() - t0;
     return st;
 }
 

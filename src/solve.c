@@ -206,25 +206,31 @@ done:
     return st;
 }
 
+int rad_next_band_set(int n, const double *rho, int done[RAD_BANDS], int bands[RAD_BANDS])
+{
+    int b = 0, nb = 0;
+    while (b < RAD_BANDS && done[b])
+        b++;
+    for (int c = b; c < RAD_BANDS; c++) /* bands with the same reflectances */
+        if (!done[c] &&
+            memcmp(rho + (size_t)b * n, rho + (size_t)c * n, sizeof *rho * (size_t)n) == 0) {
+            bands[nb++] = c;
+            done[c] = 1;
+        }
+    return nb;
+}
+
 static rad_status solve_gauss(int n, const double *F, const double *rho, const double *E,
                               double *B, const rad_solve_options *opt, rad_solve_report *rep,
                               rad_error *err)
 {
-    int done[RAD_BANDS] = {0};
-    for (int b = 0; b < RAD_BANDS; b++) {
-        int bands[RAD_BANDS], nb = 0;
-        if (done[b])
-            continue;
-        for (int c = b; c < RAD_BANDS; c++) /* bands with the same reflectances */
-            if (!done[c] && memcmp(rho + (size_t)b * n, rho + (size_t)c * n,
-                                   sizeof *rho * (size_t)n) == 0) {
-                bands[nb++] = c;
-                done[c] = 1;
-            }
+    int done[RAD_BANDS] = {0}, bands[RAD_BANDS], nb;
+    while ((nb = rad_next_band_set(n, rho, done, bands)) > 0) {
+        const double *rb = rho + (size_t)bands[0] * n;
         rep->systems++;
         if (opt->progress && opt->progress(opt->progress_user, "solve", rep->systems - 1, RAD_BANDS))
             return rad_fail(err, RAD_ERR_INVALID, "interrupted");
-        rad_status st = rad_solve_lu(n, F, rho + (size_t)b * n, E, B, bands, nb, opt, rep, err);
+        rad_status st = rad_solve_lu(n, F, rb, E, B, bands, nb, opt, rep, err);
         if (st)
             return st;
     }

@@ -12,6 +12,11 @@
 
 #include "radiosity.h"
 
+/* The next set of bands that share one reflectance vector and are not yet
+ * done: their indices in bands[], marked done; returns how many (0 when
+ * every band is done).  One factorisation serves each set (solve.c). */
+int rad_next_band_set(int n, const double *rho, int done[RAD_BANDS], int bands[RAD_BANDS]);
+
 /* LU (solve.c) of the bands listed in bands[0..nb), which share the
  * reflectances rho (those of bands[0]). */
 rad_status rad_solve_lu(int n, const double *F, const double *rho, const double *E, double *B,
