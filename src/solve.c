@@ -244,33 +244,19 @@ static rad_status solve_gauss(int n, const double *F, const double *rho, const d
 /* The report's powers are sum A_i x_i in the user's units: the sums are
  * taken with the scaled areas and E (2^-ka, 2^-ke) and scaled back, so
  * they are inf only when the power itself exceeds the double range; the
- * balance, a ratio, is computed before that. */
-static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
-                           const double *B, const double *area, int ka, int ke,
-                           rad_solve_report *rep, rad_error *err)
+ * balance, a ratio, is computed before that.  H = F B and rs, the row
+ * sums of F, come from the caller (solvers.h). */
+void rad_solve_balance(int n, const double *H, const double *rs, const double *rho,
+                       const double *E, const double *B, const double *area, int ka, int ke,
+                       rad_solve_report *rep)
 {
-    const size_t n3 = (size_t)n * RAD_BANDS;
-    double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
-    if (!H || !rs) {
-        free(H);
-        free(rs);
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    }
-    for (int j = 0; j < n; j++)
-        for (int i = 0; i < n; i++)
-            rs[i] += F[(size_t)i + (size_t)j * n];
     rep->row_sum_min = n ? HUGE_VAL : 0;
     rep->row_sum_max = n ? -HUGE_VAL : 0;
     for (int i = 0; i < n; i++) {
         rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
         rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
     }
-    if (rad_fpass_mul(n, F, B, H)) { /* H = F B: the irradiance of Cohen et al. 1988 */
-        free(H);
-        free(rs);
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    }
-    double emax = max_abs(E, n3), res = 0;
+    double emax = max_abs(E, (size_t)n * RAD_BANDS), res = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
         double em = 0, ab = 0, es = 0;
         for (int i = 0; i < n; i++) {
@@ -287,6 +273,28 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
         rep->balance[b] = em > 0 ? (em - ab - es) / em : ldexp(em - ab - es, ka + ke);
     }
     rep->residual = emax > 0 ? res / emax : res;
+}
+
+static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
+                           const double *B, const double *area, int ka, int ke,
+                           rad_solve_report *rep, rad_error *err)
+{
+    const size_t n3 = (size_t)n * RAD_BANDS;
+    double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
+    if (!H || !rs) {
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++)
+            rs[i] += F[(size_t)i + (size_t)j * n];
+    if (rad_fpass_mul(n, F, B, H)) { /* H = F B: the irradiance of Cohen et al. 1988 */
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    rad_solve_balance(n, H, rs, rho, E, B, area, ka, ke, rep);
     free(H);
     free(rs);
     return RAD_OK;
