@@ -36,19 +36,21 @@ if [ "${BENCH_CUBE50:-0}" = 1 ]; then
   "$sr" "$cube" "$mesh" ${BENCH_CUBE50_REPEATS:-3}
   echo
   echo "== radiosity solve per solver, cube $mesh, default accuracy (s; peak memory)"
-  printf 'solver\tsolve_s\tform_factors_s\tpeak_MiB\tsummary\n'
+  printf 'solver\tsolve_s\tform_factors_s\tpeak_MiB\testimate_MiB\tsummary\n'
   for s in ${BENCH_CUBE50_SOLVERS:-gauss cholesky jacobi gauss-seidel cg}; do
     if command -v /usr/bin/time > /dev/null; then
       /usr/bin/time -f 'peak_kb %M' "$rad" solve --mesh "$mesh" --solver "$s" \
-        --elements "$tmp/e_$s.tsv" "$cube" 2> "$tmp/log_$s" || true
+        --elements "$tmp/e_$s.tsv" --report "$tmp/r_$s.json" "$cube" 2> "$tmp/log_$s" || true
     else
-      "$rad" solve --mesh "$mesh" --solver "$s" --elements "$tmp/e_$s.tsv" "$cube" 2> "$tmp/log_$s" || true
+      "$rad" solve --mesh "$mesh" --solver "$s" --elements "$tmp/e_$s.tsv" \
+        --report "$tmp/r_$s.json" "$cube" 2> "$tmp/log_$s" || true
     fi
-    awk -v s="$s" '/form factors/ { for (k = 1; k <= NF; k++) { if ($k == "factors") ff = $(k + 1);
+    est=$(sed -n 's/.*"memory_bytes": *\([0-9.e+]*\).*/\1/p' "$tmp/r_$s.json" 2>/dev/null)
+    awk -v s="$s" -v est="${est:-0}" '/form factors/ { for (k = 1; k <= NF; k++) { if ($k == "factors") ff = $(k + 1);
         if ($k == "solve") sv = $(k + 1) } }
       /^radiosity: '"$s"',/ { sub(/^radiosity: /, ""); line = $0 }
       /^peak_kb/ { mem = $2 / 1024 }
-      END { printf "%s\t%s\t%s\t%.0f\t%s\n", s, sv, ff, mem, line }' "$tmp/log_$s"
+      END { printf "%s\t%s\t%s\t%.0f\t%.0f\t%s\n", s, sv, ff, mem, est / 1048576, line }' "$tmp/log_$s"
   done
   # agreement with gauss: max |B - B_gauss| / max |B_gauss| over r g b
   if [ -f "$tmp/e_gauss.tsv" ]; then

@@ -47,6 +47,11 @@ void rad_solve_balance(int n, const double *H, const double *rs, const double *r
                        const double *E, const double *B, const double *area, int ka, int ke,
                        rad_solve_report *rep);
 
+/* RAD_ERR_TOOBIG (the message names `what`) when `matrices` n x n
+ * matrices of doubles would not fit in the memory available now: the
+ * check before LU's or Cholesky's working matrix (solve.c). */
+rad_status rad_solve_matrix_check(int n, int matrices, const char *what, rad_error *err);
+
 /* Append "why" to the report's fallback note (count it): cholesky, cg. */
 void rad_report_fallback(rad_solve_report *rep, const char *why);
 
