@@ -195,6 +195,7 @@ typedef struct cli_run {
                                    --strict refused an unmet promise) */
     int promise_unmet;          /* --strict refused the run for that */
     double t_parse, t_output;
+    double t_output_start;      /* when the outputs began (cli_run_write) */
     rad_shot *shots;            /* the --trace rows */
     int nshots, cap;
     cli_solve *s;

@@ -389,7 +389,7 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     if (!rep)
         rep = &local;
     memset(rep, 0, sizeof *rep);
-    rep->solver = opt->solver;
+    rep->solver = opt->bounces >= 0 ? RAD_SOLVER_JACOBI : opt->solver; /* --bounces: Jacobi */
     rep->bounces = opt->bounces;
     rep->rcond = NAN;
     rep->ff_error_bound = NAN;

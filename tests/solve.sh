@@ -40,6 +40,12 @@ if command -v python3 > /dev/null; then
   ok $? "the report is valid JSON"
 fi
 
+# the report is written last and states the time of the other outputs
+"$RADIOSITY" solve -q --mesh 6x6 --form-factors "$work/t.mtx" --report "$work/t.json" "$cube"
+out_s=$(sed -n 's/.*"output": *\([^}]*\)}.*/\1/p' "$work/t.json")
+awk -v t="${out_s:-x}" 'BEGIN { exit !(t + 0 == t && t > 0 && t < 60) }'
+ok $? "the report's output time is that of the matrix written before it ($out_s s)"
+
 # solvers agree through the CLI too (table values, 1e-10)
 for s in cholesky jacobi gauss-seidel cg; do
   "$RADIOSITY" solve -q --mesh 3x3 --solver $s --elements "$work/e_$s.tsv" "$cube"
@@ -49,6 +55,9 @@ done
 "$RADIOSITY" solve -q --mesh 2x2 --bounces 0 --elements "$work/b0.tsv" "$cube"
 awk -F'\t' 'NR > 1 && $2 != 0 && ($12 != 0 || $13 != 0 || $14 != 0) { bad = 1 } END { exit bad }' "$work/b0.tsv"
 ok $? "--bounces 0: only the emitter is lit"
+"$RADIOSITY" solve -q --mesh 2x2 --bounces 3 --report "$work/b3.json" "$cube"
+grep -q '"solver": "jacobi"' "$work/b3.json" && grep -q '"bounces": 3,' "$work/b3.json"
+ok $? "--bounces 3: the report says jacobi, 3 bounces"
 
 # errors
 printf 'material w reflect 1 emit 1\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\nquad w 0 0 1  0 1 1  1 1 1  1 0 1\nquad w 0 0 0  0 1 0  0 1 1  0 0 1\nquad w 1 0 0  1 0 1  1 1 1  1 1 0\nquad w 0 0 0  0 0 1  1 0 1  1 0 0\nquad w 0 1 0  1 1 0  1 1 1  0 1 1\n' > "$work/white.scene"
