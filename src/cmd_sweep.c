@@ -237,6 +237,7 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
 typedef struct row {
     int mesh, elements, acc, solver;
     double t_ff, t_solve, rms, max;
+    double row_min, row_max;    /* closure: sum_j F_ij, least and largest */
 } row;
 
 typedef struct table_out {
@@ -256,11 +257,12 @@ static int write_table_to(FILE *out, const void *ctx)
 static int write_table(FILE *out, const row *r, int nr, const char *truth)
 {
     fprintf(out, "mesh\telements\taccuracy\tsolver\tseconds_formfactor\tseconds_solve\t"
-                 "seconds_total\trms_error\tmax_error\ttruth\n");
+                 "seconds_total\trms_error\tmax_error\ttruth\trow_sum_min\trow_sum_max\n");
     for (int k = 0; k < nr; k++)
-        fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n", r[k].mesh,
-                r[k].mesh, r[k].elements, rad_accuracy_name(r[k].acc), rad_solver_name(r[k].solver),
-                r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve, r[k].rms, r[k].max, truth);
+        fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\t%.17g\t%.17g\n",
+                r[k].mesh, r[k].mesh, r[k].elements, rad_accuracy_name(r[k].acc),
+                rad_solver_name(r[k].solver), r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve,
+                r[k].rms, r[k].max, truth, r[k].row_min, r[k].row_max);
     return ferror(out) ? -1 : 0;
 }
 
@@ -359,6 +361,8 @@ int cmd_sweep(int argc, char **argv)
                 w->elements = sol.mesh.nelements;
                 w->acc = a.acc[i];
                 w->solver = a.solvers[j];
+                w->row_min = sol.solve.row_sum_min;
+                w->row_max = sol.solve.row_sum_max;
                 rad_solution_error(&sol.mesh, sol.B, have_closed ? NULL : &truth.mesh,
                                    truth.B, closed, &w->rms, &w->max);
                 if (!a.common.quiet)

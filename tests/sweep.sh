@@ -27,6 +27,17 @@ for s in cholesky cg progressive; do
   grep -q "	$s	" "$work/s.tsv"; ok $? "the table has $s rows"
 done
 
+# closure: the grey cube is a closed convex enclosure, so every row of F
+# sums to 1 (Goral et al. 1984, eq. 3) within the mode's promise summed
+# over a row (1e-6 default, 1e-9 reference)
+"$RADIOSITY" sweep -q --meshes 1,3 --accuracies default,reference -o "$work/c.tsv" "$scene"
+awk -F '\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+  { t = $c["accuracy"] == "reference" ? 1e-9 : 1e-6; n++
+    for (k = 0; k < 2; k++) { v = k ? $c["row_sum_max"] : $c["row_sum_min"]; d = v - 1
+      if (d < 0) d = -d; if (!(v + 0 == v) || d > t) bad = 1 } }
+  END { exit bad || n != 4 }' "$work/c.tsv"
+ok $? "the closed cube's rows sum to 1 within each mode's promise (row_sum_min, row_sum_max)"
+
 "$RADIOSITY" sweep -q --meshes 1 --solvers gauss,lu "$scene" > "$work/o" 2> "$work/err"
 [ $? -eq 2 ] && grep -q 'cholesky' "$work/err"
 ok $? "an unknown solver is a usage error that lists the six"
