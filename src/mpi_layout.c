@@ -115,6 +115,8 @@ void mpi_job_make(mpi_job *job, const rad_mesh *m, const rad_ff_options *ff,
     job->threads = ff->threads;
     job->solver = (int)so->solver;
     job->keep_form_factors = keep_form_factors;
+    job->max_iterations = so->max_iterations;
+    job->tolerance = so->tolerance;
 }
 
 /* Bytes of an array of count items of size `size`, for MPI_Bcast: the

@@ -50,8 +50,10 @@ typedef struct mpi_job {
     int command;                /* MPI_JOB_QUIT or MPI_JOB_SOLVE */
     int nelements, nvertices, nvindex, nsurfaces;
     int quadrature, accuracy, threads;
-    int solver;                 /* RAD_SOLVER_GAUSS or RAD_SOLVER_CHOLESKY */
+    int solver;                 /* RAD_SOLVER_GAUSS, _CHOLESKY or _JACOBI */
     int keep_form_factors;
+    int max_iterations;         /* jacobi */
+    double tolerance;
 } mpi_job;
 
 enum { MPI_JOB_QUIT = 0, MPI_JOB_SOLVE = 1 };

@@ -30,15 +30,19 @@ static void help(void)
            "ScaLAPACK's 2-D block-cyclic layout (64 x 64 blocks on a grid of\n"
            "processes as square as P allows), and the radiosity system of each\n"
            "colour band is solved with ScaLAPACK's LU (gauss) or Cholesky on the\n"
-           "symmetric form (cholesky).  Rank 0 reads the scene, prints the summary\n"
-           "and writes every output; B is the same as a serial solve's to round-off.\n"
+           "symmetric form (cholesky), or by Jacobi sweeps on the distributed F\n"
+           "(jacobi: F alone, half the memory).  Rank 0 reads the scene, prints the\n"
+           "summary and writes every output; B is the same as a serial solve's to\n"
+           "round-off (jacobi: within its tolerance).\n"
            "\n"
-           "Options (those of 'radiosity solve'; other solvers are refused):\n"
+           "Options (those of 'radiosity solve'; gauss-seidel, cg, progressive and\n"
+           "--bounces are refused):\n"
            "  -o, --output FILE       the solution as PLY; '-' is stdout\n"
            CLI_SOLVE_HELP
            "\n"
            "Each process takes about 2 x 8 N^2 / P bytes for its blocks of F and of\n"
-           "the system (N elements), plus the mesh; --form-factors gathers all of F\n"
+           "the system (N elements; jacobi 8 N^2 / P), plus the mesh; --form-factors\n"
+           "gathers all of F\n"
            "on rank 0 (8 N^2 bytes more there).  --threads sets the OpenMP threads of\n"
            "each process's fill: with several processes per machine, keep processes\n"
            "times threads at or below its cores.  A pair of elements whose two\n"
@@ -58,8 +62,10 @@ static void help(void)
 static int check(const cli_solve *s)
 {
     const rad_solver v = s->solve.solver;
-    if (s->given_bounces || (v != RAD_SOLVER_GAUSS && v != RAD_SOLVER_CHOLESKY)) {
-        cli_error("radiosity-mpi solves with --solver gauss or cholesky (ScaLAPACK), not %s",
+    if (s->given_bounces ||
+        (v != RAD_SOLVER_GAUSS && v != RAD_SOLVER_CHOLESKY && v != RAD_SOLVER_JACOBI)) {
+        cli_error("radiosity-mpi solves with --solver gauss, cholesky (ScaLAPACK) or jacobi, "
+                  "not %s",
                   s->given_bounces ? "--bounces" : rad_solver_name(v));
         return 2;
     }

@@ -46,6 +46,7 @@
 #include <time.h>
 
 #include "ffblock.h"
+#include "mpi_jacobi.h"
 #include "mpi_layout.h"
 #include "mpi_solve.h"
 #include "scalapack.h"
@@ -370,6 +371,22 @@ static rad_status solve_set(work *w, int solver, const int *bands, int nb, doubl
     return st;
 }
 
+/* Every band set by LU or Cholesky, the system beside F.  Collective. */
+static rad_status solve_direct(work *w, int solver, rad_solve_report *rep, rad_error *err)
+{
+    double *A = malloc(sizeof *A * ((size_t)w->g.lld * (size_t)(w->g.nloc ? w->g.nloc : 1)));
+    rad_status st = mpi_agree(A ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory for "
+                                                    "this process's blocks of the system"),
+                              err);
+    int done[RAD_BANDS] = {0}, bands[RAD_BANDS], nb;
+    while (st == RAD_OK && (nb = rad_next_band_set(w->n, w->rho, done, bands)) > 0) {
+        rep->systems++;
+        st = solve_set(w, solver, bands, nb, A, rep, err);
+    }
+    free(A);
+    return st;
+}
+
 /* ---- the job ------------------------------------------------------------- */
 
 static int work_alloc(work *w)
@@ -501,18 +518,11 @@ static rad_status job_run(const mpi_job *job, const rad_mesh *m, rad_result *r, 
     rep.bounces = -1;
     rep.rcond = rep.ff_error_bound = rep.spectral_radius = NAN;
     rep.ferr = rep.berr = rep.error_bound = rep.contraction = NAN;
-    double *A = st == RAD_OK ? malloc(sizeof *A * ((size_t)w.g.lld *
-                                                   (size_t)(w.g.nloc ? w.g.nloc : 1)))
-                             : NULL;
-    if (st == RAD_OK)
-        st = mpi_agree(A ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory for this "
-                                             "process's blocks of the system"), err);
-    int done[RAD_BANDS] = {0}, bands[RAD_BANDS], nb;
-    while (st == RAD_OK && (nb = rad_next_band_set(w.n, w.rho, done, bands)) > 0) {
-        rep.systems++;
-        st = solve_set(&w, job->solver, bands, nb, A, &rep, err);
-    }
-    free(A);
+    if (st == RAD_OK && job->solver == RAD_SOLVER_JACOBI)
+        st = mpi_jacobi(&w.g, w.F, w.rho, w.E, w.B, job->tolerance, job->max_iterations, &rep,
+                        err);
+    else if (st == RAD_OK)
+        st = solve_direct(&w, job->solver, &rep, err);
     if (st == RAD_OK)
         st = balance(&w, &rep, err);
     if (r) {
@@ -533,8 +543,10 @@ static rad_status job_run(const mpi_job *job, const rad_mesh *m, rad_result *r, 
 
 /* The memory rank 0 needs for its blocks (F and the system), checked
  * before meshing as pipeline.c does: the largest share is rank 0's. */
-static rad_status check_size(const rad_scene *scene, rad_result *r, int keep, rad_error *err)
+static rad_status check_size(const rad_scene *scene, const rad_solve_options *so, rad_result *r,
+                             int keep, rad_error *err)
 {
+    const int matrices = so->solver == RAD_SOLVER_JACOBI ? 1 : 2; /* F (and the system) */
     int size;
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     const double n = rad_scene_element_count(scene);
@@ -547,10 +559,11 @@ static rad_status check_size(const rad_scene *scene, rad_result *r, int keep, ra
     while (size % pr != 0)
         pr--;
     const double nb = RAD_MPI_NB, rows = ceil(n / nb / pr) * nb, cols = ceil(n / nb / (size / pr)) * nb;
-    r->memory_bytes = 2 * 8 * fmin(rows, n) * fmin(cols, n) + (keep ? 8 * n * n : 0);
-    char what[128];
-    snprintf(what, sizeof what, "%.0f elements on %d processes (2 x 8 N^2 / P bytes of "
-             "matrices on rank 0%s)", n, size, keep ? ", and all of F for --form-factors" : "");
+    r->memory_bytes = matrices * 8 * fmin(rows, n) * fmin(cols, n) + (keep ? 8 * n * n : 0);
+    char what[160];
+    snprintf(what, sizeof what, "%.0f elements on %d processes (%d x 8 N^2 / P bytes of "
+             "matrices on rank 0 for %s%s)", n, size, matrices, rad_solver_name(so->solver),
+             keep ? ", and all of F for --form-factors" : "");
     return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
 }
 
@@ -558,7 +571,7 @@ rad_status mpi_pipeline_run(const rad_scene *scene, const rad_pipeline_options *
                             rad_result *r, rad_error *err)
 {
     memset(r, 0, sizeof *r);
-    rad_status st = check_size(scene, r, opt->keep_form_factors, err);
+    rad_status st = check_size(scene, &opt->solve, r, opt->keep_form_factors, err);
     double t0 = seconds();
     if (st == RAD_OK)
         st = rad_mesh_build(&r->mesh, scene, err);
