@@ -11,7 +11,10 @@
 #
 # Figure 6: flat shading at meshes 1x1 to 7x7, each with the RGB scanline
 #           plot of the middle row (the paper's intensity traces).
-# Figure 7: the 5x5 mesh after 0, 1, 2, 4 and 8 reflections, and solved.
+# Figure 7: the 5x5 mesh with direct light only (7a: one reflection on the
+#           way to the eye), then 1, 2, 4 and 8 intermediate reflections
+#           more (7b-7e: --bounces 2, 3, 5, 9), and solved (7f), each with
+#           its RGB scanline plot.
 # Figure 8: smooth (Gouraud) shading of the 3x3 and 7x7 meshes.
 set -eu
 
@@ -86,13 +89,17 @@ done
 end_row "Figure 6: flat shading at increasing mesh resolution" \
   "Each element is drawn in its own radiosity; below each picture the linear R, G, B radiosity along row $row (the middle row) of the picture."
 
-for k in 0 1 2 4 8; do
-  fig "fig7-bounces-$k" "5x5, $k reflection$([ "$k" = 1 ] || echo s)" "" -- \
+# the paper's 7a-7e: direct light, then 1, 2, 4 and 8 intermediate reflections
+for pair in a:1:0 b:2:1 c:3:2 d:5:4 e:9:8; do
+  letter=${pair%%:*} rest=${pair#*:} k=${rest%%:*} inter=${rest#*:}
+  if [ "$inter" = 0 ]; then what="direct light only"
+  else what="$inter intermediate reflection$([ "$inter" = 1 ] || echo s)"; fi
+  fig "fig7$letter-bounces-$k" "7$letter: $what (--bounces $k)" plot -- \
     "$scene" --mesh 5x5 --shading flat --bounces "$k"
 done
-fig "fig7-solved" "5x5, solved (all reflections)" "" -- "$scene" --mesh 5x5 --shading flat
+fig "fig7f-solved" "7f: solved (all reflections)" plot -- "$scene" --mesh 5x5 --shading flat
 end_row "Figure 7: the light after K reflections" \
-  "B = sum over m = 0..K of (rho F)^m E (Jacobi from B = E, without a convergence test), against the solution of the full system.  After 0 reflections only the light itself is lit, and the camera looks through its back, so that picture is black; colour bleeds onto the grey walls from the second reflection on.  The exposure of each picture maps its brightest element (the light) to white."
+  "As in the paper: 7a is the direct light alone (light that reflects once, off a wall, on its way to the eye: B = E + rho F E), 7b-7e add 1, 2, 4 and 8 intermediate reflections (B = sum over m = 0..K of (rho F)^m E with K = 2, 3, 5, 9: Jacobi from B = E without a convergence test), 7f is the solution of the full system.  In 7a the grey walls are grey (equal R, G and B); colour bleeds onto them from 7b on, and 7e is within 0.1% of 7f on the grey walls' mean.  Below each picture the linear R, G, B radiosity along row $row.  The exposure of each picture maps its brightest element to white."
 
 for n in 3 7; do
   fig "fig8-${n}x$n-smooth" "${n}x$n elements per wall, smooth" "" -- \
