@@ -382,6 +382,22 @@ RAD_API double rad_memory_available(void);
  * nvertices x RAD_BANDS, both column-major. */
 RAD_API void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
 
+/* How a vertex on a surface's boundary gets its value (smooth.c):
+ * EXTRAPOLATE is the 1984 paper's linear extrapolation (the default, what
+ * rad_smooth_vertices does); CORNER is the course notes' rule, where the
+ * mean of a boundary vertex and its nearest interior vertex equals the
+ * mean of the elements that meet at the boundary vertex.  The two agree
+ * on edges and on fields linear over the surface; they differ at
+ * corners. */
+typedef enum rad_vertex_rule {
+    RAD_VERTEX_EXTRAPOLATE = 0,
+    RAD_VERTEX_CORNER
+} rad_vertex_rule;
+RAD_API void rad_smooth_vertices_rule(const rad_mesh *mesh, const double *B, double *Bv,
+                                      rad_vertex_rule rule);
+/* "extrapolate", "corner", or NULL. */
+RAD_API const char *rad_vertex_rule_name(int rule);
+
 /* ---- closed forms (analytic.c) ------------------------------------------ */
 
 /* Differential area to a coaxial parallel disk of radius r at distance h. */

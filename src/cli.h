@@ -132,6 +132,7 @@ enum {
     OPT_FORM_FACTORS,
     OPT_TRACE,
     OPT_PATCHES,
+    OPT_VERTEX_RULE,
     OPT_SOLVE_END
 };
 
@@ -145,6 +146,7 @@ typedef struct cli_solve {
     int given_solver, given_tolerance, given_max_iterations, given_bounces;
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
+    rad_vertex_rule vertex_rule;  /* --vertex-rule */
 } cli_solve;
 
 #define CLI_SOLVE_LONGOPTS                                                \
@@ -158,6 +160,7 @@ typedef struct cli_solve {
     {"form-factors", required_argument, NULL, OPT_FORM_FACTORS},          \
     {"trace", required_argument, NULL, OPT_TRACE},                        \
     {"patches", no_argument, NULL, OPT_PATCHES},                          \
+    {"vertex-rule", required_argument, NULL, OPT_VERTEX_RULE},            \
     CLI_COMMON_LONGOPTS
 
 #define CLI_SOLVE_HELP                                                             \
@@ -185,6 +188,10 @@ typedef struct cli_solve {
     "                          float64 NumPy array)\n"                           \
     "      --form-factors FILE the form-factor matrix (Matrix Market; FILE.npy:\n"\
     "                          n x n float64 NumPy array, row i = from i)\n"     \
+    "      --vertex-rule RULE  vertex radiosity on a surface's boundary:\n"     \
+    "                          extrapolate (linear, Goral et al. 1984; default)\n"\
+    "                          or corner ((vertex + nearest interior vertex)/2\n"\
+    "                          = mean of the elements at the vertex)\n"       \
     CLI_COMMON_HELP
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */

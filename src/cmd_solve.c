@@ -90,6 +90,16 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
     case OPT_PATCHES:
         s->solve.patches = 1;
         return 0;
+    case OPT_VERTEX_RULE:
+        if (strcmp(arg, "extrapolate") == 0)
+            s->vertex_rule = RAD_VERTEX_EXTRAPOLATE;
+        else if (strcmp(arg, "corner") == 0)
+            s->vertex_rule = RAD_VERTEX_CORNER;
+        else {
+            cli_error("--vertex-rule takes extrapolate or corner, not '%s'", arg);
+            return 2;
+        }
+        return 0;
     default:
         return cli_common_option(&s->common, opt, arg);
     }
@@ -318,6 +328,7 @@ int cli_run_solve(cli_run *run)
     po.ff = s->common.ff;
     po.solve = s->solve;
     po.keep_form_factors = s->form_factors != NULL;
+    po.vertex_rule = s->vertex_rule;
     if (s->trace) {
         po.solve.on_shot = keep_shot;
         po.solve.shot_user = run;

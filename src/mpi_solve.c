@@ -595,7 +595,7 @@ rad_status mpi_pipeline_run(const rad_scene *scene, const rad_pipeline_options *
         double t3 = seconds();
         for (size_t k = 0; k < n * RAD_BANDS; k++)
             r->b_negative += r->B[k] < 0;
-        rad_smooth_vertices(&r->mesh, r->B, r->Bv);
+        rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
         r->t_smooth = seconds() - t3;
     }
     return st;

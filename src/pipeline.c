@@ -119,7 +119,7 @@ rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *
     if (st == RAD_OK) {
         for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
             r->b_negative += r->B[k] < 0;
-        rad_smooth_vertices(&r->mesh, r->B, r->Bv);
+        rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
         r->t_smooth = seconds() - t3;
     }
     if (!opt->keep_form_factors) {

@@ -18,6 +18,20 @@
  * Results are clamped at 0, and never mix surfaces: walls of different
  * colours meet at a crease.  A polygon (one element) gives every vertex its
  * element's value.
+ *
+ * The corner rule (RAD_VERTEX_CORNER) is the one of the SIGGRAPH course
+ * notes on radiosity (Cohen & Wallace, Radiosity and Realistic Image
+ * Synthesis, 1993, section 9.2.2): a boundary vertex b takes the value for
+ * which the mean of b and its nearest interior vertex I equals the mean
+ * of the elements meeting at b,  (B_b + B_I) / 2 = mean(elements at b).
+ * On an edge, with I the interior vertex inwards (the mean of 1, 2, 3, 4),
+ * that is B_b = B1 + B2 - B_I = (3 B1 + 3 B2 - B3 - B4) / 4, the paper's
+ * extrapolation again; at a corner, with I the diagonal vertex (the mean
+ * of c, its neighbours u and v, and d),
+ *     B = 2 B_c - (B_c + B_u + B_v + B_d) / 4 = (7 B_c - B_u - B_v - B_d) / 4,
+ * which equals 1.5 B_c - 0.5 B_d on a linear field (B_u + B_v = B_c + B_d)
+ * and weighs the corner's own element more otherwise.  A grid one element
+ * thick has no interior vertex: both rules are the same there.
  */
 #include <config.h>
 
@@ -67,14 +81,18 @@ static void axis_rule(int g, int count, int *i0, int *i1, double *w0, double *w1
  * boundary x boundary is 2.25 B_c - 0.75 B_u - 0.75 B_v + 0.25 B_d, which on
  * a linear field equals 1.5 B_c - 0.5 B_d.  The paper's corner formula is
  * used as printed instead (it needs only the diagonal). */
-static double vertex_value(const rad_mesh *m, const double *B, int s, int gi, int gj, int b)
+static double vertex_value(const rad_mesh *m, const double *B, int s, int gi, int gj, int b,
+                           rad_vertex_rule rule)
 {
     const int n = m->surface_n[s], mm = m->surface_m[s];
     const int corner = (gi == 0 || gi == n) && (gj == 0 || gj == mm);
     if (corner && n > 1 && mm > 1) {
         int ci = gi == 0 ? 0 : n - 1, cj = gj == 0 ? 0 : mm - 1;
         int di = gi == 0 ? 1 : n - 2, dj = gj == 0 ? 1 : mm - 2;
-        return 1.5 * el(m, B, s, ci, cj, b) - 0.5 * el(m, B, s, di, dj, b);
+        const double c = el(m, B, s, ci, cj, b), d = el(m, B, s, di, dj, b);
+        if (rule == RAD_VERTEX_CORNER) /* (7 B_c - B_u - B_v - B_d) / 4 */
+            return (7 * c - el(m, B, s, di, cj, b) - el(m, B, s, ci, dj, b) - d) / 4;
+        return 1.5 * c - 0.5 * d;
     }
     int a0, a1, c0, c1;
     double u0, u1, v0, v1;
@@ -84,7 +102,20 @@ static double vertex_value(const rad_mesh *m, const double *B, int s, int gi, in
            u0 * v1 * el(m, B, s, a0, c1, b) + u1 * v1 * el(m, B, s, a1, c1, b);
 }
 
+const char *rad_vertex_rule_name(int rule)
+{
+    return rule == RAD_VERTEX_EXTRAPOLATE ? "extrapolate"
+           : rule == RAD_VERTEX_CORNER    ? "corner"
+                                          : NULL;
+}
+
 void rad_smooth_vertices(const rad_mesh *m, const double *B, double *Bv)
+{
+    rad_smooth_vertices_rule(m, B, Bv, RAD_VERTEX_EXTRAPOLATE);
+}
+
+void rad_smooth_vertices_rule(const rad_mesh *m, const double *B, double *Bv,
+                              rad_vertex_rule rule)
 {
     for (int s = 0; s < m->nsurfaces; s++) {
         const int first = m->surface_first[s], vfirst = m->surface_vfirst[s];
@@ -100,7 +131,7 @@ void rad_smooth_vertices(const rad_mesh *m, const double *B, double *Bv)
         for (int gj = 0; gj <= mm; gj++)
             for (int gi = 0; gi <= n; gi++)
                 for (int b = 0; b < RAD_BANDS; b++) {
-                    double v = vertex_value(m, B, s, gi, gj, b);
+                    double v = vertex_value(m, B, s, gi, gj, b, rule);
                     Bv[(size_t)(vfirst + gj * (n + 1) + gi) + (size_t)b * m->nvertices] =
                         v > 0 ? v : 0.0;
                 }

@@ -89,6 +89,15 @@ for s in jacobi gauss-seidel cg; do
       exit !(bound + 0 == bound && bound <= 1e-5 && e <= bound + 1e-14) }'
   ok $? "--solver $s --tolerance 1e-5: the report's iteration_error_bound ($bound) covers the error against gauss"
 done
+# --vertex-rule: extrapolate is the default; corner changes corner vertices only
+"$RADIOSITY" solve -q --mesh 3x3 -o "$work/v0.ply" "$cube"
+"$RADIOSITY" solve -q --mesh 3x3 --vertex-rule extrapolate -o "$work/v1.ply" "$cube"
+"$RADIOSITY" solve -q --mesh 3x3 --vertex-rule corner -o "$work/v2.ply" "$cube"
+cmp -s "$work/v0.ply" "$work/v1.ply" && ! cmp -s "$work/v0.ply" "$work/v2.ply"
+ok $? "--vertex-rule extrapolate is the default; corner gives other vertex values"
+"$RADIOSITY" solve --vertex-rule nearest "$cube" 2> "$work/err"; [ $? -eq 2 ] &&
+  grep -q 'extrapolate or corner' "$work/err"
+ok $? "--vertex-rule with an unknown rule: exit 2 naming the rules"
 "$RADIOSITY" solve --bounces -1 "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "negative bounces: exit 2"
 "$RADIOSITY" solve --help | grep -q -- '--bounces'; ok $? "solve --help lists --bounces"
 

@@ -22,8 +22,53 @@ static double field(rad_vec3 p, int b)
     return 0.5 + 0.3 * p.x - 0.2 * p.y + 0.1 * b;
 }
 
+/* The two vertex rules on a 3 x 3 grid of hand-picked values (rows gj,
+ * columns gi):   9 2 3 / 4 1 6 / 7 8 10.  Hand-computed:
+ *   corner (0,0), corner rule  (7*9 - 2 - 4 - 1) / 4 = 56/4 = 14;
+ *                 extrapolate  1.5*9 - 0.5*1 = 13;
+ *   corner (3,3), corner rule  (7*10 - 8 - 6 - 1) / 4 = 55/4 = 13.75;
+ *                 extrapolate  1.5*10 - 0.5*1 = 14.5;
+ *   edge (1,0), both rules     (3*9 + 3*2 - 4 - 1) / 4 = 28/4 = 7;
+ *   interior (1,1), both       (9 + 2 + 4 + 1) / 4 = 4,
+ * and the corner rule's defining identity at (0,0): (14 + 4) / 2 = 9, the
+ * one element there. */
+static void test_vertex_rules(void)
+{
+    const char *text = "material w reflect 0.5\nquad w 0 0 0  3 0 0  3 3 0  0 3 0 mesh 3x3\n";
+    static const double vals[9] = {9, 2, 3, 4, 1, 6, 7, 8, 10};
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    if (rad_scene_parse(&s, text, strlen(text), "t", &err) || rad_mesh_build(&m, &s, &err)) {
+        tap_ok(0, "3x3 scene");
+        return;
+    }
+    double B[27], Bc[48], Be[48];
+    for (int e = 0; e < 9; e++)
+        for (int b = 0; b < 3; b++)
+            B[e + 9 * b] = vals[e];
+    rad_smooth_vertices_rule(&m, B, Bc, RAD_VERTEX_CORNER);
+    rad_smooth_vertices_rule(&m, B, Be, RAD_VERTEX_EXTRAPOLATE);
+    /* vertex (gi, gj) is gj * 4 + gi */
+    tap_ok(Bc[0] == 14 && Be[0] == 13, "corner (0,0): corner rule 14, extrapolation 13 (%g, %g)",
+           Bc[0], Be[0]);
+    tap_ok(Bc[15] == 13.75 && Be[15] == 14.5,
+           "corner (3,3): corner rule 13.75, extrapolation 14.5 (%g, %g)", Bc[15], Be[15]);
+    tap_ok(Bc[1] == 7 && Be[1] == 7, "edge (1,0): both rules 7 (%g, %g)", Bc[1], Be[1]);
+    tap_ok(Bc[5] == 4 && Be[5] == 4, "interior (1,1): both rules 4 (%g, %g)", Bc[5], Be[5]);
+    tap_ok((Bc[0] + Bc[5]) / 2 == 9, "corner rule: (B_corner + B_interior) / 2 = its element");
+    tap_ok(Bc[16 + 0] == 14 && Bc[32 + 15] == 13.75, "every band alike");
+    tap_ok(strcmp(rad_vertex_rule_name(RAD_VERTEX_CORNER), "corner") == 0 &&
+               strcmp(rad_vertex_rule_name(RAD_VERTEX_EXTRAPOLATE), "extrapolate") == 0 &&
+               rad_vertex_rule_name(7) == NULL,
+           "rule names");
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
 int main(void)
 {
+    test_vertex_rules();
     /* a sheared parallelogram meshed 5x4, a 1x3 strip, a 1x1 quad, and a
      * triangle; all in z = 0 (they never interact: smoothing only) */
     const char *text = "material w reflect 0.5\n"

@@ -22,6 +22,8 @@ typedef struct rad_pipeline_options {
     rad_solve_options solve;    /* solver and its options (progress is
                                    taken from ff when not set) */
     int keep_form_factors;      /* 1: leave F in the result (--form-factors) */
+    rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
+                                     (smooth.c; default: extrapolate) */
 } rad_pipeline_options;
 
 RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);
