@@ -132,15 +132,18 @@ frame
 move box 0.25 0 0.125
 frame
 move box -0.25 0 -0.125
-frame
-rotate box 1 1 0 40
-rotate box 1 1 0 -40
 EOF2
 "$RADIOSITY" animate -q --elements 'r%d.tsv' room.scene back.changes 2> /dev/null
 ok $? "animate runs the reversals"
 r=$(same r2.tsv r0.tsv 1e-10); ok $? "add then remove returns the original B within 1e-10: $r"
 r=$(same r4.tsv r0.tsv 1e-10); ok $? "move then move back returns the original B within 1e-10: $r"
-r=$(same r5.tsv r0.tsv 1e-10); ok $? "a turn and its inverse in one frame return the original B within 1e-10: $r"
+# A turn and its inverse leave the vertices a rounding error (1e-16) off:
+# form factors are then recomputed on other doubles, and default mode's
+# rule may take another route for a pair (within its promise of 1e-6);
+# reference mode (1e-9) shows that the redistribution itself returns.
+printf 'frame\nrotate box 1 1 0 40\nrotate box 1 1 0 -40\n' > turn.changes
+"$RADIOSITY" animate -q --accuracy reference --elements 't%d.tsv' room.scene turn.changes 2> /dev/null
+r=$(same t1.tsv t0.tsv 1e-10); ok $? "reference mode: a turn and its inverse in one frame return B within 1e-10: $r"
 
 # partial frames: --steps K stops each frame after K shots
 "$RADIOSITY" animate -q --steps 3 --report part.json --elements 'p%d.tsv' room.scene all.changes 2> /dev/null
