@@ -74,7 +74,8 @@ static void help(void)
            "                          per shot and per frame, overall and on the 1%%\n"
            "                          of patches the frame changes most\n"
            "      --report FILE       per-frame figures as JSON (shots, pairs\n"
-           "                          recomputed and their share, times, errors)\n"
+           "                          recomputed and their share, times, errors;\n"
+           "                          with --reference the fresh solve's time)\n"
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
@@ -175,6 +176,7 @@ static int parse_option(anim_args *a, int opt, const char *arg)
 typedef struct frame_row {
     rad_anim_report rep;
     double error, error_top;    /* eq. 7 at the end of the frame, NaN without --reference */
+    double t_reference;         /* seconds of the frame's fresh solve (--reference) */
 } frame_row;
 
 typedef struct anim_run {
@@ -190,6 +192,7 @@ typedef struct anim_run {
     size_t nshots, cap;
     frame_row *frames;
     double exposure;
+    double t_reference;         /* of the last reference solve */
     int failed_shot;
 } anim_run;
 
@@ -230,7 +233,10 @@ static int reference(anim_run *r, int frame, const rad_mesh *full)
     rad_error err;
     rad_pipeline_options_init(&po);
     po.ff = r->args->common.ff;
-    if (rad_pipeline_run(&r->fscene, &po, &res, &err) != RAD_OK) {
+    double t0 = cli_seconds();
+    rad_status st = rad_pipeline_run(&r->fscene, &po, &res, &err);
+    r->t_reference = cli_seconds() - t0;
+    if (st != RAD_OK) {
         cli_error("the reference solve of frame %d: %s", frame, err.message);
         rad_result_free(&res);
         return 1;
@@ -339,8 +345,9 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
     char path[4096];
     frame_row *row = &r->frames[f];
     row->rep = *rep;
-    row->error = row->error_top = NAN;
+    row->error = row->error_top = row->t_reference = NAN;
     if (r->Bref) {
+        row->t_reference = r->t_reference;
         const rad_mesh *m = rad_anim_mesh(r->anim);
         row->error = rad_anim_error(m, rad_anim_present(r->anim), rad_anim_radiosity(r->anim),
                                     r->Bref);
@@ -431,6 +438,7 @@ static int w_report(FILE *out, const void *ctx)
         json_num(out, "t_formfactor", p->t_formfactor, ", ");
         json_num(out, "t_shoot", p->t_shoot, ", ");
         json_num(out, "t_total", p->t_total, ", ");
+        json_num(out, "t_reference", w->t_reference, ", ");
         json_num(out, "error_eq7", w->error, ", ");
         json_num(out, "error_eq7_top1", w->error_top, "}");
         fputs(f < r->changes.nframes ? ",\n" : "\n", out);
