@@ -241,7 +241,7 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         memcpy(a->dB, a->E, sizeof *a->B * (size_t)a->n * RAD_BANDS);
         a->emitted0 = rad_anim_emitted(a);
         double t1 = seconds();
-        st = rad_anim_shoot(a, 0, &rep, err);
+        st = rad_anim_shoot(a, a->opt.partial_start, &rep, err);
         rep.t_shoot = seconds() - t1;
     }
     rep.t_total = seconds() - t0;

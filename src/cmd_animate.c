@@ -36,7 +36,8 @@ enum {
     OPT_AN_REPORT,
     OPT_REFERENCE,
     OPT_WIDTH,
-    OPT_HEIGHT
+    OPT_HEIGHT,
+    OPT_FROM_SCRATCH
 };
 
 static void help(void)
@@ -64,6 +65,9 @@ static void help(void)
            "                          at most T x the emitted power (default 1e-12)\n"
            "      --steps K           stop each frame after K shots: a partial\n"
            "                          solution, as in an interactive session\n"
+           "      --from-scratch      frame 0 too stops after --steps K shots:\n"
+           "                          progressive refinement from scratch, to compare\n"
+           "                          with redistribution (the paper's Fig. 6)\n"
            "      --strategy 1|2      1: redistribute, then propagate (default);\n"
            "                          2: the larger shot first (the paper's Fig. 4)\n"
            "      --trace FILE        one TSV row per shot: frame step shooter kind\n"
@@ -79,8 +83,9 @@ static void help(void)
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
-           "  radiosity animate data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
-           "  radiosity animate --steps 50 --strategy 2 data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --mesh 2x2 data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
+           "  radiosity animate --steps 50 --strategy 2 --reference data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv --frames frame%%02d.png data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
@@ -165,6 +170,9 @@ static int parse_option(anim_args *a, int opt, const char *arg)
         return 0;
     case OPT_REFERENCE:
         a->reference = 1;
+        return 0;
+    case OPT_FROM_SCRATCH:
+        a->opt.partial_start = 1;
         return 0;
     }
     return cli_common_option(&a->common, opt, arg) == 0 ? 0 : 2;
@@ -608,6 +616,7 @@ int cmd_animate(int argc, char **argv)
         {"trace", required_argument, NULL, OPT_AN_TRACE},
         {"report", required_argument, NULL, OPT_AN_REPORT},
         {"reference", no_argument, NULL, OPT_REFERENCE},
+        {"from-scratch", no_argument, NULL, OPT_FROM_SCRATCH},
         {"width", required_argument, NULL, OPT_WIDTH},
         {"height", required_argument, NULL, OPT_HEIGHT},
         CLI_COMMON_LONGOPTS,
@@ -625,6 +634,10 @@ int cmd_animate(int argc, char **argv)
         }
         if (opt == '?' || parse_option(&a, opt == 'q' ? OPT_QUIET : opt, optarg) != 0)
             return cli_usage_hint("animate");
+    }
+    if (a.opt.partial_start && a.opt.steps == 0) {
+        cli_error("--from-scratch needs --steps K");
+        return cli_usage_hint("animate");
     }
     if (argc - optind != 2) {
         cli_error(argc - optind < 2 ? "animate needs a SCENE and a CHANGES file"

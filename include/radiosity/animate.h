@@ -51,7 +51,11 @@ typedef struct rad_anim_options {
                                    (default 1e-12) */
     long steps;                 /* 0: converge each frame; K > 0: stop each
                                    frame after K shots (a partial solution);
-                                   frame 0 is always converged */
+                                   frame 0 is converged unless partial_start */
+    int partial_start;          /* 1: frame 0 too stops after `steps` shots:
+                                   progressive refinement from scratch (Cohen
+                                   et al. 1988), the comparison of George et
+                                   al. 1990, Fig. 6 */
     int strategy;               /* 1: redistribute first, then propagate;
                                    2: the larger shot first (Fig. 4) */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
