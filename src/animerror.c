@@ -9,7 +9,10 @@
  * 0.0722 B).  Most of a scene does not change when one object moves, so
  * the paper also looks at the patches the change alters most: the mask
  * of rad_anim_most_changed (the top fraction by A |Y - Yprev|, Yprev the
- * converged previous frame), over which the same sums are taken.
+ * converged previous frame); over them the error is normalised by the
+ * change itself, sum A |Yref - Yprev| (rad_anim_error_changed): the
+ * patches a change alters most are often those it shadows, whose Yref is
+ * near 0, where a normalisation by Yref would blow up.
  */
 #include <config.h>
 
@@ -34,6 +37,21 @@ double rad_anim_error(const rad_mesh *m, const unsigned char *mask, const double
         const double a = m->elements[i].area, yr = luminance(Bref, n, i);
         num += a * fabs(luminance(B, n, i) - yr); /* George et al. 1990, eq. 7 */
         den += a * fabs(yr);
+    }
+    return den > 0 ? num / den : num > 0 ? HUGE_VAL : 0;
+}
+
+double rad_anim_error_changed(const rad_mesh *m, const unsigned char *mask, const double *B,
+                              const double *Bref, const double *Bprev)
+{
+    const size_t n = (size_t)m->nelements;
+    double num = 0, den = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (mask && !mask[i])
+            continue;
+        const double a = m->elements[i].area, yr = luminance(Bref, n, i);
+        num += a * fabs(luminance(B, n, i) - yr);
+        den += a * fabs(yr - luminance(Bprev, n, i));
     }
     return den > 0 ? num / den : num > 0 ? HUGE_VAL : 0;
 }

@@ -76,7 +76,8 @@ static void help(void)
            "      --reference         solve every frame afresh too, for the error of\n"
            "                          eq. 7 (luminance, area-weighted, normalised)\n"
            "                          per shot and per frame, overall and on the 1%%\n"
-           "                          of patches the frame changes most\n"
+           "                          of patches the frame changes most (there\n"
+           "                          relative to the change: 1 = not updated)\n"
            "      --report FILE       per-frame figures as JSON (shots, pairs\n"
            "                          recomputed and their share, times, errors;\n"
            "                          with --reference the fresh solve's time)\n"
@@ -224,7 +225,7 @@ static int record_shot(void *user, const rad_anim_shot *s)
     if (r->Bref && r->anim) {
         const rad_mesh *m = rad_anim_mesh(r->anim);
         e = rad_anim_error(m, rad_anim_present(r->anim), rad_anim_radiosity(r->anim), r->Bref);
-        et = rad_anim_error(m, r->top, rad_anim_radiosity(r->anim), r->Bref);
+        et = rad_anim_error_changed(m, r->top, rad_anim_radiosity(r->anim), r->Bref, r->Bprev);
     }
     r->shot_err[2 * r->nshots] = e;
     r->shot_err[2 * r->nshots + 1] = et;
@@ -359,7 +360,8 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
         const rad_mesh *m = rad_anim_mesh(r->anim);
         row->error = rad_anim_error(m, rad_anim_present(r->anim), rad_anim_radiosity(r->anim),
                                     r->Bref);
-        row->error_top = rad_anim_error(m, r->top, rad_anim_radiosity(r->anim), r->Bref);
+        row->error_top = rad_anim_error_changed(m, r->top, rad_anim_radiosity(r->anim), r->Bref,
+                                                r->Bprev);
     }
     if (r->args->elements) {
         pattern_path(path, sizeof path, r->args->elements, f);

@@ -115,6 +115,14 @@ RAD_API rad_status rad_anim_present_result(const rad_anim *anim, rad_mesh *mesh,
  * RGB).  B and Bref are n x RAD_BANDS. */
 RAD_API double rad_anim_error(const rad_mesh *mesh, const unsigned char *mask, const double *B,
                               const double *Bref);
+/* The same error over the elements with mask[i], normalised by the
+ * change from Bprev to Bref there, sum A_i |Yref_i - Yprev_i|: 1 is the
+ * error of not updating at all.  (The patches a change alters most are
+ * often those it shadows, whose Yref is near 0: normalising by Yref would
+ * blow up.) */
+RAD_API double rad_anim_error_changed(const rad_mesh *mesh, const unsigned char *mask,
+                                      const double *B, const double *Bref,
+                                      const double *Bprev);
 /* mask[i] = 1 for the `fraction` (at least one) of the elements with
  * present[i] (NULL: all) whose A_i |Y_i - Yprev_i| is largest: the
  * patches a change alters most, for eq. 7 over them. */
