@@ -60,6 +60,7 @@ void rad_anim_options_init(rad_anim_options *opt)
     rad_ff_options_init(&opt->ff);
     opt->tolerance = 1e-12;
     opt->strategy = 1;
+    opt->gather = 1;
 }
 
 int rad_anim_frame(const rad_anim *a) { return a->frame; }

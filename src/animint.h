@@ -16,16 +16,22 @@
 /* The redistribution a change calls for (George et al. 1990, eq. 5): for
  * each shooter j with T_j != 0, the receivers i and dF_ij = F_ij(t) -
  * F_ij(t-1), in compressed columns: receivers of j are
- * recv[start[j] .. start[j+1]). */
+ * recv[start[j] .. start[j+1]).  The same entries are indexed by receiver
+ * (rent[rstart[i] .. rstart[i+1]) are the entries into i), so that either
+ * a shooter shoots all its pending entries or a receiver gathers all of
+ * its own; done[] marks the entries applied. */
 typedef struct rad_redist {
     size_t *start;              /* n + 1 */
     int *recv;
     double *dF;
     double *T;                  /* n x 3: what j had shot when F changed */
-    double *power;              /* n: the power its redistribution moves */
-    unsigned char *pending;     /* n */
-    int npending;
-    double left;                /* sum of power over the pending */
+    double *epow;               /* per entry: A_i sum_b rho_i |dF_ij T_j| */
+    unsigned char *done;        /* per entry */
+    size_t *rstart, *rent;      /* the entries by receiver */
+    double *power, *rpower;     /* n: pending power per shooter, per receiver */
+    int *ncol, *nrow;           /* n: pending entries per shooter, per receiver */
+    size_t npending;            /* pending entries */
+    double left;                /* their power */
 } rad_redist;
 
 struct rad_anim {

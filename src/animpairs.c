@@ -51,7 +51,13 @@ void rad_redist_free(rad_redist *rd)
     free(rd->dF);
     free(rd->T);
     free(rd->power);
-    free(rd->pending);
+    free(rd->epow);
+    free(rd->done);
+    free(rd->rstart);
+    free(rd->rent);
+    free(rd->rpower);
+    free(rd->ncol);
+    free(rd->nrow);
     memset(rd, 0, sizeof *rd);
 }
 
@@ -278,19 +284,16 @@ static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij
     return st;
 }
 
-/* The power that j's redistribution moves (animshoot.c's yardstick). */
-static double redist_power(const rad_anim *a, int j)
+/* The power entry k (receiver i, shooter j) moves: animshoot.c's yardstick. */
+static double entry_power(const rad_anim *a, int j, size_t k)
 {
     const rad_redist *rd = &a->rd;
     const size_t n = (size_t)a->n;
+    const int i = rd->recv[k];
     double p = 0;
-    for (size_t k = rd->start[j]; k < rd->start[j + 1]; k++) {
-        const int i = rd->recv[k];
-        for (int b = 0; b < RAD_BANDS; b++)
-            p += a->mesh.elements[i].area * fabs(rd->dF[k] * a->rho[i + b * n] *
-                                                 rd->T[j + b * n]);
-    }
-    return p;
+    for (int b = 0; b < RAD_BANDS; b++)
+        p += fabs(rd->dF[k] * a->rho[i + b * n] * rd->T[j + b * n]);
+    return a->mesh.elements[i].area * p;
 }
 
 /* Does shooter j carry anything to redistribute (T_j != 0)? */
@@ -347,6 +350,45 @@ static rad_status store(rad_anim *a, const pair_list *pl, const double *fij, con
     return RAD_OK;
 }
 
+/* The entries by receiver, the powers and the pending counts. */
+static rad_status index_entries(rad_anim *a, rad_error *err)
+{
+    rad_redist *rd = &a->rd;
+    const size_t n = (size_t)a->n, total = rd->start[n];
+    rd->epow = malloc(sizeof *rd->epow * (total + 1));
+    rd->done = calloc(total + 1, 1);
+    rd->rstart = calloc(n + 1, sizeof *rd->rstart);
+    rd->rent = malloc(sizeof *rd->rent * (total + 1));
+    rd->rpower = calloc(n + 1, sizeof *rd->rpower);
+    rd->ncol = calloc(n + 1, sizeof *rd->ncol);
+    rd->nrow = calloc(n + 1, sizeof *rd->nrow);
+    size_t *fill = calloc(n + 1, sizeof *fill);
+    if (!rd->epow || !rd->done || !rd->rstart || !rd->rent || !rd->rpower || !rd->ncol ||
+        !rd->nrow || !fill) {
+        free(fill);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the redistribution");
+    }
+    for (size_t j = 0; j < n; j++)
+        for (size_t k = rd->start[j]; k < rd->start[j + 1]; k++) {
+            rd->epow[k] = entry_power(a, (int)j, k);
+            rd->power[j] += rd->epow[k];
+            rd->rpower[rd->recv[k]] += rd->epow[k];
+            rd->left += rd->epow[k];
+            rd->ncol[j]++;
+            rd->nrow[rd->recv[k]]++;
+        }
+    for (size_t i = 0; i < n; i++)
+        rd->rstart[i + 1] = rd->rstart[i] + (size_t)rd->nrow[i];
+    for (size_t j = 0; j < n; j++)
+        for (size_t k = rd->start[j]; k < rd->start[j + 1]; k++) {
+            const size_t i = (size_t)rd->recv[k];
+            rd->rent[rd->rstart[i] + fill[i]++] = k;
+        }
+    rd->npending = total;
+    free(fill);
+    return RAD_OK;
+}
+
 /* rd: T = B - dB now, then the columns of dF, their powers. */
 static rad_status start_redist(rad_anim *a, const pair_list *pl, const double *fij,
                                const double *fji, rad_anim_report *rep, rad_error *err)
@@ -357,20 +399,12 @@ static rad_status start_redist(rad_anim *a, const pair_list *pl, const double *f
     rd->start = malloc(sizeof *rd->start * (n + 1));
     rd->T = malloc(sizeof *rd->T * n * RAD_BANDS);
     rd->power = calloc(n, sizeof *rd->power);
-    rd->pending = calloc(n, 1);
-    if (!rd->start || !rd->T || !rd->power || !rd->pending)
+    if (!rd->start || !rd->T || !rd->power)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the redistribution");
     for (size_t k = 0; k < n * RAD_BANDS; k++)
         rd->T[k] = a->B[k] - a->dB[k];
     rad_status st = store(a, pl, fij, fji, rep, err);
-    for (int j = 0; st == RAD_OK && j < a->n; j++)
-        if (rd->start[j + 1] > rd->start[j]) {
-            rd->pending[j] = 1;
-            rd->npending++;
-            rd->power[j] = redist_power(a, j);
-            rd->left += rd->power[j];
-        }
-    return st;
+    return st == RAD_OK ? index_entries(a, err) : st;
 }
 
 rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,

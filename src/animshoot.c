@@ -28,12 +28,19 @@
  * tolerance x the emitted power (that of frame 0 when larger: a frame
  * whose lights were all removed converges to B = 0 on that scale).
  *
+ * A redistribution step is either a shooter's (all its pending entries,
+ * the paper's shot) or, with opt.gather, a receiver's: all pending entries
+ * into one element at once, the same terms summed by rows.  A patch that a
+ * new object covers has received light from every patch of the room; the
+ * paper takes it back one shooter at a time, a gather in one step.
+ *
  * Order (George et al. 1990, section "Ordering", Fig. 4): emitters whose
- * emission changed shoot first; then strategy 1 shoots every
- * redistribution (largest power first: the exact energy toward and away
- * from the change, which the paper's importance estimates from sample
- * points) and then propagates; strategy 2 takes at each step the larger
- * of the largest pending redistribution and the largest unshot power.
+ * emission changed shoot first; then strategy 1 takes every
+ * redistribution step (largest pending power first, shooter or receiver:
+ * the exact energy toward and away from the change, which the paper's
+ * importance estimates from sample points) and then propagates; strategy
+ * 2 takes at each step the larger of the largest pending redistribution
+ * and the largest unshot power.
  */
 #include <config.h>
 
@@ -99,33 +106,73 @@ static double propagate(rad_anim *a, int j)
     return p * a->mesh.elements[j].area;
 }
 
-/* Redistribution shot of j (George et al. 1990, eq. 5); its signed power. */
-static double redistribute(rad_anim *a, int j)
+/* Apply the pending entry k of column j (receiver i gets dF_ij T_j, eq. 5);
+ * its signed power. */
+static double apply_entry(rad_anim *a, int j, size_t k)
 {
     rad_redist *rd = &a->rd;
     const size_t n = (size_t)a->n;
-    double p = 0;
-    for (size_t k = rd->start[j]; k < rd->start[j + 1]; k++) {
-        const int i = rd->recv[k];
-        double x[RAD_BANDS];
-        for (int b = 0; b < RAD_BANDS; b++) {
-            x[b] = rd->dF[k] * rd->T[j + b * n];
-            p += a->mesh.elements[i].area * a->rho[i + b * n] * x[b];
-        }
-        receive(a, i, x);
+    const int i = rd->recv[k];
+    double x[RAD_BANDS], p = 0;
+    for (int b = 0; b < RAD_BANDS; b++) {
+        x[b] = rd->dF[k] * rd->T[j + b * n];
+        p += a->mesh.elements[i].area * a->rho[i + b * n] * x[b];
     }
-    rd->pending[j] = 0;
+    receive(a, i, x);
+    rd->done[k] = 1;
     rd->npending--;
-    rd->left -= rd->power[j];
+    rd->left -= rd->epow[k];
+    rd->power[j] = --rd->ncol[j] ? rd->power[j] - rd->epow[k] : 0;
+    rd->rpower[i] = --rd->nrow[i] ? rd->rpower[i] - rd->epow[k] : 0;
     if (rd->npending == 0 || rd->left < 0)
         rd->left = 0; /* no round-off residue when nothing is pending */
+    return p;
+}
+
+/* Redistribution shot of j (George et al. 1990, eq. 5): its pending
+ * entries; their signed power. */
+static double redistribute(rad_anim *a, int j)
+{
+    double p = 0;
+    for (size_t k = a->rd.start[j]; k < a->rd.start[j + 1]; k++)
+        if (!a->rd.done[k])
+            p += apply_entry(a, j, k);
+    return p;
+}
+
+/* The shooter of entry k: the column that holds it. */
+static int column_of(const rad_redist *rd, int n, size_t k)
+{
+    int lo = 0, hi = n; /* start[lo] <= k < start[hi] */
+    while (hi - lo > 1) {
+        const int mid = lo + (hi - lo) / 2;
+        if (rd->start[mid] <= k)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Redistribution gathered by receiver i: every pending entry into i at
+ * once (the same sum, taken by rows: a patch the change shadows or
+ * uncovers is set right in one step instead of one shot per shooter). */
+static double gather(rad_anim *a, int i)
+{
+    rad_redist *rd = &a->rd;
+    double p = 0;
+    for (size_t r = rd->rstart[i]; r < rd->rstart[i + 1]; r++) {
+        const size_t k = rd->rent[r];
+        if (!rd->done[k])
+            p += apply_entry(a, column_of(rd, a->n, k), k);
+    }
     return p;
 }
 
 void rad_anim_flush(rad_anim *a)
 {
     for (int j = 0; j < a->n && a->rd.npending > 0; j++)
-        if (a->rd.pending[j])
+        if (a->rd.ncol[j] > 0)
             redistribute(a, j);
 }
 
@@ -146,32 +193,45 @@ static int largest_unshot(const rad_anim *a, double *power)
     return best;
 }
 
-static int largest_redistribution(const rad_anim *a, double *power)
+/* The largest pending power among counts[] > 0: its index, or -1. */
+static int largest_pending(const int *counts, const double *power, int n, double *best_power)
 {
     int best = -1;
-    *power = -1;
-    for (int j = 0; j < a->n && a->rd.npending > 0; j++)
-        if (a->rd.pending[j] && a->rd.power[j] > *power) {
-            *power = a->rd.power[j];
+    *best_power = -1;
+    for (int j = 0; j < n; j++)
+        if (counts[j] > 0 && power[j] > *best_power) {
+            *best_power = power[j];
             best = j;
         }
     return best;
 }
 
-/* The next shot: kind (1 redistribution) and shooter, or -1 when done. */
-static int choose(rad_anim *a, int *redist)
+/* The next shot: its kind (0 propagation, 1 redistribution by a shooter,
+ * 2 gathered by a receiver) and element, or -1 when nothing is left. */
+static int choose(rad_anim *a, int *kind)
 {
-    double pu, pr;
+    double pu, pr = -1, pg = -1;
     for (int j = 0; j < a->n; j++)
         if (a->first[j]) {
             a->first[j] = 0;
-            *redist = 0;
+            *kind = 0;
             return j;
         }
-    int u = largest_unshot(a, &pu);
-    int r = largest_redistribution(a, &pr);
-    *redist = r >= 0 && (a->opt.strategy != 2 || pr >= pu || u < 0);
-    return *redist ? r : u;
+    const int u = largest_unshot(a, &pu);
+    int r = -1, g = -1;
+    if (a->rd.npending > 0) {
+        r = largest_pending(a->rd.ncol, a->rd.power, a->n, &pr);
+        if (a->opt.gather)
+            g = largest_pending(a->rd.nrow, a->rd.rpower, a->n, &pg);
+    }
+    const int red = g >= 0 && pg > pr ? g : r;
+    const double pred = g >= 0 && pg > pr ? pg : pr;
+    if (red >= 0 && (a->opt.strategy != 2 || pred >= pu || u < 0)) {
+        *kind = red == g && pg > pr ? 2 : 1;
+        return red;
+    }
+    *kind = 0;
+    return u;
 }
 
 rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_error *err)
@@ -192,19 +252,20 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
             return rad_fail(err, RAD_ERR_NOCONV, "frame %d: not converged after %ld shots "
                             "(unshot power %.3g of %.3g emitted)", a->frame, step, unshot,
                             scale);
-        int redist, j = choose(a, &redist);
+        int kind, j = choose(a, &kind);
         if (j < 0 && a->rd.npending == 0) {
             rep->converged = 1; /* nothing left to shoot at all */
             break;
         }
-        double p = redist ? redistribute(a, j) : propagate(a, j);
+        const int redist = kind != 0;
+        double p = kind == 2 ? gather(a, j) : kind == 1 ? redistribute(a, j) : propagate(a, j);
         step++;
         rep->redistribution_shots += redist;
         rep->propagation_shots += !redist;
         unshot = rad_anim_unshot(a);
         if (a->opt.on_shot) {
             rad_anim_shot s = {a->frame, step, j, redist, p < 0 ? -1 : 1, fabs(p), unshot,
-                               a->rd.left};
+                               a->rd.left, kind == 2};
             if (a->opt.on_shot(a->opt.shot_user, &s))
                 return rad_fail(err, RAD_ERR_INVALID, "interrupted");
         }

@@ -37,7 +37,8 @@ enum {
     OPT_REFERENCE,
     OPT_WIDTH,
     OPT_HEIGHT,
-    OPT_FROM_SCRATCH
+    OPT_FROM_SCRATCH,
+    OPT_NO_GATHER
 };
 
 static void help(void)
@@ -68,11 +69,14 @@ static void help(void)
            "      --from-scratch      frame 0 too stops after --steps K shots:\n"
            "                          progressive refinement from scratch, to compare\n"
            "                          with redistribution (the paper's Fig. 6)\n"
+           "      --no-gather         redistribute by shooters only, as the paper does\n"
+           "                          (default: an element may also gather all that\n"
+           "                          is redistributed to it in one step)\n"
            "      --strategy 1|2      1: redistribute, then propagate (default);\n"
            "                          2: the larger shot first (the paper's Fig. 4)\n"
            "      --trace FILE        one TSV row per shot: frame step shooter kind\n"
            "                          sign power unshot redistribution_left error\n"
-           "                          error_top1\n"
+           "                          error_top1 gather\n"
            "      --reference         solve every frame afresh too, for the error of\n"
            "                          eq. 7 (luminance, area-weighted, normalised)\n"
            "                          per shot and per frame, overall and on the 1%%\n"
@@ -174,6 +178,9 @@ static int parse_option(anim_args *a, int opt, const char *arg)
         return 0;
     case OPT_FROM_SCRATCH:
         a->opt.partial_start = 1;
+        return 0;
+    case OPT_NO_GATHER:
+        a->opt.gather = 0;
         return 0;
     }
     return cli_common_option(&a->common, opt, arg) == 0 ? 0 : 2;
@@ -401,7 +408,7 @@ static int w_trace(FILE *out, const void *ctx)
 {
     const anim_run *r = ctx;
     fputs("frame\tstep\tshooter\tkind\tsign\tpower\tunshot\tredistribution_left\terror"
-          "\terror_top1\n", out);
+          "\terror_top1\tgather\n", out);
     for (size_t k = 0; k < r->nshots; k++) {
         const rad_anim_shot *s = &r->shots[k];
         fprintf(out, "%d\t%ld\t%d\t%s\t%d\t%.17g\t%.17g\t%.17g\t", s->frame, s->step,
@@ -410,7 +417,7 @@ static int w_trace(FILE *out, const void *ctx)
         tsv_num(out, r->shot_err[2 * k]);
         fputc('\t', out);
         tsv_num(out, r->shot_err[2 * k + 1]);
-        fputc('\n', out);
+        fprintf(out, "\t%d\n", s->gather);
     }
     return ferror(out) ? -1 : 0;
 }
@@ -619,6 +626,7 @@ int cmd_animate(int argc, char **argv)
         {"report", required_argument, NULL, OPT_AN_REPORT},
         {"reference", no_argument, NULL, OPT_REFERENCE},
         {"from-scratch", no_argument, NULL, OPT_FROM_SCRATCH},
+        {"no-gather", no_argument, NULL, OPT_NO_GATHER},
         {"width", required_argument, NULL, OPT_WIDTH},
         {"height", required_argument, NULL, OPT_HEIGHT},
         CLI_COMMON_LONGOPTS,

@@ -112,10 +112,15 @@ grep -q '"converged": false' rep.json; [ $? -ne 0 ]
 ok $? "every frame converged"
 grep -q '"pairs_recomputed"' rep.json && grep -q '"pairs_share"' rep.json
 ok $? "the report says how many pairs were recomputed and their share"
-head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1$'
+head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1	gather$'
 ok $? "the trace's header"
 awk -F '\t' 'NR > 1 && $4 == "redistribute" && $5 == -1 { neg = 1 } NR > 1 && $4 == "redistribute" && $5 == 1 { pos = 1 } END { exit !(neg && pos) }' trace.tsv
 ok $? "redistribution shoots both signs (newly visible and newly hidden)"
+
+# redistribution by shooters only (the paper's) converges to the same frames
+"$RADIOSITY" animate -q --no-gather --elements 'c%d.tsv' room.scene all.changes 2> /dev/null
+r=$(same c3.tsv f3.tsv 1e-9); ok $? "--no-gather: the frame with the shade added equals a fresh solve: $r"
+r=$(same c4.tsv f4.tsv 1e-9); ok $? "--no-gather: the frame with the box removed equals a fresh solve: $r"
 
 # strategy 2 converges to the same frames
 "$RADIOSITY" animate -q --strategy 2 --elements 'b%d.tsv' room.scene all.changes 2> /dev/null

@@ -38,6 +38,8 @@ typedef struct rad_anim_shot {
     double power;               /* |power| shot, summed over the bands */
     double unshot;              /* unshot power left, sum_j A_j sum_b |dB_j| */
     double redistribution_left; /* power of the redistribution shots pending */
+    int gather;                 /* redistribute: 1 when `shooter` is the receiver
+                                   that gathered its pending terms at once */
 } rad_anim_shot;
 
 /* Called after each shot; non-zero stops the frame (RAD_ERR_INVALID,
@@ -58,6 +60,9 @@ typedef struct rad_anim_options {
                                    al. 1990, Fig. 6 */
     int strategy;               /* 1: redistribute first, then propagate;
                                    2: the larger shot first (Fig. 4) */
+    int gather;                 /* 1 (default): a redistribution step may be a
+                                   receiver gathering its pending terms;
+                                   0: shooters only, as in the paper */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
                                    1000 n + 100000) */
     rad_anim_shot_fn on_shot;   /* may be NULL */
