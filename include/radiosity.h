@@ -102,8 +102,8 @@ typedef struct rad_surface {
 } rad_surface;
 
 /* A named group of surfaces that a change may move, add or remove (the
- * dynamic-scene contract of radiosity-scene(5)).  Today the OBJ reader
- * fills them from `o` and `g` statements; scene files name none yet. */
+ * dynamic-scene contract of radiosity-scene(5)): `object NAME [absent]`
+ * ... `end` in a scene file, `o` and `g` statements in OBJ. */
 typedef struct rad_object {
     char name[RAD_NAME_MAX];
     int absent;                 /* 1: joins the scene only when a change adds it */
@@ -140,6 +140,14 @@ RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t le
 RAD_API void rad_scene_free(rad_scene *scene);
 /* Override the mesh of every quad (the --mesh option). */
 RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
+/* 1 if some surface belongs to an absent object (scenepresent.c). */
+RAD_API int rad_scene_has_absent(const rad_scene *scene);
+/* A copy of the scene with only the present surfaces, in file order:
+ * present[o] (nobjects entries) says which objects are in, or, when
+ * present is NULL, the objects not declared absent.  Free it with
+ * rad_scene_free. */
+RAD_API rad_status rad_scene_present_copy(const rad_scene *in, const unsigned char *present,
+                                          rad_scene *out, rad_error *err);
 
 /* ---- mesh (mesh.c) ------------------------------------------------------ */
 

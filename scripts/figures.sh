@@ -16,6 +16,12 @@
 #           more (7b-7e: --bounces 2, 3, 5, 9), and solved (7f), each with
 #           its RGB scanline plot.
 # Figure 8: smooth (Gouraud) shading of the 3x3 and 7x7 meshes.
+# And figure 6 of George, Sillion & Greenberg 1990 (cube-on-table.scene):
+#           the room converged without and with the cube, and the cube put
+#           on the table by redistribution against progressive refinement
+#           from scratch after 2 and after 50 shots, with the error of their
+#           eq. 7 under each (overall and on the 1% of patches that change
+#           most).
 set -eu
 
 if [ $# -ne 3 ]; then
@@ -23,6 +29,7 @@ if [ $# -ne 3 ]; then
   exit 2
 fi
 radiosity=$1
+data=$2
 scene=$2/goral1984-cube.scene
 out=$3
 size=512
@@ -109,6 +116,71 @@ for n in 3 7; do
 done
 end_row "Figure 8: smooth shading" \
   "Vertex radiosity (the mean of the elements around each vertex) interpolated bilinearly across each element (Gouraud shading), next to the flat picture of the same mesh."
+
+# ---- George, Sillion & Greenberg 1990, figure 6 ----------------------------
+cot=$data/cube-on-table.scene
+[ -r "$cot" ] || { echo "$0: cannot read $cot" >&2; exit 1; }
+sed 's/^object cube absent$/object cube/' "$cot" > "$out/george6-with-cube.scene"
+printf '# no changes: frame 0 alone\n' > "$out/george6-none.changes"
+
+# anim NAME ARGS...: radiosity animate ARGS, a picture and a table per frame
+# ($out/NAME-F.png, $out/NAME-F.tsv); the command goes to $anim_cmd.
+anim() {
+  name=$1
+  shift
+  set -- animate -q --width "$size" --height "$size" --frames "$out/$name-%d.png" \
+    --elements "$out/$name-%d.tsv" "$@"
+  "$radiosity" "$@" || { echo "$0: failed: $(shell_quote "$radiosity" "$@")" >&2; exit 1; }
+  anim_cmd=$(html_escape "$(shell_quote "$radiosity" "$@")")
+}
+
+# eq7 TABLE: the error of George et al. 1990, eq. 7, of TABLE against the
+# converged frame with the cube, overall (normalised by sum A Yref), and on
+# the 1% of patches whose luminance the cube changes most (by A |Yref -
+# Yprev|, Yprev the converged room without the cube: its 411 elements come
+# first, in the same order), normalised there by the change itself, sum A
+# |Yref - Yprev| (the patches the cube shadows have Yref near 0): 1 is the
+# error of not updating at all (rad_anim_error_changed, animate.h).
+eq7() {
+  awk -F '\t' '
+    FNR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; f++; next }
+    { y = 0.2126 * $(c["r"]) + 0.7152 * $(c["g"]) + 0.0722 * $(c["b"]) }
+    f == 1 { yp[$1] = y; next }
+    f == 2 { yr[$1] = y; a[$1] = $(c["area"]); n = $1 + 1; next }
+    { ya[$1] = y }
+    END {
+      for (i = 0; i < n; i++) { d = ya[i] - yr[i]; num += a[i] * (d < 0 ? -d : d); den += a[i] * yr[i]
+                                ch = yr[i] - yp[i]; w[i] = a[i] * (ch < 0 ? -ch : ch) }
+      k = int(n / 100); if (k < 1) k = 1
+      for (q = 0; q < k; q++) { best = -1; for (i = 0; i < n; i++) if (!(i in used) && (best < 0 || w[i] > w[best])) best = i
+                                used[best] = 1; d = ya[best] - yr[best]; tn += a[best] * (d < 0 ? -d : d); td += w[best] }
+      printf "%.3g %.3g\n", num / den, tn / td }' "$out/george6-conv-0.tsv" "$out/george6-conv-1.tsv" "$1"
+}
+
+acell() { # acell PICTURE CAPTION: a cell with the last command
+  cells="$cells<td><figure><img src=\"$1.png\" width=\"256\" height=\"256\" alt=\"$(html_escape "$2")\"><figcaption>$(html_escape "$2")<br><code>$anim_cmd</code></figcaption></figure></td>
+"
+}
+
+anim george6-conv "$cot" "$data/cube-on-table.changes"
+acell george6-conv-0 "converged, without the cube"
+acell george6-conv-1 "converged, with the cube (redistribution to tolerance 1e-12)"
+end_row "George et al. 1990, figure 6: the cube put on the table" \
+  "The room of data/cube-on-table.scene converged without the cube (frame 0) and with it (frame 1: the cube added, its form factors and the pairs it can shadow recomputed, the energy redistributed and propagated to convergence).  Each animation's pictures share frame 0's exposure."
+claim=
+for k in 2 50; do
+  anim "george6-redist$k" --steps "$k" "$cot" "$data/cube-on-table.changes"
+  set -- $(eq7 "$out/george6-redist$k-1.tsv"); re=$1 rt=$2
+  acell "george6-redist$k-1" "redistribution, $k shots after the change: eq. 7 error $re, on the most changed 1% $rt"
+  anim "george6-scratch$k" --from-scratch --steps "$k" "$out/george6-with-cube.scene" "$out/george6-none.changes"
+  set -- $(eq7 "$out/george6-scratch$k-0.tsv"); pe=$1 pt=$2
+  acell "george6-scratch$k-0" "progressive refinement from scratch, $k shots: eq. 7 error $pe, on the most changed 1% $pt"
+  verdict=$(awk -v a="$re" -v b="$pe" -v c="$rt" -v d="$pt" 'BEGIN { print (a < b && c < d) ? "below" : "NOT below" }')
+  echo "figures: George et al. 1990, fig. 6, $k shots: redistribution $re ($rt on the top 1%), from scratch $pe ($pt): $verdict"
+  claim="$claim After $k shots redistribution's error is $verdict that of progressive refinement from scratch ($re against $pe overall, $rt against $pt on the most changed 1%)."
+done
+end_row "George et al. 1990, figure 6: redistribution against progressive refinement from scratch" \
+  "Left of each pair: the converged room without the cube, the cube added, and K shots of redistribution and propagation (strategy 1).  Right: the room with the cube solved by progressive refinement from B = E, K shots (largest unshot power first).  The error is that of eq. 7 (luminance, area-weighted, normalised by the converged frame with the cube) over all patches, and over the 1% whose luminance the cube changes most, normalised there by that change (1: as wrong as the picture without the cube).$claim  Those 1% are the table patches the cube covers (it rests 0.01 above them): progressive refinement from scratch never lights them, so it gets them right at once, while redistribution has to take back, shooter by shooter, the light that every patch of the room had sent them."
 
 version=$("$radiosity" --version | head -n 1)
 cat > "$out/index.html.tmp" <<EOF

@@ -249,6 +249,7 @@ static void usage(FILE *out)
             "  formfactor SCENE        form factors of all element pairs (TSV)\n"
             "  progress SCENE          the convergence race of Cohen et al. 1988\n"
             "  sweep SCENE             time against error over meshes, modes, solvers\n"
+            "  animate SCENE CHANGES   redistribution through frames (George et al. 1990)\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
             "\n"
             "Options:\n"
@@ -314,6 +315,7 @@ static int dispatch(int argc, char **argv)
         {"formfactor", cmd_formfactor}, {"analytic", cmd_analytic},
         {"solve", cmd_solve},           {"render", cmd_render},
         {"progress", cmd_progress},     {"sweep", cmd_sweep},
+        {"animate", cmd_animate},
     };
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {

@@ -567,8 +567,32 @@ static rad_status check_size(const rad_scene *scene, const rad_solve_options *so
     return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
 }
 
+static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                              rad_result *r, rad_error *err);
+
+/* As rad_pipeline_run (pipeline.c): a scene with absent objects is solved
+ * without them, on the copy of its present surfaces. */
 rad_status mpi_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
                             rad_result *r, rad_error *err)
+{
+    if (!rad_scene_has_absent(scene))
+        return run_present(scene, opt, r, err);
+    rad_scene present;
+    memset(r, 0, sizeof *r);
+    rad_status st = rad_scene_present_copy(scene, NULL, &present, err);
+    if (st != RAD_OK)
+        return st;
+    if (present.nsurfaces == 0)
+        st = rad_fail(err, RAD_ERR_INVALID, "%s: every surface belongs to an absent object",
+                      scene->filename ? scene->filename : "-");
+    else
+        st = run_present(&present, opt, r, err);
+    rad_scene_free(&present);
+    return st;
+}
+
+static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                              rad_result *r, rad_error *err)
 {
     memset(r, 0, sizeof *r);
     rad_status st = check_size(scene, &opt->solve, r, opt->keep_form_factors, err);

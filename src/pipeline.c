@@ -87,8 +87,33 @@ static rad_status allocate(rad_result *r, rad_error *err)
     return RAD_OK;
 }
 
+static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                              rad_result *r, rad_error *err);
+
+/* A scene with absent objects is solved without them (radiosity-scene(5)):
+ * the run works on the copy of its present surfaces, whose numbering the
+ * result's mesh then follows. */
 rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
                             rad_result *r, rad_error *err)
+{
+    if (!rad_scene_has_absent(scene))
+        return run_present(scene, opt, r, err);
+    rad_scene present;
+    memset(r, 0, sizeof *r);
+    rad_status st = rad_scene_present_copy(scene, NULL, &present, err);
+    if (st != RAD_OK)
+        return st;
+    if (present.nsurfaces == 0)
+        st = rad_fail(err, RAD_ERR_INVALID, "%s: every surface belongs to an absent object",
+                      scene->filename ? scene->filename : "-");
+    else
+        st = run_present(&present, opt, r, err);
+    rad_scene_free(&present);
+    return st;
+}
+
+static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                              rad_result *r, rad_error *err)
 {
     memset(r, 0, sizeof *r);
     rad_status st = check_size(scene, opt, r, err);

@@ -322,12 +322,12 @@ static rad_status parse_material(parse_state *p, const line_ctx *c)
     return rad_build_add_material(p, &m, c->file, c->line);
 }
 
-/* Append a surface of the static environment that owns `verts` (freed
- * on failure). */
+/* Append a surface that owns `verts` (freed on failure): to the object
+ * being read, or to the static environment outside every object. */
 static rad_status add_surface(parse_state *p, const line_ctx *c, rad_surface_kind kind,
                               int material, rad_vec3 *verts, int n, int mn, int mm)
 {
-    return rad_build_add_surface(p, c->line, kind, material, -1, verts, n, mn, mm);
+    return rad_build_add_surface(p, c->line, kind, material, p->object, verts, n, mn, mm);
 }
 
 static rad_status get_material_ref(const parse_state *p, const line_ctx *c, int *out)
@@ -504,6 +504,48 @@ static rad_status parse_camera(parse_state *p, const line_ctx *c)
     return RAD_OK;
 }
 
+/* object NAME [absent]: the surfaces up to `end` form the object NAME
+ * (objects do not nest; names are unique; an absent object joins the scene
+ * only when a change adds it, radiosity-scene(5)). */
+static rad_status parse_object(parse_state *p, const line_ctx *c)
+{
+    int index;
+    rad_status st;
+    if (p->object >= 0)
+        return fail_at(c, "object '%s' (line %d) has no end: objects do not nest",
+                       p->s.objects[p->object].name, p->s.objects[p->object].line);
+    if (c->ntok < 2)
+        return fail_at(c, "object needs a name");
+    if (c->ntok > 3 || (c->ntok == 3 && strcmp(c->tok[2], "absent") != 0))
+        return fail_at(c, "unexpected '%s' after the object's name (expected absent)",
+                       c->tok[2]);
+    if (is_number(c->tok[1]))
+        return fail_at(c, "object name '%s' looks like a number", c->tok[1]);
+    int prev = rad_build_find_object(p, c->tok[1]);
+    if (prev >= 0)
+        return fail_at(c, "object '%s' is already defined (line %d)", c->tok[1],
+                       p->s.objects[prev].line);
+    if ((st = rad_build_object(p, c->tok[1], c->line, &index)))
+        return st;
+    p->s.objects[index].absent = c->ntok == 3;
+    p->object = index;
+    return RAD_OK;
+}
+
+/* end: closes the object being read, which must have a surface. */
+static rad_status parse_end(parse_state *p, const line_ctx *c)
+{
+    if (p->object < 0)
+        return fail_at(c, "end without object");
+    if (c->ntok > 1)
+        return fail_at(c, "unexpected '%s' after end", c->tok[1]);
+    const rad_scene *s = &p->s;
+    if (s->nsurfaces == 0 || s->surfaces[s->nsurfaces - 1].object != p->object)
+        return fail_at(c, "object '%s' has no surfaces", s->objects[p->object].name);
+    p->object = -1;
+    return RAD_OK;
+}
+
 /* ---- lines and files ---------------------------------------------------- */
 
 static rad_status parse_statement(parse_state *p, const line_ctx *c)
@@ -519,8 +561,12 @@ static rad_status parse_statement(parse_state *p, const line_ctx *c)
         return parse_disk(p, c);
     if (strcmp(k, "camera") == 0)
         return parse_camera(p, c);
-    return fail_at(c, "unknown keyword '%s' (expected material, quad, polygon, disk or camera)",
-                   k);
+    if (strcmp(k, "object") == 0)
+        return parse_object(p, c);
+    if (strcmp(k, "end") == 0)
+        return parse_end(p, c);
+    return fail_at(c, "unknown keyword '%s' (expected material, quad, polygon, disk, camera, "
+                   "object or end)", k);
 }
 
 /* Parse every line r gives into *scene; on failure leave it empty. */
@@ -541,6 +587,9 @@ static rad_status parse_lines(rad_scene *scene, rad_lines *r, const char *name)
         if (!(st = rad_lines_ascii(r, 0)))
             st = parse_statement(&p, &c);
     }
+    if (st == RAD_OK && p.object >= 0)
+        st = rad_fail(r->err, RAD_ERR_PARSE, "%s:%d: object '%s' has no end",
+                      p.s.filename, p.s.objects[p.object].line, p.s.objects[p.object].name);
     if (st == RAD_OK && p.s.nsurfaces == 0)
         st = rad_lines_fail(r, "the scene has no surfaces (quad, polygon or disk)");
     return rad_build_finish(&p, st, scene);

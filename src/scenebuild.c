@@ -84,6 +84,7 @@ rad_status rad_build_start(rad_scene_build *b, const char *filename, rad_error *
 {
     memset(b, 0, sizeof *b);
     b->err = err;
+    b->object = -1;
     b->s.filename = strdup(filename);
     if (!b->s.filename)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");

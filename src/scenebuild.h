@@ -29,6 +29,8 @@ typedef struct rad_scene_build {
     rad_name_index materials, objects;
     int matcap, surfcap, objcap;
     double elements;            /* in the surfaces so far */
+    int object;                 /* scene.c: the object whose `end` is awaited,
+                                   or -1 (rad_build_start sets it) */
 } rad_scene_build;
 
 /* Start an empty scene read from `filename` (copied). */

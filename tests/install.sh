@@ -27,9 +27,9 @@ LD_LIBRARY_PATH="$libdir" "$work/solve_cube" "$top_srcdir/data/goral1984-cube.sc
 so=$(ls "$libdir"/libradiosity.so.* | head -n 1)
 nm -D --defined-only "$so" | awk '$2 != "A" { print $3 }' | sort -u > "$work/exported"
 incdir=$(pkg-config --variable=includedir radiosity)
-# every function declaration in the installed headers: `[RAD_API] TYPE rad_NAME(`
+# every function declaration in the installed headers: `[RAD_API] [const|unsigned]... TYPE rad_NAME(`
 cat "$incdir/radiosity.h" "$incdir"/radiosity/*.h |
-  sed -n -E 's/^(RAD_API )?(const |unsigned )?[a-z_0-9]+[ *]+\**(rad_[a-z_0-9]+)\(.*/\3/p' |
+  sed -n -E 's/^(RAD_API )?((const |unsigned )*)[a-z_0-9]+[ *]+\**(rad_[a-z_0-9]+)\(.*/\4/p' |
   sort -u > "$work/declared"
 [ -s "$work/declared" ] && diff "$work/declared" "$work/exported" > "$work/diff"
 ok $? "nm -D lists exactly the $(wc -l < "$work/declared") functions the headers declare $(tr '\n' ' ' < "$work/diff" | head -c 400)"

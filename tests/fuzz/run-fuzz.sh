@@ -7,15 +7,16 @@
 # (default 600 seconds per harness), or `make fuzz FUZZ_SECONDS=600`.
 # Builds each harness (fuzz_scene.c: the scene parser and the mesher;
 # fuzz_ply.c: the PLY reader; fuzz_obj.c: the OBJ + MTL reader; fuzz_vs3.c:
-# the View3D reader) with clang, libFuzzer, AddressSanitizer and
+# the View3D reader; fuzz_changes.c: the change file of animate) with clang, libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer, then fuzzes a copy of its seed corpus
-# (corpus/ for scenes, corpus-ply/, corpus-obj/, corpus-vs3/) with its
+# (corpus/ for scenes, corpus-ply/, corpus-obj/, corpus-vs3/,
+# corpus-changes/) with its
 # dictionary (NAME.dict).
 # Everything it writes (binaries, config.h, corpus copies, crash files,
 # logs) goes to a temporary directory, which it keeps and names at the end;
 # the source tree is only read.
 # Environment: CC (default clang), FUZZ_WORKDIR (default: mktemp -d),
-# FUZZ_HARNESSES (default "scene ply obj vs3"; run one with
+# FUZZ_HARNESSES (default "scene ply obj vs3 changes"; run one with
 # FUZZ_HARNESSES=ply).
 # Exit status: 0 no finding, 1 a finding (crash, sanitizer report, timeout,
 # broken contract), 2 usage or no fuzzing compiler (it says how to get one).
@@ -30,7 +31,7 @@ esac
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 cc=${CC:-clang}
-harnesses=${FUZZ_HARNESSES:-scene ply obj vs3}
+harnesses=${FUZZ_HARNESSES:-scene ply obj vs3 changes}
 work=${FUZZ_WORKDIR:-$(mktemp -d "${TMPDIR:-/tmp}/radiosity-fuzz.XXXXXX")}
 flags="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined"
 
@@ -52,6 +53,7 @@ sources() {
         scene) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
         ply) echo plyread.c readfile.c scene.c scenebuild.c objread.c vs3read.c readnum.c status.c render.c plot.c atomicfile.c mesh.c ;;
         obj|vs3) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
+        changes) echo changeread.c scene.c scenebuild.c scenepresent.c objread.c vs3read.c readnum.c status.c readfile.c ;;
     esac
 }
 libs() {
@@ -69,8 +71,8 @@ corpus() { case $1 in scene) echo corpus ;; *) echo "corpus-$1" ;; esac; }
 status=0
 for h in $harnesses; do
     case $h in
-        scene|ply|obj|vs3) ;;
-        *) echo "run-fuzz.sh: unknown harness '$h' (scene, ply, obj or vs3)" >&2; exit 2 ;;
+        scene|ply|obj|vs3|changes) ;;
+        *) echo "run-fuzz.sh: unknown harness '$h' (scene, ply, obj, vs3 or changes)" >&2; exit 2 ;;
     esac
     mkdir -p "$work/$h/corpus" "$work/$h/artifacts"
     cp "$here/$(corpus "$h")"/* "$work/$h/corpus/"
