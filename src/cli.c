@@ -250,6 +250,7 @@ static void usage(FILE *out)
             "  progress SCENE          the convergence race of Cohen et al. 1988\n"
             "  sweep SCENE             time against error over meshes, modes, solvers\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
+            "  compare SCENE MATRIX    another solver's form factors against ours\n"
             "\n"
             "Options:\n"
             "  -h, --help              show this help and exit\n"
@@ -314,6 +315,7 @@ static int dispatch(int argc, char **argv)
         {"formfactor", cmd_formfactor}, {"analytic", cmd_analytic},
         {"solve", cmd_solve},           {"render", cmd_render},
         {"progress", cmd_progress},     {"sweep", cmd_sweep},
+        {"compare", cmd_compare},
     };
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
