@@ -18,6 +18,10 @@
  * 0.  Only `real general` (and `integer`/`double`, which read alike) is a
  * form-factor matrix: F is not symmetric (A_i F_ij = A_j F_ji).
  *
+ * The program's table (`radiosity formfactor`) lists every ordered pair
+ * of distinct elements: one that misses some is another mesh's, and is
+ * refused with the counts (it has no size line to say so).
+ *
  * Sparse entries (coordinate, TSV) may not repeat: some tools sum
  * repeated entries and some keep the last, so a repeat is an error rather
  * than a guess.  A map of one byte per entry finds them.
@@ -164,6 +168,25 @@ static rad_status read_mm(rad_lines *r, const char *banner, int n, double *F,
     return mm_array(r, (size_t)n, F);
 }
 
+/* The table lists every ordered pair of distinct elements (the diagonal
+ * may be left out: it is 0): a table of another size misses some. */
+static rad_status complete(const rad_lines *r, const unsigned char *seen, size_t n)
+{
+    size_t given = 0, top = 0;
+    for (size_t j = 0; j < n; j++)
+        for (size_t i = 0; i < n; i++)
+            if (seen[i + j * n]) {
+                given += i != j;
+                top = i > top ? i : top;
+                top = j > top ? j : top;
+            }
+    if (given == n * (n - 1))
+        return RAD_OK;
+    return rad_fail(r->err, RAD_ERR_PARSE, "%s: the table gives %zu of the %zu pairs of "
+                    "distinct elements; the scene has %zu elements (the table's largest index "
+                    "is %zu)", r->name, given, n * (n - 1), n, top);
+}
+
 /* The program's form-factor table: header "i j F ...", rows "I J F ...". */
 static rad_status read_tsv(rad_lines *r, int n, double *F)
 {
@@ -183,8 +206,12 @@ static rad_status read_tsv(rad_lines *r, int n, double *F)
                  !(st = rad_tok_number(r, 2, "F", &v)))
             st = put(r, F, seen, (size_t)n, i, j, v);
     }
+    if (st == RAD_OK && more < 0)
+        st = r->status;
+    if (st == RAD_OK)
+        st = complete(r, seen, (size_t)n);
     free(seen);
-    return st == RAD_OK && more < 0 ? r->status : st;
+    return st;
 }
 
 /* The first bytes of path (up to PEEK, NUL-terminated): their count, or

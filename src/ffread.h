@@ -16,8 +16,10 @@
  *   "View3D V F E D N"          NIST View3D's view-factor file, its text
  *                               (F = 0) or binary (F = 1) form (vfread.c)
  *   a first line "i j F ..."    the program's own form-factor table
- *                               (`radiosity formfactor`): 0-based i, j;
- *                               absent pairs are 0; more columns allowed
+ *                               (`radiosity formfactor`): 0-based i, j,
+ *                               every ordered pair of distinct elements
+ *                               once (F_ii, 0, may be given); more
+ *                               columns allowed
  *
  * The caller says how many elements the scene has: a matrix of another
  * size is refused before anything of its size is allocated.  Every

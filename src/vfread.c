@@ -39,17 +39,23 @@
 
 enum { VF_HEADER = 32 };
 
-/* The header's NSRF (the sixth field) must be n. */
+/* The surface count of the header must be the scene's element count. */
+static rad_status check_nsrf(const char *path, long nsrf, int n, rad_error *err)
+{
+    if (nsrf != n)
+        return rad_fail(err, RAD_ERR_PARSE, "%s:1: %ld surfaces; the scene has %d elements",
+                        path, nsrf, n);
+    return RAD_OK;
+}
+
+/* The header "View3D VERSION FORMAT ENCL DIDEMIT NSRF" of a binary file. */
 static rad_status check_count(const char *path, const char *header, int n, rad_error *err)
 {
     char prog[16], ver[16];
     int format, encl, emit, nsrf;
     if (sscanf(header, "%15s %15s %d %d %d %d", prog, ver, &format, &encl, &emit, &nsrf) != 6)
         return rad_fail(err, RAD_ERR_PARSE, "%s:1: not a View3D header", path);
-    if (nsrf != n)
-        return rad_fail(err, RAD_ERR_PARSE, "%s:1: %d surfaces; the scene has %d elements",
-                        path, nsrf, n);
-    return RAD_OK;
+    return check_nsrf(path, nsrf, n, err);
 }
 
 /* A stream of numbers over the lines of a text file. */
@@ -86,8 +92,12 @@ rad_status rad_vf_read_text(const char *path, int n, double *F, rad_error *err)
     double v;
     if (st == RAD_OK && rad_lines_next(&s.r) != 1)
         st = s.r.status ? s.r.status : rad_lines_fail(&s.r, "empty file");
-    if (st == RAD_OK)
-        st = check_count(path, s.r.text, n, err);
+    long nsrf;
+    if (st == RAD_OK && s.r.ntok != 6)
+        st = rad_lines_fail(&s.r, "a View3D header has 6 fields, not %d", s.r.ntok);
+    if (st == RAD_OK &&
+        (st = rad_tok_long(&s.r, s.r.tok[5], "the surface count", 0, 1L << 30, &nsrf)) == RAD_OK)
+        st = check_nsrf(path, nsrf, n, err);
     s.t = s.r.ntok;             /* the header's fields are used up */
     for (size_t k = 0; st == RAD_OK && k < nn; k++)
         st = next_number(&s, "the areas", &v);
