@@ -45,9 +45,12 @@ static void head(FILE *out, const compare_ctx *c)
                  "F ours, row i = from element i\n", k->floor);
     fprintf(out, "entries:                    %.0f\n", nn);
     fprintf(out, "  equal bit for bit:        %ld\n", k->exact);
-    fprintf(out, "  beyond our own estimate:  %ld  (|G_ij - F_ij| > our error bound)\n",
-            k->beyond_estimate);
-    fprintf(out, "our own error, as e:        %.3g at most\n", k->max_own_err);
+    if (k->beyond_estimate >= 0) {
+        fprintf(out, "  beyond our own estimate:  %ld  (|G_ij - F_ij| > our error bound)\n",
+                k->beyond_estimate);
+        fprintf(out, "our own error, as e:        %.3g at most\n", k->max_own_err);
+    } else
+        fprintf(out, "our own error:              not estimated (classic mode)\n");
     if (k->nworst_found > 0 && k->max_err > 0)
         fprintf(out, "largest error:              %.3g at i = %d, j = %d\n", k->max_err,
                 k->worst[0].i, k->worst[0].j);
@@ -196,11 +199,16 @@ int compare_print_json(FILE *out, const void *ctx)
     fprintf(out, "  \"elements\": %d,\n  \"accuracy\": \"%s\",\n", c->mesh->nelements,
             rad_accuracy_name(c->accuracy));
     num(out, "floor", k->floor, ",");
-    fprintf(out, "  \"entries_exact\": %ld,\n  \"entries_beyond_estimate\": %ld,\n", k->exact,
-            k->beyond_estimate);
+    fprintf(out, "  \"entries_exact\": %ld,\n", k->exact);
+    num(out, "entries_beyond_estimate", k->beyond_estimate >= 0 ? (double)k->beyond_estimate
+                                                                : NAN, ",");
     num(out, "own_error_max", k->max_own_err, ",");
     num(out, "max_error", k->max_err, ",");
     num(out, "rms_error", k->rms_err, ",");
+    if (k->nworst_found > 0)
+        fprintf(out, "  \"max_error_pair\": [%d, %d],\n", k->worst[0].i, k->worst[0].j);
+    else
+        fputs("  \"max_error_pair\": null,\n", out);
     json_pairs(out, c);
     json_rows(out, c);
     num(out, "closure_ours", k->closure_ours, ",");

@@ -13,7 +13,9 @@
  * A non-finite entry of G (NaN or infinity, which a .npy file can hold)
  * has e = infinity: it is the largest error there is, never skipped.
  * The worst pairs are kept in a small array sorted by insertion (nworst
- * is tens), ties broken by the order met, so the output is deterministic.
+ * is tens), ties broken by the order met, so the output is deterministic;
+ * entries with e = 0 are not among them.  Without our error estimates
+ * (classic mode gives none) the counts that need them are -1 and NaN.
  */
 #include <config.h>
 
@@ -55,7 +57,7 @@ static void histogram_add(rad_ffcmp *c, double e)
 static void keep_worst(rad_ffcmp *c, rad_ffcmp_pair p)
 {
     int k = c->nworst_found;
-    if (c->nworst == 0 || (k == c->nworst && !(p.err > c->worst[k - 1].err)))
+    if (c->nworst == 0 || !(p.err > 0) || (k == c->nworst && !(p.err > c->worst[k - 1].err)))
         return;
     if (k < c->nworst)
         c->nworst_found++;
@@ -150,12 +152,15 @@ rad_status rad_ffcmp_run(rad_ffcmp *c, const double *G, const double *F, const d
     }
     c->nworst_found = 0;
     c->exact = c->beyond_estimate = c->hist_zero = c->hist_over = 0;
-    c->max_own_err = c->max_err = 0;
+    c->max_own_err = E ? 0 : NAN;
+    c->max_err = 0;
     memset(c->hist, 0, sizeof c->hist);
     for (size_t i = 0; i < m; i++)
         c->rows[i] = (rad_ffcmp_row){(int)i, 0, 0, 0, 0};
     for (size_t j = 0; j < m; j++)
         column(c, G, F, E, m, j, sumsq);
+    if (!E)
+        c->beyond_estimate = -1;
     double total = 0;
     for (size_t i = 0; i < m; i++) {
         total += sumsq[i];

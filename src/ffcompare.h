@@ -51,10 +51,11 @@ typedef struct rad_ffcmp {
     double max_err, rms_err;    /* of e over the n^2 entries */
     long exact;                 /* entries equal bit for bit */
     long beyond_estimate;       /* entries with |G_ij - F_ij| > E_ij: differences
-                                   our own error estimate cannot explain */
+                                   our own error estimate cannot explain (-1
+                                   without E) */
     double max_own_err;         /* max E_ij / max(|F_ij|, floor): the smallest
-                                   e this comparison can resolve */
-    rad_ffcmp_pair *worst;      /* the nworst largest e, largest first */
+                                   e this comparison can resolve (NaN without E) */
+    rad_ffcmp_pair *worst;      /* the nworst largest e > 0, largest first */
     int nworst_found;
     rad_ffcmp_row *rows;        /* one per row, the largest max first */
     long hist[RAD_FFCMP_BINS], hist_zero, hist_over;

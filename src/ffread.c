@@ -221,11 +221,12 @@ static long peek(const char *path, char *buf, rad_error *err)
     FILE *f = fopen(path, "rb");
     if (!f)
         return rad_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(errno)), -1;
+    errno = 0;
     const size_t k = fread(buf, 1, PEEK, f);
-    const int bad = ferror(f);
+    const int bad = ferror(f), e = errno;
     fclose(f);
     if (bad)
-        return rad_fail(err, RAD_ERR_IO, "%s: read error", path), -1;
+        return rad_fail(err, RAD_ERR_IO, "%s: %s", path, e ? strerror(e) : "read error"), -1;
     buf[k] = '\0';
     return (long)k;
 }
