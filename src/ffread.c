@@ -272,6 +272,9 @@ rad_status rad_ff_read(const char *path, int n, double *F, const char **format,
         *format = "View3D text";
         return rad_vf_read_text(path, n, F, err);
     }
+    if (vf > 1)
+        return rad_fail(err, RAD_ERR_PARSE, "%s:1: View3D format %d; only its square "
+                        "formats 0 (text) and 1 (binary) are read", path, vf);
     const int mm = strncasecmp(buf, "%%MatrixMarket", 14) == 0;
     if (!mm && !tsv_header(buf))
         return rad_fail(err, RAD_ERR_PARSE,

@@ -223,6 +223,12 @@ cmp_ "$cube" "$work/nan.mtx"; rc=$?
 head -n 100 "$work/F.mtx" > "$work/cut.mtx"
 cmp_ "$cube" "$work/cut.mtx"; rc=$?
 [ $rc -eq 1 ] && grep -q "cut.mtx:.*ends after" "$work/err"; ok $? "a cut file: refused"
+printf '%-30s\n1 2 0.5\n' "View3D 3.2 2 1 0 18" > "$work/sparse.txt"
+cmp_ "$cube" "$work/sparse.txt"; rc=$?
+[ $rc -eq 1 ] && grep -q "sparse.txt:1: View3D format 2" "$work/err"; ok $? "View3D's sparse format 2: refused by name"
+sed '1s/general/symmetric/' "$work/F.mtx" > "$work/sym.mtx"
+cmp_ "$cube" "$work/sym.mtx"; rc=$?
+[ $rc -eq 1 ] && grep -q "sym.mtx:1: .*symmetric" "$work/err"; ok $? "symmetric Matrix Market: refused"
 cmp_ "$cube" "$work/absent.npy"; rc=$?
 [ $rc -eq 1 ] && grep -q "absent.npy" "$work/err"; ok $? "a missing file: exit 1 naming it"
 
