@@ -187,6 +187,17 @@ static void json_rows(FILE *out, const compare_ctx *c)
     fputs("\n  ],\n", out);
 }
 
+/* The histogram: counts per quarter decade from 10^log10_lo on. */
+static void json_histogram(FILE *out, const rad_ffcmp *k)
+{
+    fprintf(out, "  \"histogram\": {\"log10_lo\": %g, \"log10_bin\": %g, \"zero\": %ld, "
+                 "\"over\": %ld, \"counts\": [", RAD_FFCMP_LOG_LO, RAD_FFCMP_BIN, k->hist_zero,
+            k->hist_over);
+    for (int b = 0; b < RAD_FFCMP_BINS; b++)
+        fprintf(out, "%s%ld", b ? ", " : "", k->hist[b]);
+    fputs("]},\n", out);
+}
+
 int compare_print_json(FILE *out, const void *ctx)
 {
     const compare_ctx *c = ctx;
@@ -211,6 +222,7 @@ int compare_print_json(FILE *out, const void *ctx)
         fputs("  \"max_error_pair\": null,\n", out);
     json_pairs(out, c);
     json_rows(out, c);
+    json_histogram(out, k);
     num(out, "closure_ours", k->closure_ours, ",");
     fprintf(out, "  \"closure_ours_row\": %d,\n", k->closure_ours_row);
     num(out, "closure_theirs", k->closure_theirs, ",");

@@ -72,6 +72,12 @@ close_to "$e" 1e-6 1e-6; ok $? "its error is 1e-6 ($e)"
 grep -q 'OUTSIDE the tolerance' "$work/out"; ok $? "the verdict says outside"
 cmp_ --tolerance 1e-5 "$cube" "$work/P.tsv"; ok $? "perturbed by 1e-6: exit 0 with --tolerance 1e-5"
 [ "$(json entries_beyond_estimate "$work/p.json")" = 1 ]; ok $? "one entry beyond our own estimate"
+# the histogram: 323 entries with e = 0, one in bins 47 or 48 (counts[k]
+# is awk field k + 3), 1e-6.25 to 1e-5.75
+sed -n 's/.*"zero": \([0-9]*\), "over": \([0-9]*\), "counts": \[\(.*\)\]},$/\1 \2 \3/p' "$work/p.json" |
+  tr -d ',' | awk '{ s = 0; for (k = 3; k <= NF; k++) s += $k
+    exit !($1 == 323 && $2 == 0 && s == 1 && $50 + $51 == 1) }'
+ok $? "histogram: 323 entries exact, one near 1e-6"
 # the same perturbation in Matrix Market: entry (i, j) is value i + j n of
 # the column-major list, after the banner, a comment and the size line
 awk -v k=$((3 + 8 * n + 4)) 'NR == k { printf "%.17g\n", $1 * (1 + 1e-6); next } { print }' \
