@@ -63,13 +63,13 @@ static void help(void)
            "      --report FILE       the figures as JSON\n"
            "      --plot FILE.png     a histogram of log10 of the errors\n"
            CLI_COMMON_HELP
-           "The default --accuracy here is reference.\n"
+           "The default --accuracy here is reference; -q prints no report (the exit\n"
+           "status and --report still say it).\n"
            "\n"
            "Examples:\n"
-           "  radiosity formfactor -q --mesh 2x2 -o F.npy data/grey-cube.scene\n"
-           "  radiosity compare --mesh 2x2 --tolerance 1e-8 data/grey-cube.scene F.npy\n"
-           "  radiosity compare --mesh 2x2 --plot errors.png --report errors.json "
-           "data/grey-cube.scene F.npy\n"
+           "  radiosity formfactor -q --mesh 4x4 -o F.npy data/grey-cube.scene\n"
+           "  radiosity compare --mesh 4x4 --tolerance 1e-8 data/grey-cube.scene F.npy\n"
+           "  radiosity compare --mesh 4x4 --plot e.png data/grey-cube.scene F.npy\n"
            "\n"
            "Exit status: 0 on success (within --tolerance), 1 when the largest error\n"
            "is above --tolerance or on an error, 2 on a usage error.\n");
