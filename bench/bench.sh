@@ -1,10 +1,10 @@
 #!/bin/sh
 # bench.sh -- the fixed benchmarks behind `make bench`.  Prints figures; it
 # asserts nothing (the machines are shared: timings are not tests).
-# Usage: bench/bench.sh RADIOSITY LU_RATE DATADIR FF_RATE SOLVE_RATE
+# Usage: bench/bench.sh RADIOSITY LU_RATE DATADIR FF_RATE SOLVE_RATE [RADIOSITY_MPI MPIRUN]
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 set -e
-rad=$1 lu=$2 data=$3 ff=$4 sr=$5
+rad=$1 lu=$2 data=$3 ff=$4 sr=$5 rmpi=${6:-} mpirun=${7:-}
 cube=$data/goral1984-cube.scene
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -36,19 +36,21 @@ if [ "${BENCH_CUBE50:-0}" = 1 ]; then
   "$sr" "$cube" "$mesh" ${BENCH_CUBE50_REPEATS:-3}
   echo
   echo "== radiosity solve per solver, cube $mesh, default accuracy (s; peak memory)"
-  printf 'solver\tsolve_s\tform_factors_s\tpeak_MiB\tsummary\n'
+  printf 'solver\tsolve_s\tform_factors_s\tpeak_MiB\testimate_MiB\tsummary\n'
   for s in ${BENCH_CUBE50_SOLVERS:-gauss cholesky jacobi gauss-seidel cg}; do
     if command -v /usr/bin/time > /dev/null; then
       /usr/bin/time -f 'peak_kb %M' "$rad" solve --mesh "$mesh" --solver "$s" \
-        --elements "$tmp/e_$s.tsv" "$cube" 2> "$tmp/log_$s" || true
+        --elements "$tmp/e_$s.tsv" --report "$tmp/r_$s.json" "$cube" 2> "$tmp/log_$s" || true
     else
-      "$rad" solve --mesh "$mesh" --solver "$s" --elements "$tmp/e_$s.tsv" "$cube" 2> "$tmp/log_$s" || true
+      "$rad" solve --mesh "$mesh" --solver "$s" --elements "$tmp/e_$s.tsv" \
+        --report "$tmp/r_$s.json" "$cube" 2> "$tmp/log_$s" || true
     fi
-    awk -v s="$s" '/form factors/ { for (k = 1; k <= NF; k++) { if ($k == "factors") ff = $(k + 1);
+    est=$(sed -n 's/.*"memory_bytes": *\([0-9.e+]*\).*/\1/p' "$tmp/r_$s.json" 2>/dev/null)
+    awk -v s="$s" -v est="${est:-0}" '/form factors/ { for (k = 1; k <= NF; k++) { if ($k == "factors") ff = $(k + 1);
         if ($k == "solve") sv = $(k + 1) } }
       /^radiosity: '"$s"',/ { sub(/^radiosity: /, ""); line = $0 }
       /^peak_kb/ { mem = $2 / 1024 }
-      END { printf "%s\t%s\t%s\t%.0f\t%s\n", s, sv, ff, mem, line }' "$tmp/log_$s"
+      END { printf "%s\t%s\t%s\t%.0f\t%.0f\t%s\n", s, sv, ff, mem, est / 1048576, line }' "$tmp/log_$s"
   done
   # agreement with gauss: max |B - B_gauss| / max |B_gauss| over r g b
   if [ -f "$tmp/e_gauss.tsv" ]; then
@@ -62,4 +64,24 @@ if [ "${BENCH_CUBE50:-0}" = 1 ]; then
         END { printf "%s agrees with gauss to %.3g relative\n", s, dm / vm }'
     done
   fi
+fi
+
+# radiosity-mpi: peak memory per process against the serial run, and wall
+# time, on one machine (processes oversubscribe it beyond its cores, so
+# the times say little about a cluster; the memory is the point).
+if [ -n "$rmpi" ] && [ -x "$rmpi" ] && [ -n "$mpirun" ] && command -v /usr/bin/time > /dev/null; then
+  mesh=${BENCH_MPI_MESH:-30x30}
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  echo
+  echo "== radiosity-mpi solve, cube $mesh, one thread per process: peak memory per process"
+  printf 'processes\tpeak_MiB_max\tpeak_MiB_min\twall_s\n'
+  /usr/bin/time -f 'peak_kb %M wall %e' "$rad" solve -q --threads 1 --mesh "$mesh" \
+    --elements "$tmp/mpi_s.tsv" "$cube" 2> "$tmp/mpi_s.log" || true
+  awk '/^peak_kb/ { printf "serial\t%.0f\t%.0f\t%s\n", $2 / 1024, $2 / 1024, $4 }' "$tmp/mpi_s.log"
+  for np in ${BENCH_MPI_PROCESSES:-1 2 4}; do
+    "$mpirun" -np "$np" /usr/bin/time -f 'peak_kb %M wall %e' "$rmpi" solve -q --threads 1 \
+      --mesh "$mesh" --elements "$tmp/mpi_$np.tsv" "$cube" 2> "$tmp/mpi_$np.log" || true
+    awk -v np="$np" '/^peak_kb/ { m = $2 / 1024; if (m > hi) hi = m; if (lo == "" || m < lo) lo = m
+        if ($4 > w) w = $4 } END { printf "%s\t%.0f\t%.0f\t%s\n", np, hi, lo, w }' "$tmp/mpi_$np.log"
+  done
 fi

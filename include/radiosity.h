@@ -365,8 +365,12 @@ RAD_API rad_status rad_solve_progressive(const rad_mesh *mesh, const double *F, 
                                  rad_solve_report *report, rad_error *err);
 
 /* Bytes the solve of n elements needs at its peak (F plus one working
- * matrix, plus O(n)), for the memory check before allocating. */
+ * matrix, plus O(n)), for the memory check before allocating: LU's
+ * figure, the largest.  rad_solve_bytes_for gives the chosen solver's:
+ * F alone for the iterative and progressive solvers, F and one working
+ * matrix for gauss and cholesky (two with error_bounds), plus O(n). */
 RAD_API double rad_solve_bytes(int n, int with_errest);
+RAD_API double rad_solve_bytes_for(int n, const rad_solve_options *opt);
 
 /* Bytes of memory available now (Linux MemAvailable), 0 if unknown. */
 RAD_API double rad_memory_available(void);

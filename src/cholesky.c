@@ -351,6 +351,8 @@ rad_status rad_solve_cholesky(const rad_mesh *m, const double *F, const double *
 {
     const int n = m->nelements;
     int done[RAD_BANDS] = {0}, bands[RAD_BANDS], nb;
+    if (rad_solve_matrix_check(n, 1, "the symmetric form's working matrix", err) != RAD_OK)
+        return err ? err->status : RAD_ERR_TOOBIG;
     const int lu_only = check_reciprocity(m, F, rep);
     if (lu_only < 0)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");

@@ -270,7 +270,7 @@ static void usage(FILE *out)
  * reported by atomicfile.c), and one message is enough.  The reason is
  * the errno of the failing close (which flushes what is left, so a
  * stream that failed earlier fails again there with the same cause). */
-static int finish_stdout(int rc)
+int cli_finish_stdout(int rc)
 {
     const int earlier = ferror(stdout);
     int closed, e;
@@ -285,14 +285,14 @@ static int finish_stdout(int rc)
     return rc;
 }
 
-static void version(void)
+void cli_version(const char *program)
 {
-    printf("radiosity %s\n"
+    printf("%s %s\n"
            "Copyright (C) 2026 The radiosity authors.\n"
            "License GPLv3+: GNU GPL version 3 or later <https://gnu.org/licenses/gpl.html>.\n"
            "This is free software: you are free to change and redistribute it.\n"
            "There is NO WARRANTY, to the extent permitted by law.\n",
-           PACKAGE_VERSION);
+           program, PACKAGE_VERSION);
 }
 
 /* Run subcommand fn with argv[0] = "radiosity CMD": getopt prefixes its
@@ -323,7 +323,7 @@ static int dispatch(int argc, char **argv)
         return 0;
     }
     if (strcmp(cmd, "--version") == 0 || strcmp(cmd, "-V") == 0) {
-        version();
+        cli_version("radiosity");
         return 0;
     }
     /* each subcommand sees argv[0] = "radiosity NAME" */
@@ -334,7 +334,7 @@ static int dispatch(int argc, char **argv)
     return cli_usage_hint(NULL);
 }
 
-int main(int argc, char **argv)
+int cli_main(int argc, char **argv)
 {
     rad_blas_park_threads(); /* see blasthreads.c */
     cli_signals_install();   /* outputs are never left half-written */
@@ -342,5 +342,5 @@ int main(int argc, char **argv)
         usage(stderr);
         return EXIT_USAGE;
     }
-    return finish_stdout(dispatch(argc, argv));
+    return cli_finish_stdout(dispatch(argc, argv));
 }

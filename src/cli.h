@@ -143,6 +143,8 @@ typedef struct cli_solve {
     const char *form_factors;   /* --form-factors FILE, or NULL */
     const char *trace;          /* --trace FILE (progressive), or NULL */
     int given_solver, given_tolerance, given_max_iterations, given_bounces;
+    rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
+                                   sets its distributed one) */
 } cli_solve;
 
 #define CLI_SOLVE_LONGOPTS                                                \
@@ -219,6 +221,21 @@ int cli_run_solve(cli_run *run);
  * only when the run succeeded; cli_outputs_write): 0, or 1 (printed). */
 int cli_run_write(cli_run *run, const cli_output *extra, int n_extra);
 void cli_run_free(cli_run *run);
+
+/* `solve` with another pipeline (radiosity-mpi): its own help, a check
+ * of the options it cannot honour (0, or 2 printed), and the run. */
+typedef struct cli_solve_variant {
+    void (*help)(void);
+    int (*check)(const cli_solve *s);
+    rad_pipeline_fn pipeline;
+} cli_solve_variant;
+int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v);
+
+/* The program's main (cli.c), and the end of it: close standard output
+ * and say if it failed (rc, or 1). */
+int cli_main(int argc, char **argv);
+int cli_finish_stdout(int rc);
+void cli_version(const char *program);
 
 int cmd_formfactor(int argc, char **argv);
 int cmd_solve(int argc, char **argv);

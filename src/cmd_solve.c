@@ -317,7 +317,8 @@ int cli_run_solve(cli_run *run)
         po.solve.on_shot = keep_shot;
         po.solve.shot_user = run;
     }
-    run->status = rad_pipeline_run(&run->scene, &po, &run->res, &err);
+    run->status = (s->pipeline ? s->pipeline : rad_pipeline_run)(&run->scene, &po, &run->res,
+                                                                 &err);
     if (run->res.ff_done && cli_ff_verdict(&s->common, &run->res.ff)) {
         run->promise_unmet = 1;
         if (run->status == RAD_OK) { /* the report says why; nothing else */
@@ -392,6 +393,12 @@ static int w_ply(FILE *out, const void *c)
 
 int cmd_solve(int argc, char **argv)
 {
+    const cli_solve_variant serial = {help, NULL, NULL};
+    return cmd_solve_variant(argc, argv, &serial);
+}
+
+int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v)
+{
     static const struct option longopts[] = {
         {"output", required_argument, NULL, 'o'}, CLI_SOLVE_LONGOPTS, {NULL, 0, NULL, 0}};
     cli_solve s;
@@ -401,7 +408,7 @@ int cmd_solve(int argc, char **argv)
     cli_solve_init(&s);
     while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
         if (opt == OPT_HELP || opt == 'h') {
-            help();
+            v->help();
             return 0;
         }
         if (opt == 'o') {
@@ -415,8 +422,9 @@ int cmd_solve(int argc, char **argv)
         cli_error(optind >= argc ? "solve needs a SCENE" : "solve takes one SCENE");
         return cli_usage_hint("solve");
     }
-    if (cli_solve_check(&s))
+    if (cli_solve_check(&s) || (v->check && v->check(&s)))
         return cli_usage_hint("solve");
+    s.pipeline = v->pipeline;
     if (cli_run_load(&run, &s, argv[optind]))
         return 1;
     cli_output o[CLI_MAX_OUTPUTS];

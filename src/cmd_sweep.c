@@ -37,7 +37,7 @@ typedef struct sweep_args {
     cli_common common;
     int meshes[MAX_LIST], nmeshes;
     int acc[3], nacc;
-    int solvers[4], nsolvers;
+    int solvers[6], nsolvers;
     int truth_mesh;
     const char *output, *plot;
 } sweep_args;
@@ -73,7 +73,8 @@ static void help(void)
            "Options:\n"
            "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
            "      --accuracies LIST   classic,default,reference (default: all)\n"
-           "      --solvers LIST      gauss,jacobi,gauss-seidel (default gauss)\n"
+           "      --solvers LIST      gauss,cholesky,jacobi,gauss-seidel,cg,progressive\n"
+           "                          (default gauss)\n"
            "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
            "  -o, --output FILE       the table (TSV; default standard output)\n"
            "      --plot FILE.png     error against time, log-log, a curve per mode\n"
@@ -158,8 +159,9 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             }
             break;
         case OPT_SOLVERS:
-            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 3, a->solvers, 4)) < 0) {
-                cli_error("--solvers takes gauss, jacobi, gauss-seidel separated by commas");
+            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 6, a->solvers, 6)) < 0) {
+                cli_error("--solvers takes gauss, cholesky, jacobi, gauss-seidel, cg, progressive "
+                          "separated by commas");
                 return 2;
             }
             break;
@@ -281,12 +283,12 @@ static int write_xy(FILE *out, const void *ctx)
 
 static int plot(const sweep_args *a, const row *r, int nr, const char *title)
 {
-    rad_series s[12];
-    double x[12][MAX_LIST], y[12][MAX_LIST];
-    char labels[12][48];
+    rad_series s[18]; /* 3 accuracies x 6 solvers */
+    double x[18][MAX_LIST], y[18][MAX_LIST];
+    char labels[18][48];
     int ns = 0;
     for (int i = 0; i < a->nacc; i++)
-        for (int j = 0; j < a->nsolvers && ns < 12; j++, ns++) {
+        for (int j = 0; j < a->nsolvers && ns < 18; j++, ns++) {
             s[ns].n = 0;
             snprintf(labels[ns], sizeof labels[ns], "%s, %s", rad_accuracy_name(a->acc[i]),
                      rad_solver_name(a->solvers[j]));

@@ -376,6 +376,10 @@ int rad_export_report(FILE *out, const rad_run_info *in)
         jnum(out, "forward_error_bound", s->ferr, 1);
         jnum(out, "backward_error_bound", s->berr, 1);
         jnum(out, "convergence_factor", s->spectral_radius, 1);
+        jnum(out, "iteration_error_bound", s->error_bound, 1);
+        jnum(out, "contraction_factor", s->contraction, 1);
+        fprintf(out, "  \"fallbacks\": %d,\n", s->fallbacks);
+        jstr(out, "fallback", s->fallback);
         jnum(out, "row_sum_min", s->row_sum_min, 1);
         jnum(out, "row_sum_max", s->row_sum_max, 1);
         jbands(out, "emitted_power", s->emitted);

@@ -67,9 +67,11 @@ static rad_status check_size(const rad_scene *scene, const rad_pipeline_options 
     if (n > INT_MAX)
         return rad_fail(err, RAD_ERR_TOOBIG, "the scene's meshes make %.0f elements, more "
                         "than %d; use a coarser --mesh", n, INT_MAX);
-    r->memory_bytes = rad_solve_bytes((int)n, opt->solve.error_bounds);
-    char what[96];
-    snprintf(what, sizeof what, "%.0f elements (2 x 8 N^2 bytes of matrices)", n);
+    r->memory_bytes = rad_solve_bytes_for((int)n, &opt->solve);
+    const double k = floor(r->memory_bytes / (8 * n * n + 1));
+    char what[128];
+    snprintf(what, sizeof what, "%.0f elements (%.0f x 8 N^2 bytes of matrices for %s)", n,
+             k, opt->solve.bounces >= 0 ? "--bounces" : rad_solver_name(opt->solve.solver));
     return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
 }
 

@@ -49,6 +49,7 @@
 #include "lapack.h"
 #include "fpass.h"
 #include "lu.h"
+#include "radiosity/pipeline.h"
 #include "radiosity.h"
 #include "solvers.h"
 #include "status.h"
@@ -73,6 +74,41 @@ double rad_solve_bytes(int n, int with_errbounds)
     return nn * (with_errbounds ? 3 : 2) + 64.0 * n * sizeof(double);
 }
 
+/* Matrices of n x n doubles each solver holds at its peak, F included:
+ * LU and Cholesky build a working matrix beside F (dgesvx a factor copy
+ * too); Jacobi, Gauss-Seidel, CG, progressive and --bounces read F and
+ * keep O(n) vectors.  CG may go on to Cholesky and Cholesky to LU where
+ * the symmetric form fails: those check the memory again before their
+ * matrix is allocated (rad_solve_lu, cholesky.c). */
+static int solve_matrices(const rad_solve_options *opt)
+{
+    if (opt->bounces >= 0)
+        return 1;
+    switch (opt->solver) {
+    case RAD_SOLVER_GAUSS:
+        return opt->error_bounds ? 3 : 2;
+    case RAD_SOLVER_CHOLESKY:
+        return 2;
+    default:
+        return 1;
+    }
+}
+
+double rad_solve_bytes_for(int n, const rad_solve_options *opt)
+{
+    const double nn = (double)n * (double)n * sizeof(double);
+    /* O(n): rho, E, B, areas, the iterative solvers' per-thread sums */
+    return nn * solve_matrices(opt) + 64.0 * n * sizeof(double);
+}
+
+/* The working matrix of LU or Cholesky, refused (RAD_ERR_TOOBIG) before
+ * it is allocated when it cannot fit: a solver that reached LU by a
+ * fallback was admitted for F alone. */
+rad_status rad_solve_matrix_check(int n, int matrices, const char *what, rad_error *err)
+{
+    return rad_memory_check(matrices * (double)n * (double)n * sizeof(double), what, NULL, err);
+}
+
 static double max_abs(const double *x, size_t n)
 {
     double m = 0;
@@ -89,6 +125,9 @@ rad_status rad_solve_lu(int n, const double *F, const double *rho, const double 
                         double *B, const int *bands, int nb, const rad_solve_options *opt,
                         rad_solve_report *rep, rad_error *err)
 {
+    if (rad_solve_matrix_check(n, opt->error_bounds ? 2 : 1, "the LU factorisation's "
+                               "working matrix", err) != RAD_OK)
+        return err ? err->status : RAD_ERR_TOOBIG;
     const size_t nn = (size_t)n * n;
     double *A = malloc(sizeof *A * nn), *AF = NULL;
     int *ipiv = malloc(sizeof *ipiv * (size_t)n), *iwork = malloc(sizeof *iwork * (size_t)n);
@@ -244,33 +283,19 @@ static rad_status solve_gauss(int n, const double *F, const double *rho, const d
 /* The report's powers are sum A_i x_i in the user's units: the sums are
  * taken with the scaled areas and E (2^-ka, 2^-ke) and scaled back, so
  * they are inf only when the power itself exceeds the double range; the
- * balance, a ratio, is computed before that. */
-static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
-                           const double *B, const double *area, int ka, int ke,
-                           rad_solve_report *rep, rad_error *err)
+ * balance, a ratio, is computed before that.  H = F B and rs, the row
+ * sums of F, come from the caller (solvers.h). */
+void rad_solve_balance(int n, const double *H, const double *rs, const double *rho,
+                       const double *E, const double *B, const double *area, int ka, int ke,
+                       rad_solve_report *rep)
 {
-    const size_t n3 = (size_t)n * RAD_BANDS;
-    double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
-    if (!H || !rs) {
-        free(H);
-        free(rs);
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    }
-    for (int j = 0; j < n; j++)
-        for (int i = 0; i < n; i++)
-            rs[i] += F[(size_t)i + (size_t)j * n];
     rep->row_sum_min = n ? HUGE_VAL : 0;
     rep->row_sum_max = n ? -HUGE_VAL : 0;
     for (int i = 0; i < n; i++) {
         rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
         rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
     }
-    if (rad_fpass_mul(n, F, B, H)) { /* H = F B: the irradiance of Cohen et al. 1988 */
-        free(H);
-        free(rs);
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    }
-    double emax = max_abs(E, n3), res = 0;
+    double emax = max_abs(E, (size_t)n * RAD_BANDS), res = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
         double em = 0, ab = 0, es = 0;
         for (int i = 0; i < n; i++) {
@@ -287,6 +312,28 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
         rep->balance[b] = em > 0 ? (em - ab - es) / em : ldexp(em - ab - es, ka + ke);
     }
     rep->residual = emax > 0 ? res / emax : res;
+}
+
+static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
+                           const double *B, const double *area, int ka, int ke,
+                           rad_solve_report *rep, rad_error *err)
+{
+    const size_t n3 = (size_t)n * RAD_BANDS;
+    double *H = malloc(sizeof *H * n3), *rs = calloc((size_t)n, sizeof *rs);
+    if (!H || !rs) {
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++)
+            rs[i] += F[(size_t)i + (size_t)j * n];
+    if (rad_fpass_mul(n, F, B, H)) { /* H = F B: the irradiance of Cohen et al. 1988 */
+        free(H);
+        free(rs);
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    }
+    rad_solve_balance(n, H, rs, rho, E, B, area, ka, ke, rep);
     free(H);
     free(rs);
     return RAD_OK;

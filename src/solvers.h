@@ -39,6 +39,19 @@ rad_status rad_solve_cg(const rad_mesh *m, const double *F, const double *rho,
                         const double *E, double *B, const rad_solve_options *opt,
                         rad_solve_report *rep, rad_error *err);
 
+/* The report's row sums, residual and energy balance from H = F B and
+ * the row sums rs of F (solve.c); area and E scaled by 2^-ka and 2^-ke,
+ * which the powers undo.  The distributed solve (mpisolve.c) reduces H
+ * and rs over its processes and calls this on rank 0. */
+void rad_solve_balance(int n, const double *H, const double *rs, const double *rho,
+                       const double *E, const double *B, const double *area, int ka, int ke,
+                       rad_solve_report *rep);
+
+/* RAD_ERR_TOOBIG (the message names `what`) when `matrices` n x n
+ * matrices of doubles would not fit in the memory available now: the
+ * check before LU's or Cholesky's working matrix (solve.c). */
+rad_status rad_solve_matrix_check(int n, int matrices, const char *what, rad_error *err);
+
 /* Append "why" to the report's fallback note (count it): cholesky, cg. */
 void rad_report_fallback(rad_solve_report *rep, const char *why);
 

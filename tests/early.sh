@@ -51,6 +51,16 @@ ok $? "render --up along the view direction: exit 1 before solving"
 timeout 20 "$RADIOSITY" solve --mesh 4000x4000 "$cube" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q '96000000 elements.* need [0-9]* MiB, but only [0-9]* MiB are available' "$work/err"
 ok $? "--mesh 4000x4000: refused with both numbers ($(head -c 200 "$work/err"))"
+# the need follows the solver: LU and Cholesky hold F and a working
+# matrix, the iterative solvers F alone (8 N^2 bytes each, N = 96e6)
+need() { sed -n 's/.* need \([0-9]*\) MiB.*/\1/p' "$1"; }
+cp "$work/err" "$work/err_gauss"
+timeout 20 "$RADIOSITY" solve --solver jacobi --mesh 4000x4000 "$cube" 2> "$work/err_jacobi"
+grep -q '1 x 8 N^2 bytes of matrices for jacobi' "$work/err_jacobi" &&
+  grep -q '2 x 8 N^2 bytes of matrices for gauss' "$work/err_gauss" &&
+  awk -v g="$(need "$work/err_gauss")" -v j="$(need "$work/err_jacobi")" \
+    'BEGIN { r = g / j; exit !(j > 0 && r > 1.999 && r < 2.001) }'
+ok $? "the need names the solver: gauss $(need "$work/err_gauss") MiB = 2 x jacobi's $(need "$work/err_jacobi") MiB"
 timeout 20 "$RADIOSITY" render --mesh 4000x4000 -o "$work/m.png" "$cube" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q 'MiB are available' "$work/err"; ok $? "render --mesh 4000x4000: refused"
 timeout 20 "$RADIOSITY" formfactor --mesh 4000x4000 -o "$work/ff.tsv" "$cube" 2> "$work/err"; rc=$?

@@ -66,6 +66,20 @@ ok $? "--tolerance with cholesky: exit 2"
 sed -n 's/.*error <= \([^ ]*\) relative.*/\1/p' "$work/cg.err" | awk '{ n++; if (!($1 <= 1e-12)) bad = 1 } END { exit bad || n != 1 }'
 ok $? "cg: the summary reports an error bound <= 1e-12"
 
+# the report's iteration_error_bound bounds the true error: stopped at a
+# loose tolerance, Jacobi and Gauss-Seidel must be within their reported
+# bound of gauss (whose own error is round-off, 1e-15 here)
+for s in jacobi gauss-seidel cg; do
+  "$RADIOSITY" solve -q --mesh 3x3 --solver $s --tolerance 1e-5 --elements "$work/t_$s.tsv" \
+    --report "$work/t_$s.json" "$cube"
+  bound=$(sed -n 's/.*"iteration_error_bound": *\([^,]*\),.*/\1/p' "$work/t_$s.json")
+  paste "$work/e.tsv" "$work/t_$s.tsv" | awk -F'\t' -v bound="${bound:-x}" 'NR > 1 {
+      for (k = 12; k <= 14; k++) { d = $k - $(k + 14); if (d < 0) d = -d; if (d > dm) dm = d
+        v = $k < 0 ? -$k : $k; if (v > vm) vm = v } }
+    END { e = dm / vm; printf "# %s: true error %.3g, reported bound %s\n", "'$s'", e, bound
+      exit !(bound + 0 == bound && bound <= 1e-5 && e <= bound + 1e-14) }'
+  ok $? "--solver $s --tolerance 1e-5: the report's iteration_error_bound ($bound) covers the error against gauss"
+done
 "$RADIOSITY" solve --bounces -1 "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "negative bounces: exit 2"
 "$RADIOSITY" solve --help | grep -q -- '--bounces'; ok $? "solve --help lists --bounces"
 

@@ -52,6 +52,11 @@ RAD_API rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_o
                             rad_result *result, rad_error *err);
 RAD_API void rad_result_free(rad_result *result);
 
+/* The signature of rad_pipeline_run, for callers that take another run
+ * with the same contract (the distributed solve of radiosity-mpi). */
+typedef rad_status (*rad_pipeline_fn)(const rad_scene *scene, const rad_pipeline_options *opt,
+                                      rad_result *result, rad_error *err);
+
 /* Elements the scene's mesh specification makes (a double: it may exceed
  * any int), without meshing. */
 RAD_API double rad_scene_element_count(const rad_scene *scene);

@@ -1,0 +1,36 @@
+#!/bin/sh
+# sweep.sh -- radiosity sweep: the table's rows and the solvers it races.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+#
+# Every solver solves the same system on the same F, so at one mesh and
+# accuracy their errors against the truth differ only by what each solver
+# leaves: round-off for gauss and cholesky, at most the tolerance (1e-12,
+# a bound on the relative error of B) for the iterative ones.  The error
+# of an RMS against a truth of size ~1 moves by no more than that, so
+# 1e-9 absolute is a margin of 1000.
+. "${top_srcdir:-.}/tests/lib.sh"
+scene="$top_srcdir/data/grey-cube.scene"
+
+"$RADIOSITY" sweep -q --meshes 1,2 --accuracies default \
+  --solvers gauss,cholesky,jacobi,gauss-seidel,cg,progressive -o "$work/s.tsv" "$scene"
+ok $? "sweep with all six solvers: exit 0"
+rows=$(awk 'NR > 1' "$work/s.tsv" | wc -l)
+[ "$rows" -eq 12 ]; ok $? "2 meshes x 6 solvers = 12 rows ($rows)"
+awk -F '\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+  $c["solver"] == "gauss" { g[$c["mesh"]] = $c["rms_error"] }
+  { e[NR] = $c["rms_error"]; m[NR] = $c["mesh"]; s[NR] = $c["solver"] }
+  END { for (k in e) { d = e[k] - g[m[k]]; if (d < 0) d = -d
+      if (!(m[k] in g) || d > 1e-9) { print "# " s[k] " " m[k] " differs by " d; bad = 1 } }
+    exit bad }' "$work/s.tsv"
+ok $? "every solver's error equals gauss's within 1e-9 at each mesh"
+for s in cholesky cg progressive; do
+  grep -q "	$s	" "$work/s.tsv"; ok $? "the table has $s rows"
+done
+
+"$RADIOSITY" sweep -q --meshes 1 --solvers gauss,lu "$scene" > "$work/o" 2> "$work/err"
+[ $? -eq 2 ] && grep -q 'cholesky' "$work/err"
+ok $? "an unknown solver is a usage error that lists the six"
+"$RADIOSITY" sweep --help | grep -q 'gauss,cholesky,jacobi,gauss-seidel,cg,progressive'
+ok $? "sweep --help lists the six solvers"
+
+done_testing
