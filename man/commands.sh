@@ -5,7 +5,7 @@
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 rad=$1
 echo "[COMMANDS]"
-for c in solve render formfactor analytic sweep progress animate; do
+for c in solve render formfactor analytic sweep progress animate compare; do
   echo ".SS \"radiosity $c\""
   echo ".nf"
   "$rad" $c --help | sed -e 's/\\/\\e/g' -e "s/^\\([.']\\)/\\\\\\&\\1/"

@@ -252,5 +252,6 @@ int cmd_progress(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
 int cmd_analytic(int argc, char **argv);
 int cmd_animate(int argc, char **argv);
+int cmd_compare(int argc, char **argv);
 
 #endif /* RAD_CLI_H */

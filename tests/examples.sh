@@ -5,7 +5,7 @@
 . "${top_srcdir:-.}/tests/lib.sh"
 mkdir "$work/run" && ln -s "$top_srcdir/data" "$work/run/data"
 cd "$work/run" || exit 1
-for cmd in formfactor solve render analytic progress sweep animate; do
+for cmd in formfactor solve render analytic progress sweep animate compare; do
   "$RADIOSITY" $cmd --help | sed -n 's/^  radiosity \([^(]*\).*/\1/p' > "../$cmd.examples"
   [ -s "../$cmd.examples" ]; ok $? "$cmd --help shows examples"
   while IFS= read -r line; do
