@@ -36,6 +36,7 @@
 
 #include "formfactor.h"
 #include "mesh.h"
+#include "ffrow.h"
 #include "occlusion.h"
 #include "radiosity.h"
 #include "status.h"
@@ -131,8 +132,9 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     return f;
 }
 
-/* Element polygons with contiguous vertices, as the kernel wants them. */
-static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
+/* Element polygons with contiguous vertices, as the kernel wants them
+ * (also the per-shot rows of ffrow.c, which must see the same polygons). */
+rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
                              rad_ff_edge **edges)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
@@ -162,7 +164,7 @@ static rad_status mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
 }
 
 /* The promise of each mode on an entry's relative error (README, radiosity.h). */
-static double promise_of(rad_accuracy a)
+double rad_ff_promise(rad_accuracy a)
 {
     return a == RAD_ACCURACY_REFERENCE ? 1e-9 : a == RAD_ACCURACY_DEFAULT ? 1e-6 : NAN;
 }
@@ -178,7 +180,7 @@ static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int
                        double *errest, double *rowerr, double *maxerr, double *maxrel,
                        long *unmet)
 {
-    const double promise = promise_of(opt->accuracy); /* NaN: no test */
+    const double promise = rad_ff_promise(opt->accuracy); /* NaN: no test */
     const int want = errest != NULL || opt->accuracy != RAD_ACCURACY_CLASSIC;
     double *col = F + (size_t)i * n, *ecol = errest ? errest + (size_t)i * n : NULL;
     double row_i = 0;
@@ -292,7 +294,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0, clamped = 0;
     long unmet = 0;
-    if (mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
+    if (rad_ff_mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
         free(edges);
@@ -388,7 +390,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
         stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
         stats->max_row_error = max_row_error;
-        stats->promise = promise_of(opt->accuracy);
+        stats->promise = rad_ff_promise(opt->accuracy);
         stats->promise_unmet = 2 * unmet; /* both entries of each pair */
         stats->vis_needed = vst.needed;
         stats->vis_pairs_tested = vst.pairs_tested;
