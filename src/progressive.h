@@ -12,7 +12,22 @@
 #ifndef RAD_PROGRESSIVE_H
 #define RAD_PROGRESSIVE_H
 
+#include "ffrow.h"
 #include "radiosity.h"
+
+/* Where a shot's form factors come from: the dense matrix F (column i is
+ * F_ji for every j), or, when F is NULL, rad_ffrow computing each column
+ * (and each patch's F_jP) when it shoots and forgetting it. */
+typedef struct rad_shoot_source {
+    const double *F;
+    rad_ffrow *row;
+} rad_shoot_source;
+
+/* rad_solve_progressive on either source (rho, E, B as there). */
+rad_status rad_progressive_run(const rad_mesh *m, const rad_shoot_source *src,
+                               const double *rho, const double *E,
+                               const rad_solve_options *opt, double *B,
+                               rad_solve_report *report, rad_error *err);
 
 /* The four methods of the race, in the order of the table's columns. */
 typedef enum rad_race_method {
