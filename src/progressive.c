@@ -711,6 +711,10 @@ typedef struct race {
     double total_area, scale;
     double *rms;
     int *reached;
+    const rad_shoot_source *src;
+    double *row, *col;          /* matrix-free gathering: row i (and column i) */
+    rad_error *err;
+    rad_status st;              /* a computed row or column that failed */
 } race;
 
 /* Record method m's displayed B after k steps; non-zero: stop. */
@@ -736,13 +740,14 @@ static int race_progress(const race *rc, int done)
     return o->progress(o->progress_user, "race", done, 3.0 * o->steps);
 }
 
-/* Gauss-Seidel for one element: B_i <- E_i + rho_i sum_j F_ij B_j. */
-static void gather_row(int n, const double *F, const double *rho, const double *E, double *B,
-                       int i)
+/* Gauss-Seidel for one element: B_i <- E_i + rho_i sum_j F_ij B_j, with
+ * F_ij = Fi[j * stride] (row i of the matrix, or computed: stride 1). */
+static void gather_row(int n, const double *Fi, size_t stride, const double *rho,
+                       const double *E, double *B, int i)
 {
     double h[NB] = {0, 0, 0};
     for (int j = 0; j < n; j++) {
-        const double f = F[(size_t)i + (size_t)j * n];
+        const double f = Fi[(size_t)j * stride];
         for (int b = 0; b < NB; b++)
             h[b] += f * B[(size_t)j + (size_t)b * n];
     }
@@ -752,12 +757,17 @@ static void gather_row(int n, const double *F, const double *rho, const double *
     }
 }
 
-static int race_gather(const race *rc, const double *F, const double *E, double *B)
+static int race_gather(race *rc, const double *E, double *B)
 {
+    const double *F = rc->src->F;
     memcpy(B, E, sizeof *B * (size_t)rc->n * NB);
     for (int k = 0; k <= rc->opt->steps; k++) {
+        const int i = rc->n > 0 ? (k - 1) % rc->n : 0;
+        if (k > 0 && rc->n > 0 && !F &&
+            (rc->st = rad_ffrow_column(rc->src->row, i, rc->col, rc->row, rc->err)) != RAD_OK)
+            return 1;
         if (k > 0 && rc->n > 0)
-            gather_row(rc->n, F, rc->rho, E, B, (k - 1) % rc->n);
+            gather_row(rc->n, F ? F + i : rc->row, F ? (size_t)rc->n : 1, rc->rho, E, B, i);
         if (race_record(rc, RAD_RACE_GATHERING, k, B) || race_progress(rc, k))
             return 1;
     }
@@ -765,14 +775,15 @@ static int race_gather(const race *rc, const double *F, const double *E, double 
 }
 
 /* Shooting from sh (already initialised); sorted also records the ambient. */
-static int race_shoot(const race *rc, shooter *sh, int done, double *disp)
+static int race_shoot(race *rc, shooter *sh, int done, double *disp)
 {
     const ambient amb = ambient_init(rc->n, rc->area, rc->rho);
     const int m = sh->sort ? RAD_RACE_SORTED : RAD_RACE_SHOOTING;
     for (int k = 0; k <= rc->opt->steps; k++) {
         double shot[NB], U[NB], a[NB];
-        if (k > 0 && sh->nshooters > 0)
-            (void)shooter_shoot(sh, shooter_pick(sh), shot); /* dense: cannot fail */
+        if (k > 0 && sh->nshooters > 0 &&
+            (rc->st = shooter_shoot(sh, shooter_pick(sh), shot)) != RAD_OK)
+            return 1;
         if (race_record(rc, m, k, sh->B) || race_progress(rc, done + k))
             return 1;
         if (!sh->sort)
@@ -789,6 +800,14 @@ static int race_shoot(const race *rc, shooter *sh, int done, double *disp)
 rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bref,
                         const rad_race_options *opt, double *rms, int *reached, rad_error *err)
 {
+    const rad_shoot_source src = {F, NULL};
+    return rad_race_run_source(mesh, &src, Bref, opt, rms, reached, err);
+}
+
+rad_status rad_race_run_source(const rad_mesh *mesh, const rad_shoot_source *src,
+                               const double *Bref, const rad_race_options *opt, double *rms,
+                               int *reached, rad_error *err)
+{
     const int n = mesh->nelements;
     const size_t n3 = (size_t)(n ? n : 1) * NB;
     rad_status st = RAD_OK;
@@ -797,7 +816,8 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
     double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
     double *B = malloc(sizeof *B * n3), *disp = malloc(sizeof *disp * n3);
     double *area = element_areas(mesh);
-    if (!rho || !E || !B || !disp || !area) {
+    double *row = src->F ? NULL : malloc(sizeof *row * n3);
+    if (!rho || !E || !B || !disp || !area || (!src->F && !row)) {
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the race");
         goto done;
     }
@@ -808,19 +828,20 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
         }
     for (int m = 0; m < RAD_RACE_METHODS; m++)
         reached[m] = -1;
-    race rc = {opt, n, rho, area, Bref, sum(area, n), max_abs(Bref, (size_t)n * NB), rms, reached};
-    int stop = race_gather(&rc, F, E, B);
+    race rc = {opt, n, rho, area, Bref, sum(area, n), max_abs(Bref, (size_t)n * NB), rms,
+               reached, src, row, row ? row + n : NULL, err, RAD_OK};
+    int stop = race_gather(&rc, E, B);
     for (int sort = 0; sort <= 1 && !stop && st == RAD_OK; sort++) {
         shooter sh;
-        const rad_shoot_source src = {F, NULL};
-        st = shooter_init(&sh, mesh, &src, NULL, rho, E, area, opt->patches, sort, B, err);
+        st = shooter_init(&sh, mesh, src, NULL, rho, E, area, opt->patches, sort, B, err);
         if (st == RAD_OK)
             stop = race_shoot(&rc, &sh, (1 + sort) * opt->steps, disp);
         shooter_free(&sh);
     }
     if (stop && st == RAD_OK)
-        st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
+        st = rc.st != RAD_OK ? rc.st : rad_fail(err, RAD_ERR_INVALID, "interrupted");
 done:
+    free(row);
     free(rho);
     free(E);
     free(B);

@@ -68,5 +68,11 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
                         const rad_race_options *opt, double *rms, int *reached,
                         rad_error *err);
 
+/* The same race on either source of form factors: without a matrix the
+ * gathering row F_i. and each shooter's column are computed when needed
+ * (ffrow.h), the same values as the matrix's. */
+rad_status rad_race_run_source(const rad_mesh *mesh, const rad_shoot_source *src,
+                               const double *Bref, const rad_race_options *opt, double *rms,
+                               int *reached, rad_error *err);
 
 #endif /* RAD_PROGRESSIVE_H */

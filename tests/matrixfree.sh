@@ -104,6 +104,22 @@ ok $? "--patches 2x3 converges to the patch-element solution, near gauss's ($e)"
 e=$(relerr "$work/p33.tsv" "$work/g3.tsv")
 close_to "$e" 0 1e-8; ok $? "--patches 3x3 on a 3x3 mesh agrees with gauss within 1e-8 ($e)"
 
+# ---- radiosity progress --matrix ------------------------------------------------
+for m in dense none; do
+  "$RADIOSITY" progress --matrix $m --mesh 3x3 --steps 60 -o "$work/race_$m.tsv" "$cube" \
+    2> "$work/race_$m.err"
+  ok $? "progress --matrix $m"
+  grep -q "matrix $m" "$work/race_$m.err"; ok $? "progress --matrix $m: the summary says so"
+done
+# the same steps; only the reference differs (gauss, or shooting to 1e-12)
+paste "$work/race_dense.tsv" "$work/race_none.tsv" | awk -F'\t' 'NR > 1 { h = NF / 2
+  for (k = 2; k <= h; k++) { d = $k - $(k + h); if (d < 0) d = -d; if (d > m) m = d
+    if ($k > s) s = $k } } END { exit !(NR == 62 && m <= 1e-9 * s) }'
+ok $? "progress: the race without a matrix is the race with it (to 1e-9 of the largest error)"
+"$RADIOSITY" progress --matrix full "$cube" > /dev/null 2>&1; [ $? -eq 2 ]
+ok $? "progress --matrix full: exit 2"
+"$RADIOSITY" progress --help | grep -q -- "--matrix MODE"; ok $? "progress --help lists --matrix"
+
 # ---- usage -------------------------------------------------------------------
 usage() { "$RADIOSITY" solve "$@" "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; }
 usage --solver progressive --matrix sparse; ok $? "--matrix sparse: exit 2"
