@@ -26,6 +26,13 @@ echo "== sweep of the cube (error against the reference 20x20 solution)"
   --plot "${BENCH_PLOT:-sweep.png}" "$cube"
 echo "(plot: ${BENCH_PLOT:-sweep.png})"
 
+echo
+echo "== progressive refinement without a stored matrix (--matrix none --patches ${BENCH_MFREE_PATCHES:-4x4}),"
+echo "   cube to unshot power < ${BENCH_MFREE_TOL:-1e-3} of the emitted (BENCH_MFREE=0 skips; ~1-3 min)"
+if [ "${BENCH_MFREE:-1}" = 1 ]; then
+  sh "$(dirname "$0")/matrixfree.sh" "$rad" "$data"
+fi
+
 # The solve phase of every solver on the 15,000-element cube (issue 18).
 # Long (form factors ~9 s per run, gauss ~80 s, 3.6 GB): only with
 # BENCH_CUBE50=1; BENCH_CUBE50_SOLVERS and BENCH_CUBE50_MESH choose.

@@ -36,8 +36,11 @@ enum {
     OPT_SNAPSHOTS,
     OPT_SNAPSHOT_PREFIX,
     OPT_RACE_PATCHES,
-    OPT_RACE_MATRIX
+    OPT_RACE_MATRIX,
+    OPT_SNAPSHOTS_AT
 };
+
+#define MAX_SNAPSHOTS_AT 256
 
 typedef struct progress_args {
     cli_common common;
@@ -46,6 +49,8 @@ typedef struct progress_args {
     const char *plot;           /* PNG, or NULL */
     const char *prefix;         /* snapshot file prefix */
     rad_matrix_mode matrix;     /* --matrix; auto decided in prepare() */
+    int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
+    int steps_given;
 } progress_args;
 
 static void help(void)
@@ -79,6 +84,10 @@ static void help(void)
            "      --snapshots K       render every K steps of every method (the\n"
            "                          scene's camera, 512 x 512, the exposure of the\n"
            "                          converged solution) to PREFIX-METHOD-STEP.png\n"
+           "      --snapshots-at LIST render at these steps of every method (comma-\n"
+           "                          separated, e.g. 1,2,24,100 as the paper's figures\n"
+           "                          2-5; the sorted_ambient images show the ambient\n"
+           "                          term); --steps grows to the last one if not given\n"
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
            CLI_COMMON_HELP
            "\n"
@@ -86,6 +95,7 @@ static void help(void)
            "  radiosity progress --mesh 3x3 data/goral1984-cube.scene --plot race.png\n"
            "  radiosity progress --patches --mesh 3x3 data/cornell-box.scene -o race.tsv\n"
            "  radiosity progress --mesh 3x3 --snapshots 24 data/cornell-box.scene\n"
+           "  radiosity progress --mesh 3x3 --snapshots-at 1,2,24,100 --snapshot-prefix fig data/cornell-box.scene\n"
            "  radiosity progress --matrix none --mesh 5x5 --steps 100 data/goral1984-cube.scene\n"
            "\n"
            "A regular file is written to a temporary beside it and renamed at the end:\n"
@@ -95,11 +105,38 @@ static void help(void)
            DEFAULT_STEPS_CAP);
 }
 
+/* --snapshots-at 1,2,24,100: ascending steps >= 0; 0 or 2 (printed). */
+static int parse_steps(progress_args *a, const char *arg)
+{
+    char buf[4096], *save = NULL;
+    int n = 0;
+    if (strlen(arg) >= sizeof buf || !*arg)
+        goto bad;
+    strcpy(buf, arg);
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int k;
+        if (n == MAX_SNAPSHOTS_AT || cli_parse_int(t, 0, MAX_STEPS, &k) ||
+            (n > 0 && k <= a->at[n - 1]))
+            goto bad;
+        a->at[n++] = k;
+    }
+    if (n == 0 || arg[strlen(arg) - 1] == ',')
+        goto bad;
+    a->race.snapshot_at = a->at;
+    a->race.nsnapshot_at = n;
+    return 0;
+bad:
+    cli_error("--snapshots-at takes ascending steps from 0 to %d separated by commas (at "
+              "most %d), not '%s'", MAX_STEPS, MAX_SNAPSHOTS_AT, arg);
+    return 2;
+}
+
 /* 0 handled, 1 not ours, 2 usage error (printed). */
 static int parse_option(progress_args *a, int opt, const char *arg)
 {
     switch (opt) {
     case OPT_STEPS:
+        a->steps_given = 1;
         if (cli_parse_int(arg, 1, MAX_STEPS, &a->race.steps)) {
             cli_error("--steps takes a whole number from 1 to %d, not '%s'", MAX_STEPS, arg);
             return 2;
@@ -123,6 +160,8 @@ static int parse_option(progress_args *a, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_SNAPSHOTS_AT:
+        return parse_steps(a, arg);
     case OPT_SNAPSHOT_PREFIX:
         a->prefix = arg;
         return 0;
@@ -362,13 +401,16 @@ static int race(progress_args *a, pipeline *p)
     const int n = p->res.mesh.nelements;
     if (a->race.steps == 0)
         a->race.steps = 2 * n < 1 ? 1 : 2 * n > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : 2 * n;
+    const int last = a->race.nsnapshot_at ? a->race.snapshot_at[a->race.nsnapshot_at - 1] : 0;
+    if (!a->steps_given && last > a->race.steps)
+        a->race.steps = last;
     p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
     if (!p->rms) {
         cli_error("out of memory for %d steps", a->race.steps);
         return 1;
     }
     memset(&sc, 0, sizeof sc);
-    if (a->race.snapshot_every > 0) {
+    if (a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0) {
         sc.mesh = &p->res.mesh;
         sc.prefix = a->prefix ? a->prefix : "progress";
         rad_render_options_init(&sc.ropt);
@@ -423,7 +465,7 @@ static int run(progress_args *a, const char *path)
     memset(&p, 0, sizeof p);
     if (cli_load_scene(path, &a->common, &p.scene))
         return 1;
-    if (a->race.snapshot_every > 0 &&
+    if ((a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0) &&
         (!p.scene.camera.defined || rad_camera_check(&p.scene.camera, &err) != RAD_OK)) {
         if (p.scene.camera.defined)
             cli_error("%s: --snapshots: %s", path, err.message);
@@ -452,6 +494,7 @@ int cmd_progress(int argc, char **argv)
         {"matrix", required_argument, NULL, OPT_RACE_MATRIX},
         {"snapshots", required_argument, NULL, OPT_SNAPSHOTS},
         {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
+        {"snapshots-at", required_argument, NULL, OPT_SNAPSHOTS_AT},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
@@ -468,8 +511,8 @@ int cmd_progress(int argc, char **argv)
         if (parse_option(&a, opt, optarg) != 0)
             return cli_usage_hint("progress");
     }
-    if (a.prefix && a.race.snapshot_every == 0) {
-        cli_error("--snapshot-prefix needs --snapshots K");
+    if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
+        cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
         return cli_usage_hint("progress");
     }
     if (optind != argc - 1) {

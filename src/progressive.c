@@ -717,6 +717,19 @@ typedef struct race {
     rad_status st;              /* a computed row or column that failed */
 } race;
 
+/* Is step k one the caller wants a snapshot of? */
+static int snapshot_due(const rad_race_options *o, int k)
+{
+    if (!o->snapshot)
+        return 0;
+    if (o->snapshot_every > 0 && k % o->snapshot_every == 0)
+        return 1;
+    for (int j = 0; j < o->nsnapshot_at; j++)
+        if (o->snapshot_at[j] == k)
+            return 1;
+    return 0;
+}
+
 /* Record method m's displayed B after k steps; non-zero: stop. */
 static int race_record(const race *rc, int m, int k, const double *B)
 {
@@ -726,8 +739,7 @@ static int race_record(const race *rc, int m, int k, const double *B)
         rms_error(rc->n, rc->area, rc->total_area, rc->rho, NULL, B, rc->Bref);
     if (rc->reached[m] < 0 && max_diff(B, rc->Bref, n3) <= o->reach * rc->scale)
         rc->reached[m] = k;
-    if (o->snapshot && o->snapshot_every > 0 && k % o->snapshot_every == 0 &&
-        o->snapshot(o->snapshot_user, m, k, B))
+    if (snapshot_due(o, k) && o->snapshot(o->snapshot_user, m, k, B))
         return 1;
     return 0;
 }

@@ -51,6 +51,8 @@ typedef struct rad_race_options {
     int patches;                /* the shooters shoot as patches (surfaces) */
     double reach;               /* reached[]: max |B - Bref| <= reach * max |Bref| */
     int snapshot_every;         /* call snapshot every K steps (and at 0); 0: never */
+    const int *snapshot_at;     /* ... and at these steps (ascending), or NULL */
+    int nsnapshot_at;
     rad_race_snapshot_fn snapshot;
     void *snapshot_user;
     rad_progress_fn progress;   /* may be NULL */
