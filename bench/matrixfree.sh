@@ -16,13 +16,18 @@
 # /usr/bin/time's maximum resident set size; CPU seconds are user + system
 # of the whole run (mesh and output included: the rate per CPU second is a
 # lower bound).  The dense matrix at 101,400 elements would be 82 GB
-# (8 N^2) and its solve 164 GB (rad_solve_bytes).
+# (8 N^2) and its solve 164 GB (rad_solve_bytes).  OMP_WAIT_POLICY is
+# passive unless set: threads waiting at a shot's barrier sleep instead of
+# spinning, so the CPU seconds count work (on a loaded machine spinning
+# doubled them).
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 set -e
 rad=$1 data=$2
 cube=$data/goral1984-cube.scene
 patches=${BENCH_MFREE_PATCHES:-4x4}
 tol=${BENCH_MFREE_TOL:-1e-3}
+OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
+export OMP_WAIT_POLICY
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if ! command -v /usr/bin/time > /dev/null 2>&1; then
@@ -56,3 +61,18 @@ awk -F'\t' '$4 == "ok" { n++; x[n] = $2; y[n] = $7 * 1048576 }
     b = sxy / sxx; a = my - b * mx; r2 = (syy > 0 ? sxy * sxy / (sxx * syy) : 1)
     printf "peak RSS = %.1f MiB + %.0f bytes x N (least squares over %d sizes, R^2 = %.5f)\n", a / 1048576, b, n, r2
     printf "(the dense path: 16 N^2 bytes, %.3g GB at N = %d)\n", 16 * x[n] * x[n] / 1e9, x[n] }' "$tmp/table"
+# element shooting (no patches): element-element pairs, as the dense fill
+# integrates them; a fixed number of shots (the run stops short of
+# convergence on purpose, exit 1, its report still written)
+mesh=${BENCH_MFREE_ELEMENT_MESH:-60x60} shots=${BENCH_MFREE_ELEMENT_SHOTS:-100}
+/usr/bin/time -f 'peak_kb %M cpu %U %S' "$rad" solve -q --mesh "$mesh" --solver progressive \
+  ${BENCH_MFREE_THREADS:+--threads "$BENCH_MFREE_THREADS"} \
+  --matrix none --max-iterations "$shots" --report "$tmp/el.json" "$cube" > "$tmp/el.log" 2>&1 || true
+awk -v mesh="$mesh" -v shots="$shots" '
+  /"elements":/ { gsub(/[^0-9]/, "", $2); n = $2 }
+  /"solve":/ { for (k = 1; k <= NF; k++) if ($k ~ /"solve":/) { t = $(k + 1); gsub(/[,}]/, "", t) } }
+  /^peak_kb/ { cpu = $4 + $5 }
+  END { p = shots * (n - 1)
+    printf "element shooting, %s (%d elements), %d shots: %.3g pairs/s, %.3g pairs per CPU second, %.3g s per shot\n",
+      mesh, n, shots, (t > 0 ? p / t : 0), (cpu > 0 ? p / cpu : 0), (shots > 0 ? t / shots : 0) }' \
+  "$tmp/el.json" "$tmp/el.log"
