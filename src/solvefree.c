@@ -51,7 +51,7 @@ static void scale_by(double *x, size_t n, int e)
         x[k] = ldexp(x[k], e);
 }
 
-static void report_init(rad_solve_report *rep, const rad_solve_options *opt)
+static void report_init(rad_solve_report *rep)
 {
     memset(rep, 0, sizeof *rep);
     rep->solver = RAD_SOLVER_PROGRESSIVE;
@@ -62,7 +62,6 @@ static void report_init(rad_solve_report *rep, const rad_solve_options *opt)
     rep->row_sum_min = rep->row_sum_max = NAN;
     for (int b = 0; b < RAD_BANDS; b++)
         rep->absorbed[b] = rep->escaped[b] = rep->balance[b] = NAN;
-    (void)opt;
 }
 
 /* B = B' 2^ke, refusing what leaves the double range. */
@@ -88,7 +87,7 @@ rad_status rad_solve_matrix_free(const rad_mesh *m, const rad_ff_options *ff,
     rad_ffrow *row = NULL;
     if (!rep)
         rep = &local;
-    report_init(rep, opt);
+    report_init(rep);
     if (opt->bounces >= 0 || opt->solver != RAD_SOLVER_PROGRESSIVE)
         return rad_fail(err, RAD_ERR_INVALID,
                         "without a stored matrix only progressive refinement can solve");
