@@ -41,6 +41,13 @@ awk '/"frame": [1-9]/ {
            m = n % 2 ? r[(n + 1) / 2] : (r[n / 2] + r[n / 2 + 1]) / 2
            printf "   median ratio %.3f (the issue asks at most 0.25)\n", m }' "$tmp/anim.json"
 
+echo
+echo "== progressive refinement without a stored matrix (--matrix none --patches ${BENCH_MFREE_PATCHES:-4x4}),"
+echo "   cube to unshot power < ${BENCH_MFREE_TOL:-1e-3} of the emitted (BENCH_MFREE=0 skips; ~1-3 min)"
+if [ "${BENCH_MFREE:-1}" = 1 ]; then
+  sh "$(dirname "$0")/matrixfree.sh" "$rad" "$data"
+fi
+
 # The solve phase of every solver on the 15,000-element cube (issue 18).
 # Long (form factors ~9 s per run, gauss ~80 s, 3.6 GB): only with
 # BENCH_CUBE50=1; BENCH_CUBE50_SOLVERS and BENCH_CUBE50_MESH choose.

@@ -307,6 +307,9 @@ typedef struct rad_solve_options {
     void *progress_user;
     /* progressive refinement (Cohen et al. 1988) */
     int patches;                /* 0: elements shoot; 1: each surface shoots as a patch */
+    int patch_p, patch_q;       /* > 0: a P x Q grid of patches per surface shoots
+                                   (substructuring, Cohen et al. 1988, section 3.4):
+                                   one unshot radiosity per patch, elements receive */
     int sort;                   /* 1: shoot the largest unshot power first (default) */
     int ambient;                /* 1: trace/display with the ambient term */
     rad_shot_fn on_shot;        /* progressive: called with each step, or NULL */

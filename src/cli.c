@@ -89,6 +89,29 @@ int cli_parse_mesh(const char *arg, int *n, int *m)
     return cli_parse_int(buf, 1, 100000, n) || cli_parse_int(x + 1, 1, 100000, m) ? -1 : 0;
 }
 
+/* getopt_long takes an optional argument only as "--patches=PxQ"; the
+ * documented "--patches PxQ" is joined here when the next word is a grid
+ * (a scene file named like "4x4" would need "./4x4"). */
+void cli_join_optional(int *argc, char **argv)
+{
+    for (int k = 1; k + 1 < *argc; k++) {
+        int p, q;
+        if (strcmp(argv[k], "--") == 0)
+            return;
+        if (strcmp(argv[k], "--patches") != 0 || cli_parse_mesh(argv[k + 1], &p, &q) != 0)
+            continue;
+        /* lives as long as argv, the process: never freed */
+        char *joined = malloc(strlen(argv[k + 1]) + sizeof "--patches=");
+        if (!joined)
+            return; /* getopt then sees the grid as an operand: a usage error */
+        sprintf(joined, "--patches=%s", argv[k + 1]);
+        argv[k] = joined;
+        for (int j = k + 1; j + 1 < *argc; j++)
+            argv[j] = argv[j + 1];
+        argv[--*argc] = NULL;
+    }
+}
+
 void cli_common_init(cli_common *c)
 {
     memset(c, 0, sizeof *c);

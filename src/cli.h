@@ -76,6 +76,10 @@ void cli_error_rec(const rad_error *err);
 /* "Try 'radiosity CMD --help'." and return EXIT_USAGE. */
 int cli_usage_hint(const char *cmd);
 
+/* Join "--patches PxQ" (two words) into "--patches=PxQ" in argv, for the
+ * option's optional argument; argv keeps its length (the rest shifts). */
+void cli_join_optional(int *argc, char **argv);
+
 /* Parse "NxM" into positive n, m. */
 int cli_parse_mesh(const char *arg, int *n, int *m);
 int cli_parse_int(const char *arg, long lo, long hi, int *out);
@@ -133,6 +137,7 @@ enum {
     OPT_TRACE,
     OPT_PATCHES,
     OPT_VERTEX_RULE,
+    OPT_MATRIX,
     OPT_SOLVE_END
 };
 
@@ -143,7 +148,8 @@ typedef struct cli_solve {
     const char *elements;       /* --elements FILE, or NULL */
     const char *form_factors;   /* --form-factors FILE, or NULL */
     const char *trace;          /* --trace FILE (progressive), or NULL */
-    int given_solver, given_tolerance, given_max_iterations, given_bounces;
+    rad_matrix_mode matrix;     /* --matrix, default auto */
+    int given_solver, given_tolerance, given_max_iterations, given_bounces, given_matrix;
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
     rad_vertex_rule vertex_rule;  /* --vertex-rule */
@@ -159,7 +165,8 @@ typedef struct cli_solve {
     {"elements", required_argument, NULL, OPT_ELEMENTS},                  \
     {"form-factors", required_argument, NULL, OPT_FORM_FACTORS},          \
     {"trace", required_argument, NULL, OPT_TRACE},                        \
-    {"patches", no_argument, NULL, OPT_PATCHES},                          \
+    {"patches", optional_argument, NULL, OPT_PATCHES},                    \
+    {"matrix", required_argument, NULL, OPT_MATRIX},                      \
     {"vertex-rule", required_argument, NULL, OPT_VERTEX_RULE},            \
     CLI_COMMON_LONGOPTS
 
@@ -172,7 +179,18 @@ typedef struct cli_solve {
     "                          (shooting, Cohen et al. 1988)\n"                   \
     "      --trace FILE        progressive: one TSV row per shooting step (step\n" \
     "                          shooter shot unshot rms rms_ambient)\n"           \
-    "      --patches           progressive: each surface shoots as one patch\n"    \
+    "      --patches[=PxQ]     progressive: each surface shoots as one patch (its\n"\
+    "                          elements keep their own unshot radiosity: the\n" \
+    "                          same B as gauss); with PxQ each quad surface is\n"\
+    "                          cut into a P x Q grid of patches, each shooting\n"\
+    "                          one unshot radiosity (substructuring, Cohen et\n"\
+    "                          al. 1988 sec. 3.4): elements receive, the limit\n"\
+    "                          is the patch-element solution, not gauss's\n"   \
+    "      --matrix MODE       progressive: dense (fill F first), none (each\n" \
+    "                          shot computes its shooter's form factors and\n" \
+    "                          forgets them: O(N) memory) or auto (default:\n" \
+    "                          dense when 16 N^2 bytes fit in half the memory\n"\
+    "                          allowed, else none)\n"                           \
     "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\
     "                          bound on the relative error of B is below T\n"   \
     "                          (q/(1-q) times the last change, q the contraction\n"\

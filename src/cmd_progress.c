@@ -20,6 +20,7 @@
 
 #include "cli.h"
 #include "plotxy.h"
+#include "ffrow.h"
 #include "progressive.h"
 #include "radiosity/render.h"
 
@@ -34,8 +35,12 @@ enum {
     OPT_REACH,
     OPT_SNAPSHOTS,
     OPT_SNAPSHOT_PREFIX,
-    OPT_RACE_PATCHES
+    OPT_RACE_PATCHES,
+    OPT_RACE_MATRIX,
+    OPT_SNAPSHOTS_AT
 };
+
+#define MAX_SNAPSHOTS_AT 256
 
 typedef struct progress_args {
     cli_common common;
@@ -43,6 +48,9 @@ typedef struct progress_args {
     const char *output;         /* TSV, NULL: standard output */
     const char *plot;           /* PNG, or NULL */
     const char *prefix;         /* snapshot file prefix */
+    rad_matrix_mode matrix;     /* --matrix; auto decided in prepare() */
+    int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
+    int steps_given;
 } progress_args;
 
 static void help(void)
@@ -67,9 +75,19 @@ static void help(void)
            "                          within TOL (max norm, relative) of the gauss\n"
            "                          solution (default 1e-6)\n"
            "      --patches           the shooters shoot as patches (whole surfaces)\n"
+           "      --matrix MODE       dense (fill F first; the reference is the gauss\n"
+           "                          solution), none (each step computes the row or\n"
+           "                          column it needs and forgets it: O(N) memory; the\n"
+           "                          reference is progressive refinement converged to\n"
+           "                          1e-12 without a matrix) or auto (default: dense\n"
+           "                          when 16 N^2 bytes fit in half the memory allowed)\n"
            "      --snapshots K       render every K steps of every method (the\n"
            "                          scene's camera, 512 x 512, the exposure of the\n"
            "                          converged solution) to PREFIX-METHOD-STEP.png\n"
+           "      --snapshots-at LIST render at these steps of every method (comma-\n"
+           "                          separated, e.g. 1,2,24,100 as the paper's figures\n"
+           "                          2-5; the sorted_ambient images show the ambient\n"
+           "                          term); --steps grows to the last one if not given\n"
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
            CLI_COMMON_HELP
            "\n"
@@ -77,6 +95,8 @@ static void help(void)
            "  radiosity progress --mesh 3x3 data/goral1984-cube.scene --plot race.png\n"
            "  radiosity progress --patches --mesh 3x3 data/cornell-box.scene -o race.tsv\n"
            "  radiosity progress --mesh 3x3 --snapshots 24 data/cornell-box.scene\n"
+           "  radiosity progress --mesh 3x3 --snapshots-at 1,2,24,100 --snapshot-prefix fig data/cornell-box.scene\n"
+           "  radiosity progress --matrix none --mesh 5x5 --steps 100 data/goral1984-cube.scene\n"
            "\n"
            "A regular file is written to a temporary beside it and renamed at the end:\n"
            "a failed or interrupted run leaves the old file whole; a device or FIFO is\n"
@@ -85,11 +105,38 @@ static void help(void)
            DEFAULT_STEPS_CAP);
 }
 
+/* --snapshots-at 1,2,24,100: ascending steps >= 0; 0 or 2 (printed). */
+static int parse_steps(progress_args *a, const char *arg)
+{
+    char buf[4096], *save = NULL;
+    int n = 0;
+    if (strlen(arg) >= sizeof buf || !*arg)
+        goto bad;
+    strcpy(buf, arg);
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int k;
+        if (n == MAX_SNAPSHOTS_AT || cli_parse_int(t, 0, MAX_STEPS, &k) ||
+            (n > 0 && k <= a->at[n - 1]))
+            goto bad;
+        a->at[n++] = k;
+    }
+    if (n == 0 || arg[strlen(arg) - 1] == ',')
+        goto bad;
+    a->race.snapshot_at = a->at;
+    a->race.nsnapshot_at = n;
+    return 0;
+bad:
+    cli_error("--snapshots-at takes ascending steps from 0 to %d separated by commas (at "
+              "most %d), not '%s'", MAX_STEPS, MAX_SNAPSHOTS_AT, arg);
+    return 2;
+}
+
 /* 0 handled, 1 not ours, 2 usage error (printed). */
 static int parse_option(progress_args *a, int opt, const char *arg)
 {
     switch (opt) {
     case OPT_STEPS:
+        a->steps_given = 1;
         if (cli_parse_int(arg, 1, MAX_STEPS, &a->race.steps)) {
             cli_error("--steps takes a whole number from 1 to %d, not '%s'", MAX_STEPS, arg);
             return 2;
@@ -113,12 +160,22 @@ static int parse_option(progress_args *a, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_SNAPSHOTS_AT:
+        return parse_steps(a, arg);
     case OPT_SNAPSHOT_PREFIX:
         a->prefix = arg;
         return 0;
     case OPT_RACE_PATCHES:
         a->race.patches = 1;
         return 0;
+    case OPT_RACE_MATRIX:
+        for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)
+            if (strcmp(arg, rad_matrix_name(m)) == 0) {
+                a->matrix = (rad_matrix_mode)m;
+                return 0;
+            }
+        cli_error("--matrix takes none, dense or auto, not '%s'", arg);
+        return 2;
     default:
         return cli_common_option(&a->common, opt, arg);
     }
@@ -248,21 +305,22 @@ static int light_sources(const rad_mesh *m, int patches)
 }
 
 static void summary(const rad_mesh *m, const rad_race_options *o, const double *rms,
-                    const int *reached)
+                    const int *reached, rad_matrix_mode matrix)
 {
     static const char *const label[RAD_RACE_METHODS] = {"gathering", "shooting", "sorted",
                                                         "sorted+ambient"};
     const size_t rows = (size_t)o->steps + 1;
     const int lights = light_sources(m, o->patches);
     const int k = lights < 1 ? 1 : lights > o->steps ? o->steps : lights;
-    fprintf(stderr, "radiosity: %d elements, %d emitting %s, %d steps per method\n",
+    fprintf(stderr, "radiosity: %d elements, %d emitting %s, %d steps per method, matrix %s\n",
             m->nelements, lights,
             o->patches ? (lights == 1 ? "patch" : "patches") : (lights == 1 ? "element" : "elements"),
-            o->steps);
+            o->steps, rad_matrix_name(matrix));
     fprintf(stderr, "radiosity: RMS error after %d step%s:", k, k == 1 ? "" : "s");
     for (int j = 0; j < RAD_RACE_METHODS; j++)
         fprintf(stderr, "%s %s %.6g", j ? "," : "", label[j], rms[(size_t)k + (size_t)j * rows]);
-    fprintf(stderr, "\nradiosity: first step within %g of the gauss solution:", o->reach);
+    fprintf(stderr, "\nradiosity: first step within %g of the %s solution:", o->reach,
+            matrix == RAD_MATRIX_NONE ? "converged" : "gauss");
     for (int j = 0; j < RAD_RACE_METHODS; j++) {
         if (reached[j] >= 0)
             fprintf(stderr, "%s %s %d", j ? "," : "", label[j], reached[j]);
@@ -276,7 +334,10 @@ static void summary(const rad_mesh *m, const rad_race_options *o, const double *
 
 typedef struct pipeline {
     rad_scene scene;
-    rad_result res;             /* mesh, F and the converged (gauss) B */
+    rad_result res;             /* mesh, F and the converged (gauss) B; or
+                                   without a matrix, the mesh and B converged
+                                   by progressive refinement to 1e-12 */
+    rad_ffrow *row;             /* matrix-free: the rows and columns */
     double *rms, *Bv;
     int reached[RAD_RACE_METHODS];
 } pipeline;
@@ -285,12 +346,25 @@ static void pipeline_free(pipeline *p)
 {
     free(p->rms);
     free(p->Bv);
+    rad_ffrow_free(p->row);
     rad_result_free(&p->res);
     rad_scene_free(&p->scene);
 }
 
+/* auto: dense when the dense peak fits in half the memory allowed (as
+ * the pipeline decides for progressive refinement). */
+static rad_matrix_mode decide_matrix(const progress_args *a, const rad_scene *scene)
+{
+    if (a->matrix != RAD_MATRIX_AUTO)
+        return a->matrix;
+    const double n = rad_scene_element_count(scene), limit = rad_memory_limit();
+    const double dense = n <= 2147483647.0 ? rad_solve_bytes((int)n, 0) : HUGE_VAL;
+    return limit > 0 && dense > 0.5 * limit ? RAD_MATRIX_NONE : RAD_MATRIX_DENSE;
+}
+
 /* Mesh, form factors and the gauss solution: the library's pipeline,
- * keeping F for the race. */
+ * keeping F for the race.  Without a matrix: the converged solution by
+ * matrix-free progressive refinement, and the rows for the race. */
 static int prepare(progress_args *a, pipeline *p)
 {
     rad_error err;
@@ -298,11 +372,21 @@ static int prepare(progress_args *a, pipeline *p)
     rad_pipeline_options_init(&po);
     cli_progress_attach(&a->common);
     po.ff = a->common.ff;
-    po.keep_form_factors = 1;
+    a->matrix = decide_matrix(a, &p->scene);
+    if (a->matrix == RAD_MATRIX_NONE) {
+        po.solve.solver = RAD_SOLVER_PROGRESSIVE;
+        po.solve.tolerance = 1e-12;
+        po.matrix = RAD_MATRIX_NONE;
+    } else {
+        po.keep_form_factors = 1;
+    }
     rad_status st = rad_pipeline_run(&p->scene, &po, &p->res, &err);
+    if (st == RAD_OK && a->matrix == RAD_MATRIX_NONE)
+        st = rad_ffrow_create(&p->row, &p->res.mesh, &a->common.ff, RAD_OCC_AUTO, 0, 0, &err);
     if (st != RAD_OK) {
         if (p->res.ff_done)
-            cli_error("the converged (gauss) solution: %s", err.message);
+            cli_error("the converged (%s) solution: %s",
+                      a->matrix == RAD_MATRIX_NONE ? "progressive" : "gauss", err.message);
         else
             cli_error_rec(&err);
         return 1;
@@ -317,13 +401,16 @@ static int race(progress_args *a, pipeline *p)
     const int n = p->res.mesh.nelements;
     if (a->race.steps == 0)
         a->race.steps = 2 * n < 1 ? 1 : 2 * n > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : 2 * n;
+    const int last = a->race.nsnapshot_at ? a->race.snapshot_at[a->race.nsnapshot_at - 1] : 0;
+    if (!a->steps_given && last > a->race.steps)
+        a->race.steps = last;
     p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
     if (!p->rms) {
         cli_error("out of memory for %d steps", a->race.steps);
         return 1;
     }
     memset(&sc, 0, sizeof sc);
-    if (a->race.snapshot_every > 0) {
+    if (a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0) {
         sc.mesh = &p->res.mesh;
         sc.prefix = a->prefix ? a->prefix : "progress";
         rad_render_options_init(&sc.ropt);
@@ -344,7 +431,9 @@ static int race(progress_args *a, pipeline *p)
     }
     a->race.progress = a->common.ff.progress;
     a->race.progress_user = a->common.ff.progress_user;
-    if (rad_race_run(&p->res.mesh, p->res.F, p->res.B, &a->race, p->rms, p->reached, &err) != RAD_OK) {
+    const rad_shoot_source src = {p->res.F, p->row};
+    if (rad_race_run_source(&p->res.mesh, &src, p->res.B, &a->race, p->rms, p->reached, &err) !=
+        RAD_OK) {
         cli_error_rec(sc.failed ? &sc.err : &err);
         return 1;
     }
@@ -364,7 +453,7 @@ static int outputs(const progress_args *a, const pipeline *p)
     if (cli_outputs_write(o, 2))
         return 1;
     if (!a->common.quiet)
-        summary(&p->res.mesh, &a->race, p->rms, p->reached);
+        summary(&p->res.mesh, &a->race, p->rms, p->reached, a->matrix);
     return 0;
 }
 
@@ -376,7 +465,7 @@ static int run(progress_args *a, const char *path)
     memset(&p, 0, sizeof p);
     if (cli_load_scene(path, &a->common, &p.scene))
         return 1;
-    if (a->race.snapshot_every > 0 &&
+    if ((a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0) &&
         (!p.scene.camera.defined || rad_camera_check(&p.scene.camera, &err) != RAD_OK)) {
         if (p.scene.camera.defined)
             cli_error("%s: --snapshots: %s", path, err.message);
@@ -402,8 +491,10 @@ int cmd_progress(int argc, char **argv)
         {"plot", required_argument, NULL, OPT_PLOT},
         {"reach", required_argument, NULL, OPT_REACH},
         {"patches", no_argument, NULL, OPT_RACE_PATCHES},
+        {"matrix", required_argument, NULL, OPT_RACE_MATRIX},
         {"snapshots", required_argument, NULL, OPT_SNAPSHOTS},
         {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
+        {"snapshots-at", required_argument, NULL, OPT_SNAPSHOTS_AT},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
@@ -420,8 +511,8 @@ int cmd_progress(int argc, char **argv)
         if (parse_option(&a, opt, optarg) != 0)
             return cli_usage_hint("progress");
     }
-    if (a.prefix && a.race.snapshot_every == 0) {
-        cli_error("--snapshot-prefix needs --snapshots K");
+    if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
+        cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
         return cli_usage_hint("progress");
     }
     if (optind != argc - 1) {

@@ -397,6 +397,7 @@ int cmd_render(int argc, char **argv)
     rad_render_options_init(&a.ropt);
     a.scanline = -1;
     cli_solve_init(&s);
+    cli_join_optional(&argc, argv);
     while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
         if (opt == OPT_HELP || opt == 'h') {
             help();

@@ -88,7 +88,14 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         s->trace = arg;
         return 0;
     case OPT_PATCHES:
-        s->solve.patches = 1;
+        if (!arg) {
+            s->solve.patches = 1;
+            return 0;
+        }
+        if (cli_parse_mesh(arg, &s->solve.patch_p, &s->solve.patch_q)) {
+            cli_error("--patches takes PxQ (positive whole numbers, e.g. 4x4), not '%s'", arg);
+            return 2;
+        }
         return 0;
     case OPT_VERTEX_RULE:
         if (strcmp(arg, "extrapolate") == 0)
@@ -100,6 +107,15 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_MATRIX:
+        s->given_matrix = 1;
+        for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)
+            if (strcmp(arg, rad_matrix_name(m)) == 0) {
+                s->matrix = (rad_matrix_mode)m;
+                return 0;
+            }
+        cli_error("--matrix takes none, dense or auto, not '%s'", arg);
+        return 2;
     default:
         return cli_common_option(&s->common, opt, arg);
     }
@@ -118,8 +134,12 @@ int cli_solve_check(const cli_solve *s)
               "not apply";
     else if (s->trace && v != RAD_SOLVER_PROGRESSIVE)
         bad = "--trace traces the shooting steps of --solver progressive";
-    else if (s->solve.patches && v != RAD_SOLVER_PROGRESSIVE)
+    else if ((s->solve.patches || s->solve.patch_p) && v != RAD_SOLVER_PROGRESSIVE)
         bad = "--patches applies to --solver progressive";
+    else if (s->given_matrix && (v != RAD_SOLVER_PROGRESSIVE || s->given_bounces))
+        bad = "--matrix applies to --solver progressive (the other solvers need F)";
+    else if (s->matrix == RAD_MATRIX_NONE && s->form_factors)
+        bad = "--matrix none stores no form factors: --form-factors cannot write them";
     else if (s->solve.error_bounds && (v != RAD_SOLVER_GAUSS || s->given_bounces))
         bad = "--error-bounds applies to --solver gauss (LU) only";
     else if ((s->given_tolerance || s->given_max_iterations) &&
@@ -200,6 +220,9 @@ static void run_info(const cli_run *r, rad_run_info *in)
     in->t_smooth = res->t_smooth;
     in->t_output = r->t_output;
     in->ff_pairs_per_second = res->t_formfactor > 0 ? res->ff.pairs / res->t_formfactor : 0;
+    in->matrix = rad_matrix_name(res->matrix ? res->matrix : RAD_MATRIX_DENSE);
+    if (res->matrix == RAD_MATRIX_NONE) /* the pairs are integrated inside the shots */
+        in->ff_pairs_per_second = res->t_solve > 0 ? res->ff.pairs / res->t_solve : 0;
     in->ff = res->ff_done ? &res->ff : NULL;
     in->solve = res->solve_done ? &res->solve : NULL;
     in->b_negative = res->solve_done && r->status == RAD_OK ? res->b_negative : -1;
@@ -275,10 +298,16 @@ static void summary(const cli_run *r)
     rad_run_info in;
     run_info(r, &in);
     const rad_solve_report *s = in.solve;
-    fprintf(stderr, "radiosity: %d elements, %.1f MiB of matrices; form factors %.3g s "
-                    "(%.3g pairs/s, %s), solve %.3g s\n",
-            in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
-            in.ff_pairs_per_second, in.accuracy, in.t_solve);
+    if (r->res.matrix == RAD_MATRIX_NONE)
+        fprintf(stderr, "radiosity: %d elements, matrix none (form factors per shot, %.1f MiB "
+                        "estimated); solve %.3g s with %.0f pair integrals (%.3g pairs/s, %s)\n",
+                in.nelements, in.memory_bytes / 1048576.0, in.t_solve, in.ff ? in.ff->pairs : 0,
+                in.ff_pairs_per_second, in.accuracy);
+    else
+        fprintf(stderr, "radiosity: %d elements, matrix dense, %.1f MiB of matrices; form "
+                        "factors %.3g s (%.3g pairs/s, %s), solve %.3g s\n",
+                in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
+                in.ff_pairs_per_second, in.accuracy, in.t_solve);
     if (in.ff && in.ff->vis_needed)
         fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
                         "%.0f partly; %.3g s\n",
@@ -329,6 +358,7 @@ int cli_run_solve(cli_run *run)
     po.solve = s->solve;
     po.keep_form_factors = s->form_factors != NULL;
     po.vertex_rule = s->vertex_rule;
+    po.matrix = s->matrix;
     if (s->trace) {
         po.solve.on_shot = keep_shot;
         po.solve.shot_user = run;
@@ -430,6 +460,7 @@ int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v)
     const char *output = NULL;
     int opt;
     cli_solve_init(&s);
+    cli_join_optional(&argc, argv);
     while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
         if (opt == OPT_HELP || opt == 'h') {
             v->help();

@@ -347,6 +347,8 @@ int rad_export_report(FILE *out, const rad_run_info *in)
                  "\"solve\": %.6g, \"smooth\": %.6g, \"output\": %.6g},\n",
             in->t_parse, in->t_mesh, in->t_formfactor, in->t_solve, in->t_smooth, in->t_output);
     jnum(out, "form_factor_pairs_per_second", in->ff_pairs_per_second, 1);
+    if (in->matrix) /* "none": the form factors were computed shot by shot */
+        jstr(out, "matrix", in->matrix);
     if (f) {
         jnum(out, "form_factor_min", f->min_value, 1);
         jnum(out, "form_factor_max", f->max_value, 1);

@@ -38,6 +38,7 @@
 #include "ffpairs.h"
 #include "formfactor.h"
 #include "mesh.h"
+#include "ffrow.h"
 #include "occlusion.h"
 #include "radiosity.h"
 #include "status.h"
@@ -134,7 +135,8 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 }
 
 /* Element polygons with contiguous vertices, as the kernel wants them
- * (ffblock.h). */
+ * (ffblock.h; also the per-shot rows of ffrow.c, which must see the same
+ * polygons). */
 rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
                              rad_ff_edge **edges)
 {

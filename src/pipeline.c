@@ -19,6 +19,8 @@
 #include <time.h>
 
 #include "radiosity/pipeline.h"
+#include "mesh.h"
+#include "solvefree.h"
 #include "status.h"
 
 static double seconds(void)
@@ -59,19 +61,56 @@ rad_status rad_memory_check(double need, const char *what, double *have, rad_err
     return RAD_OK;
 }
 
-/* The estimate of rad_solve_bytes checked before meshing. */
+const char *rad_matrix_name(int mode)
+{
+    static const char *const names[] = {"auto", "dense", "none"};
+    return mode >= 0 && mode <= RAD_MATRIX_NONE ? names[mode] : NULL;
+}
+
+/* Dense or none: what the options ask, auto deciding by the memory (the
+ * dense peak in at most half of what is allowed: room for the rest of the
+ * machine's work).  Only progressive refinement can do without F. */
+static rad_matrix_mode choose_matrix(const rad_pipeline_options *opt, double dense_bytes,
+                                     double limit)
+{
+    if (opt->solve.solver != RAD_SOLVER_PROGRESSIVE || opt->solve.bounces >= 0 ||
+        opt->keep_form_factors)
+        return RAD_MATRIX_DENSE;
+    if (opt->matrix != RAD_MATRIX_AUTO)
+        return opt->matrix;
+    return limit > 0 && dense_bytes > 0.5 * limit ? RAD_MATRIX_NONE : RAD_MATRIX_DENSE;
+}
+
+/* The estimate checked before meshing: rad_solve_bytes for the dense
+ * path, rad_matrix_free_bytes without the matrix. */
 static rad_status check_size(const rad_scene *scene, const rad_pipeline_options *opt,
                              rad_result *r, rad_error *err)
 {
     double n = rad_scene_element_count(scene);
-    if (n > INT_MAX)
+    size_t ne, nv, ni;
+    char what[128];
+    if (n > INT_MAX || rad_mesh_count(scene, &ne, &nv, &ni) != RAD_OK)
         return rad_fail(err, RAD_ERR_TOOBIG, "the scene's meshes make %.0f elements, more "
                         "than %d; use a coarser --mesh", n, INT_MAX);
-    r->memory_bytes = rad_solve_bytes_for((int)n, &opt->solve);
-    const double k = floor(r->memory_bytes / (8 * n * n + 1));
-    char what[128];
-    snprintf(what, sizeof what, "%.0f elements (%.0f x 8 N^2 bytes of matrices for %s)", n,
-             k, opt->solve.bounces >= 0 ? "--bounces" : rad_solver_name(opt->solve.solver));
+    if (opt->matrix == RAD_MATRIX_NONE && (opt->solve.solver != RAD_SOLVER_PROGRESSIVE ||
+                                           opt->solve.bounces >= 0 || opt->keep_form_factors))
+        return rad_fail(err, RAD_ERR_INVALID, "--matrix none works with --solver progressive "
+                        "only, and cannot write the form factors");
+    const double dense = rad_solve_bytes_for((int)n, &opt->solve);
+    r->memory_available = rad_memory_limit();
+    r->matrix = choose_matrix(opt, dense, r->memory_available);
+    if (r->matrix == RAD_MATRIX_DENSE) {
+        r->memory_bytes = dense;
+        snprintf(what, sizeof what, "%.0f elements (%.0f x 8 N^2 bytes of matrices for %s)", n,
+                 floor(dense / (8 * n * n + 1)),
+                 opt->solve.bounces >= 0 ? "--bounces" : rad_solver_name(opt->solve.solver));
+    } else {
+        const double np = opt->solve.patch_p > 0 ? (double)scene->nsurfaces *
+                                                       opt->solve.patch_p * opt->solve.patch_q
+                                                 : 0;
+        r->memory_bytes = rad_matrix_free_bytes(n, (double)nv, np < n ? np : n);
+        snprintf(what, sizeof what, "%.0f elements without a stored matrix (O(N))", n);
+    }
     return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
 }
 
@@ -79,12 +118,41 @@ static rad_status allocate(rad_result *r, rad_error *err)
 {
     const size_t n = (size_t)r->mesh.nelements;
     const size_t nv = (size_t)r->mesh.nvertices;
-    r->F = malloc(sizeof *r->F * (n ? n * n : 1));
+    if (r->matrix == RAD_MATRIX_DENSE)
+        r->F = malloc(sizeof *r->F * (n ? n * n : 1));
     r->B = malloc(sizeof *r->B * (n ? n : 1) * RAD_BANDS);
     r->Bv = malloc(sizeof *r->Bv * (nv ? nv : 1) * RAD_BANDS);
-    if (!r->F || !r->B || !r->Bv)
+    if ((!r->F && r->matrix == RAD_MATRIX_DENSE) || !r->B || !r->Bv)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %zu elements", n);
     return RAD_OK;
+}
+
+/* Smooth B and count its negative values (a solved run). */
+static void finish(rad_result *r, const rad_pipeline_options *opt, double t_solved)
+{
+    for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
+        r->b_negative += r->B[k] < 0;
+    rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
+    r->t_smooth = seconds() - t_solved;
+}
+
+/* --matrix none: the form factors are computed inside the solve, shot by
+ * shot (solvefree.h); their statistics come with the solve. */
+static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt, double t1,
+                                  rad_error *err)
+{
+    rad_solve_options so = opt->solve;
+    if (!so.progress) {
+        so.progress = opt->ff.progress;
+        so.progress_user = opt->ff.progress_user;
+    }
+    rad_status st = rad_solve_matrix_free(&r->mesh, &opt->ff, &so, r->B, &r->solve, &r->ff, err);
+    double t3 = seconds();
+    r->t_solve = t3 - t1;
+    r->ff_done = r->solve_done = 1;
+    if (st == RAD_OK)
+        finish(r, opt, t3);
+    return st;
 }
 
 static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
@@ -124,6 +192,8 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     r->t_mesh = t1 - t0;
     if (st == RAD_OK)
         st = allocate(r, err);
+    if (st == RAD_OK && r->matrix == RAD_MATRIX_NONE)
+        return run_matrix_free(r, opt, t1, err);
     if (st == RAD_OK)
         st = rad_ff_matrix(&r->mesh, &opt->ff, r->F, NULL, &r->ff, err);
     double t2 = seconds();
@@ -141,12 +211,8 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     double t3 = seconds();
     r->t_solve = t3 - t2;
     r->solve_done = 1;
-    if (st == RAD_OK) {
-        for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
-            r->b_negative += r->B[k] < 0;
-        rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-        r->t_smooth = seconds() - t3;
-    }
+    if (st == RAD_OK)
+        finish(r, opt, t3);
     if (!opt->keep_form_factors) {
         free(r->F);
         r->F = NULL;

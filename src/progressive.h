@@ -12,7 +12,22 @@
 #ifndef RAD_PROGRESSIVE_H
 #define RAD_PROGRESSIVE_H
 
+#include "ffrow.h"
 #include "radiosity.h"
+
+/* Where a shot's form factors come from: the dense matrix F (column i is
+ * F_ji for every j), or, when F is NULL, rad_ffrow computing each column
+ * (and each patch's F_jP) when it shoots and forgetting it. */
+typedef struct rad_shoot_source {
+    const double *F;
+    rad_ffrow *row;
+} rad_shoot_source;
+
+/* rad_solve_progressive on either source (rho, E, B as there). */
+rad_status rad_progressive_run(const rad_mesh *m, const rad_shoot_source *src,
+                               const double *rho, const double *E,
+                               const rad_solve_options *opt, double *B,
+                               rad_solve_report *report, rad_error *err);
 
 /* The four methods of the race, in the order of the table's columns. */
 typedef enum rad_race_method {
@@ -36,6 +51,8 @@ typedef struct rad_race_options {
     int patches;                /* the shooters shoot as patches (surfaces) */
     double reach;               /* reached[]: max |B - Bref| <= reach * max |Bref| */
     int snapshot_every;         /* call snapshot every K steps (and at 0); 0: never */
+    const int *snapshot_at;     /* ... and at these steps (ascending), or NULL */
+    int nsnapshot_at;
     rad_race_snapshot_fn snapshot;
     void *snapshot_user;
     rad_progress_fn progress;   /* may be NULL */
@@ -53,5 +70,11 @@ rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bre
                         const rad_race_options *opt, double *rms, int *reached,
                         rad_error *err);
 
+/* The same race on either source of form factors: without a matrix the
+ * gathering row F_i. and each shooter's column are computed when needed
+ * (ffrow.h), the same values as the matrix's. */
+rad_status rad_race_run_source(const rad_mesh *mesh, const rad_shoot_source *src,
+                               const double *Bref, const rad_race_options *opt, double *rms,
+                               int *reached, rad_error *err);
 
 #endif /* RAD_PROGRESSIVE_H */

@@ -34,6 +34,13 @@ ok $? "--patches"
 [ "$(ls "$work" | grep -c '^snap-.*-00000[048]\.png$')" -eq 12 ]; ok $? "--snapshots 4: 3 images of each of the 4 methods"
 [ -s "$work/snap-sorted_ambient-000004.png" ]; ok $? "snapshots are named PREFIX-METHOD-STEP.png"
 
+"$RADIOSITY" progress -q --mesh 2x2 --steps 4 --snapshots-at 1,3 --snapshot-prefix "$work/at" -o "$work/discard.tsv" "$cube"
+[ "$(ls "$work" | grep -c '^at-.*-00000[13]\.png$')" -eq 8 ] && [ "$(ls "$work" | grep -c '^at-')" -eq 8 ]
+ok $? "--snapshots-at 1,3: images at steps 1 and 3 of each of the 4 methods, no others"
+"$RADIOSITY" progress -q --mesh 2x2 --snapshots-at 60 --snapshot-prefix "$work/late" -o "$work/late.tsv" "$cube"
+[ "$(tail -n +2 "$work/late.tsv" | wc -l)" -eq 61 ] && [ -s "$work/late-sorted_ambient-000060.png" ]
+ok $? "--snapshots-at 60 beyond the default 48 steps: the race runs to step 60"
+
 # errors
 "$RADIOSITY" progress -q --snapshots 2 "$top_srcdir/data/furnace.scene" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q camera "$work/err"; ok $? "snapshots need a camera: exit 1"
@@ -42,14 +49,15 @@ ok $? "unwritable output: exit 1"
 echo precious > "$work/keep.tsv"
 "$RADIOSITY" progress -q -o "$work/keep.tsv" "$work/no-such.scene" 2> /dev/null; rc=$?
 [ $rc -eq 1 ] && [ "$(cat "$work/keep.tsv")" = precious ]; ok $? "missing scene: exit 1, output untouched"
-for bad in "--steps 0" "--steps x" "--reach 2" "--snapshots 0" "--snapshot-prefix p" "--bogus"; do
+for bad in "--steps 0" "--steps x" "--reach 2" "--snapshots 0" "--snapshot-prefix p" "--bogus" \
+  "--snapshots-at 3,2" "--snapshots-at x" "--snapshots-at 1,-2" "--snapshots-at 1,"; do
   # shellcheck disable=SC2086
   "$RADIOSITY" progress $bad "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "progress $bad: exit 2"
 done
 "$RADIOSITY" progress > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "no scene: exit 2"
 "$RADIOSITY" progress "$cube" "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "two scenes: exit 2"
 "$RADIOSITY" progress --help > "$work/help"; ok $? "progress --help"
-for o in --steps --output --plot --reach --patches --snapshots --snapshot-prefix --mesh --quadrature --accuracy --quiet; do
+for o in --steps --output --plot --reach --patches --snapshots --snapshots-at --snapshot-prefix --matrix --mesh --quadrature --accuracy --quiet; do
   grep -q -- "$o" "$work/help"; ok $? "progress --help lists $o"
 done
 

@@ -20,7 +20,12 @@
  *   - eq. 14 and eq. 9-13 of Cohen et al. recomputed here from B(k) (the
  *     ambient on a grey scene, where each band holds a third of the unshot
  *     power);
- *   - the paper's figure 7 order on the shipped cube.
+ *   - the paper's figure 7 order on the shipped cube;
+ *   - matrix-free shooting (ffrow.h): each computed column against the
+ *     dense fill's column (equal bit for bit, visibility included), the
+ *     patch factors F_jP against the sum of the element columns
+ *     (additivity, to the kernel's 1e-6), and the solve from columns
+ *     against the solve from the matrix (the same steps, the same B).
  */
 #include <config.h>
 
@@ -30,6 +35,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "ffrow.h"
+#include "patchgrid.h"
 #include "progressive.h"
 #include "radiosity.h"
 #include "tap.h"
@@ -508,6 +515,112 @@ static void test_race(const fixture *fx)
     free(B);
 }
 
+/* ---- matrix-free shooting ------------------------------------------------- */
+
+/* Every computed column (and row) is the dense fill's, bit for bit. */
+static void test_columns(const fixture *fx, const char *what)
+{
+    rad_ff_options fo;
+    rad_error err;
+    rad_ffrow *row = NULL;
+    const int n = fx->n;
+    rad_ff_options_init(&fo);
+    double *to = malloc(sizeof *to * (size_t)n), *from = malloc(sizeof *from * (size_t)n);
+    int same = 1, st = rad_ffrow_create(&row, &fx->mesh, &fo, RAD_OCC_AUTO, 0, 0, &err);
+    for (int i = 0; i < n && st == RAD_OK && same; i++) {
+        st = rad_ffrow_column(row, i, to, from, &err);
+        same = memcmp(to, fx->F + (size_t)i * n, sizeof *to * (size_t)n) == 0;
+        for (int j = 0; j < n && same; j++)
+            same = memcmp(&from[j], &fx->F[(size_t)i + (size_t)j * n], sizeof *from) == 0;
+    }
+    tap_ok(st == RAD_OK && same, "%s: every column F_.i and row F_i. computed per shooter "
+           "is the dense fill's, bit for bit", what);
+    rad_ff_stats fs;
+    double lo, hi;
+    if (row)
+        rad_ffrow_stats(row, &fs, &lo, &hi);
+    tap_ok(row && fs.pairs == (double)n * (n - 1) && lo > 0 && hi < 1 + 1e-6,
+           "%s: the rows' statistics count n (n - 1) pairs, row sums in [%.6g, %.6g]", what,
+           row ? lo : NAN, row ? hi : NAN);
+    rad_ffrow_free(row);
+    free(to);
+    free(from);
+}
+
+/* F_jP on the patch outline = sum_{i in P} F_ji (additivity). */
+static void test_patch_columns(const fixture *fx, const char *what, double tol)
+{
+    rad_ff_options fo;
+    rad_error err;
+    rad_ffrow *row = NULL;
+    rad_patch_grid g;
+    const int n = fx->n;
+    rad_ff_options_init(&fo);
+    double *to = malloc(sizeof *to * (size_t)n), worst = 0, area = 0, mesh_area = 0;
+    int st = rad_patch_grid_build(&g, &fx->mesh, 2, 2, &err), once = 1;
+    if (st == RAD_OK)
+        st = rad_ffrow_create(&row, &fx->mesh, &fo, RAD_OCC_AUTO, 2, 2, &err);
+    for (int p = 0; st == RAD_OK && p < g.npatches; p++) {
+        st = rad_ffrow_patch(row, p, to, &err);
+        for (int j = 0; j < n; j++) {
+            double s = 0;
+            for (int k = g.first[p]; k < g.first[p + 1]; k++)
+                s += fx->F[(size_t)j + (size_t)g.member[k] * n];
+            worst = fmax(worst, fabs(to[j] - s) / fmax(s, 1e-300));
+        }
+        area += g.area[p];
+        for (int k = g.first[p]; k < g.first[p + 1]; k++)
+            once &= g.patch_of[g.member[k]] == p;
+    }
+    for (int i = 0; i < n; i++)
+        mesh_area += fx->mesh.elements[i].area;
+    tap_ok(st == RAD_OK && g.npatches == 4 * fx->mesh.nsurfaces && once &&
+               fabs(area - mesh_area) <= 1e-12 * mesh_area,
+           "%s: patch grid 2x2, %d patches, each element in one, areas sum to the mesh's",
+           what, g.npatches);
+    tap_ok(st == RAD_OK && worst <= tol,
+           "%s: F_jP on the patch outline = sum of the element columns within %g (%.3g)",
+           what, tol, worst);
+    rad_ffrow_free(row);
+    rad_patch_grid_free(&g);
+    free(to);
+}
+
+/* The solve from computed columns: the steps and B of the matrix's. */
+static void test_matrix_free_solve(const fixture *fx)
+{
+    rad_ff_options fo;
+    rad_solve_options so;
+    rad_solve_report r1, r2;
+    rad_error err;
+    rad_ffrow *row = NULL;
+    const size_t n3 = (size_t)fx->n * 3;
+    double *rho = malloc(sizeof *rho * n3), *E = malloc(sizeof *E * n3);
+    double *B1 = malloc(sizeof *B1 * n3), *B2 = malloc(sizeof *B2 * n3);
+    rad_ff_options_init(&fo);
+    rad_solve_options_init(&so);
+    so.solver = RAD_SOLVER_PROGRESSIVE;
+    so.tolerance = 1e-10;
+    mesh_arrays(&fx->mesh, rho, E);
+    const rad_shoot_source dense = {fx->F, NULL};
+    int st = rad_progressive_run(&fx->mesh, &dense, rho, E, &so, B1, &r1, &err);
+    if (st == RAD_OK)
+        st = rad_ffrow_create(&row, &fx->mesh, &fo, RAD_OCC_AUTO, 0, 0, &err);
+    const rad_shoot_source none = {NULL, row};
+    if (st == RAD_OK)
+        st = rad_progressive_run(&fx->mesh, &none, rho, E, &so, B2, &r2, &err);
+    tap_ok(st == RAD_OK && r1.sweeps == r2.sweeps && memcmp(B1, B2, sizeof *B1 * n3) == 0,
+           "shooting from computed columns: %d steps and B bit for bit as from the matrix "
+           "(%d)", st == RAD_OK ? r2.sweeps : -1, r1.sweeps);
+    tap_ok(st == RAD_OK && rel_diff(B2, fx->Bg, n3) <= 1e-8,
+           "... and within 1e-8 of gauss (%.3g)", st == RAD_OK ? rel_diff(B2, fx->Bg, n3) : NAN);
+    rad_ffrow_free(row);
+    free(rho);
+    free(E);
+    free(B1);
+    free(B2);
+}
+
 int main(void)
 {
     fixture cube;
@@ -522,6 +635,26 @@ int main(void)
     test_trace_and_noconv(&cube);
     test_singular_and_dark();
     test_race(&cube);
+    test_columns(&cube, "cube");
+    test_patch_columns(&cube, "cube", 1e-6);
+    test_matrix_free_solve(&cube);
     fixture_free(&cube);
+    fixture blocker;
+    if (fixture_load(&blocker, "blocker.scene", 2) == 0) {
+        test_columns(&blocker, "blocker (visibility)");
+        fixture_free(&blocker);
+    } else {
+        tap_ok(0, "load the blocker scene");
+    }
+    if (fixture_load(&blocker, "blocker.scene", 4) == 0) {
+        /* the hidden parts of partly occluded pairs are integrated to about
+         * 1e-4 in default mode (the fill's own estimates miss the 1e-6
+         * promise on them and say so); in reference mode the patch and
+         * element solutions agree to 1e-7 */
+        test_patch_columns(&blocker, "blocker 4x4 (visibility)", 1e-3);
+        fixture_free(&blocker);
+    } else {
+        tap_ok(0, "load the blocker scene");
+    }
     return tap_done();
 }

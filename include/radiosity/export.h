@@ -33,6 +33,7 @@ typedef struct rad_run_info {
                                    "promise unmet" (--strict), "error" */
     long b_negative;            /* element-band values of B below 0: impossible
                                    (classic mode's nonsense), -1 unknown */
+    const char *matrix;         /* "dense", "none" (form factors per shot), or NULL */
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */

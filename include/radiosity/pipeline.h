@@ -17,11 +17,27 @@
 extern "C" {
 #endif
 
+/* Whether the form factors are stored (progressive refinement only can do
+ * without: Cohen et al. 1988 compute each shooter's on the fly). */
+typedef enum rad_matrix_mode {
+    RAD_MATRIX_AUTO = 0,        /* progressive: dense when 8 n^2 bytes (the
+                                   dense path's peak, rad_solve_bytes) fit in
+                                   half the memory allowed, else none; the
+                                   other solvers: dense */
+    RAD_MATRIX_DENSE,           /* fill F (n x n) first, then solve */
+    RAD_MATRIX_NONE             /* progressive: each shot computes its column */
+} rad_matrix_mode;
+
+/* "auto", "dense", "none", or NULL for a value out of range. */
+RAD_API const char *rad_matrix_name(int mode);
+
 typedef struct rad_pipeline_options {
     rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
     rad_solve_options solve;    /* solver and its options (progress is
                                    taken from ff when not set) */
-    int keep_form_factors;      /* 1: leave F in the result (--form-factors) */
+    int keep_form_factors;      /* 1: leave F in the result (--form-factors;
+                                   needs the dense matrix) */
+    rad_matrix_mode matrix;     /* stored F or not (default auto) */
     rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
                                      (smooth.c; default: extrapolate) */
 } rad_pipeline_options;
@@ -42,6 +58,10 @@ typedef struct rad_result {
     double memory_bytes;        /* the estimate checked before allocating */
     double memory_available;    /* what the machine allowed (rad_memory_limit) */
     double t_mesh, t_formfactor, t_solve, t_smooth;  /* seconds */
+    rad_matrix_mode matrix;     /* what the run used: DENSE or NONE (with
+                                   NONE the form factors are computed inside
+                                   the solve: t_formfactor is 0, ff counts
+                                   the pairs integrated over all shots) */
 } rad_result;
 
 /* Mesh, form factors, solve and smooth `scene` (which must outlive the
