@@ -11,6 +11,9 @@
  * dense matrix holds at the same places, whatever the block's shape: a
  * distributed solve and a serial one see the same F.
  *
+ * rad_ff_pairs (ffpairs.h) is the same for a list of pairs, both entries
+ * of each: the animation's recomputed pairs.
+ *
  * The price is that a pair whose two entries live in different blocks
  * (on different processes) is integrated twice: filling every entry of F
  * in blocks costs twice the dense fill's pair integrations, spread over
@@ -30,6 +33,7 @@
 #endif
 
 #include "ffblock.h"
+#include "ffpairs.h"
 #include "mesh.h"
 #include "status.h"
 #include "vec.h"
@@ -107,6 +111,21 @@ rad_status rad_ff_block_open(rad_ff_block **out, const rad_mesh *mesh,
     return RAD_OK;
 }
 
+/* The pair {i, j}, i < j: its occluded contour sum S and S's estimated
+ * error (0 in classic), as fill_column (ffmatrix.c) computes them.
+ * Returns -1 when scratch ran out. */
+static int pair_sum(const rad_ff_block *b, rad_ff_scratch *w, rad_occ_work *ow, int i, int j,
+                    double *s, double *e)
+{
+    const int want = b->opt.accuracy != RAD_ACCURACY_CLASSIC;
+    *e = 0;
+    if (isnan(rad_ff_pair(&b->polys[i], &b->polys[j], &b->opt, w, s, want ? e : NULL)))
+        return -1;
+    if (ow && rad_occ_pair(ow, b->polys, i, j, s, want ? e : NULL) != 0)
+        return -1;
+    return 0;
+}
+
 /* Entry F_{gi, gj}, gi != gj, its estimated absolute error and relative
  * error e / |S| (both NaN in classic, and the relative one when S = 0, as
  * the dense fill skips those).  Returns -1 when scratch ran out. */
@@ -115,10 +134,8 @@ static int entry(const rad_ff_block *b, rad_ff_scratch *w, rad_occ_work *ow, int
 {
     const int i = gi < gj ? gi : gj, j = gi < gj ? gj : gi;
     const int want = b->opt.accuracy != RAD_ACCURACY_CLASSIC;
-    double s, e = 0;
-    if (isnan(rad_ff_pair(&b->polys[i], &b->polys[j], &b->opt, w, &s, want ? &e : NULL)))
-        return -1;
-    if (ow && rad_occ_pair(ow, b->polys, i, j, &s, want ? &e : NULL) != 0)
+    double s, e;
+    if (pair_sum(b, w, ow, i, j, &s, &e) != 0)
         return -1;
     const double fji = s * b->inv_t[j];
     *f = gi == j ? fji : fji * (b->polys[j].area / b->polys[i].area);
@@ -245,4 +262,50 @@ rad_status rad_ff_block_fill(rad_ff_block *b, const int *rows, int nr, const int
     }
     free(rsum);
     return RAD_OK;
+}
+
+rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, size_t np,
+                              double *fij, double *fji, rad_error *err)
+{
+    const int threads = b->opt.threads > 0 ? b->opt.threads : omp_get_max_threads();
+    int failed = 0;
+#pragma omp parallel num_threads(threads) reduction(|| : failed)
+    {
+        rad_ff_scratch w;
+        rad_occ_work ow;
+        rad_ff_scratch_init(&w);
+        rad_occ_work_init(&ow, b->occ);
+#pragma omp for schedule(dynamic, 16)
+        for (size_t k = 0; k < np; k++) {
+            const int i = pi[k], j = pj[k];
+            double s, e;
+            if (pair_sum(b, &w, b->occ ? &ow : NULL, i, j, &s, &e) != 0) {
+                failed = 1;
+                continue;
+            }
+            fji[k] = s * b->inv_t[j]; /* the fill's column, then its mirror */
+            fij[k] = fji[k] * (b->polys[j].area / b->polys[i].area);
+        }
+        rad_occ_work_free(&ow);
+        rad_ff_scratch_free(&w);
+    }
+    b->setup.seconds = 0;
+    if (failed)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
+    for (size_t k = 0; k < np; k++)
+        if (!isfinite(fij[k]) || !isfinite(fji[k]))
+            return rad_fail(err, RAD_ERR_INVALID, "the form factor between elements %d and %d "
+                            "is not a finite double", pi[k], pj[k]);
+    return RAD_OK;
+}
+
+rad_status rad_ff_pairs(const rad_mesh *m, const rad_ff_options *opt, const int *pi,
+                        const int *pj, size_t np, double *fij, double *fji, rad_error *err)
+{
+    rad_ff_block *b;
+    rad_status st = rad_ff_block_open(&b, m, opt, err);
+    if (st == RAD_OK)
+        st = rad_ff_block_pairs(b, pi, pj, np, fij, fji, err);
+    rad_ff_block_close(b);
+    return st;
 }

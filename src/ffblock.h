@@ -54,6 +54,12 @@ void rad_ff_block_close(rad_ff_block *b);
 rad_status rad_ff_block_fill(rad_ff_block *b, const int *rows, int nr, const int *cols, int nc,
                              double *out, size_t ld, rad_ff_tally *t, rad_error *err);
 
+/* For k < np, the pair (pi[k] < pj[k]): fij[k] = F_{pi pj}, fji[k] =
+ * F_{pj pi}, each pair integrated once (rad_ff_pairs, ffpairs.h, opens a
+ * block for one such call). */
+rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, size_t np,
+                              double *fij, double *fji, rad_error *err);
+
 /* Shared with ffmatrix.c: the element polygons of a (normalized) mesh, and
  * each mode's promise on an entry's relative error (NaN in classic). */
 rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,

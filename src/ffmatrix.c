@@ -35,7 +35,6 @@
 #endif
 
 #include "ffblock.h"
-#include "ffpairs.h"
 #include "formfactor.h"
 #include "mesh.h"
 #include "ffrow.h"
@@ -405,71 +404,4 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         stats->clamped_to_one = clamped;
     }
     return RAD_OK;
-}
-
-/* ---- chosen pairs (ffpairs.h) -------------------------------------------- */
-
-/* The pairs on the unit-size mesh, the fill's arithmetic entry for entry
- * (fill_column, then mirror). */
-static rad_status ff_pairs_unit(const rad_mesh *m, const rad_ff_options *opt, const int *pi,
-                                const int *pj, size_t np, double *fij, double *fji,
-                                rad_error *err)
-{
-    rad_ff_poly *polys = NULL;
-    rad_vec3 *pts = NULL;
-    rad_ff_edge *edges = NULL;
-    rad_occ *occ = NULL;
-    int failed = 0;
-    rad_status st = rad_ff_mesh_polys(m, &polys, &pts, &edges) == RAD_OK
-                        ? rad_occ_create(&occ, m, RAD_OCC_AUTO, opt->accuracy, NULL, err)
-                        : rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements",
-                                   m->nelements);
-    const int want = opt->accuracy != RAD_ACCURACY_CLASSIC;
-    const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
-    if (st == RAD_OK) {
-#pragma omp parallel num_threads(threads) reduction(|| : failed)
-        {
-            rad_ff_scratch w;
-            rad_occ_work ow;
-            rad_ff_scratch_init(&w);
-            rad_occ_work_init(&ow, occ);
-#pragma omp for schedule(dynamic, 16)
-            for (size_t k = 0; k < np; k++) {
-                const int i = pi[k], j = pj[k];
-                double s, e = 0;
-                if (isnan(rad_ff_pair(&polys[i], &polys[j], opt, &w, &s, want ? &e : NULL)) ||
-                    (occ && rad_occ_pair(&ow, polys, i, j, &s, want ? &e : NULL) != 0)) {
-                    failed = 1;
-                    continue;
-                }
-                fji[k] = s * (1 / (2 * RAD_PI * polys[j].area));
-                fij[k] = fji[k] * (polys[j].area / polys[i].area);
-            }
-            rad_occ_work_free(&ow);
-            rad_ff_scratch_free(&w);
-        }
-        if (failed)
-            st = rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
-    }
-    free(polys);
-    free(pts);
-    free(edges);
-    rad_occ_free(occ);
-    return st;
-}
-
-rad_status rad_ff_pairs(const rad_mesh *m, const rad_ff_options *opt, const int *pi,
-                        const int *pj, size_t np, double *fij, double *fji, rad_error *err)
-{
-    rad_mesh unit;
-    rad_status st = rad_mesh_normalized(m, &unit, NULL, err);
-    if (st != RAD_OK)
-        return st;
-    st = ff_pairs_unit(&unit, opt, pi, pj, np, fij, fji, err);
-    rad_mesh_free(&unit);
-    for (size_t k = 0; st == RAD_OK && k < np; k++)
-        if (!isfinite(fij[k]) || !isfinite(fji[k]))
-            st = rad_fail(err, RAD_ERR_INVALID, "the form factor between elements %d and %d "
-                          "is not a finite double", pi[k], pj[k]);
-    return st;
 }

@@ -6,7 +6,7 @@
  * recomputes only the pairs the change can alter.  For a converged frame
  * to equal a fresh solve of the changed scene, each recomputed pair must
  * be the very number the full fill (rad_ff_matrix) would give: so this
- * lives in ffmatrix.c and takes the fill's path entry for entry (the
+ * takes the fill's path entry for entry (ffblock.c: the
  * mesh's frame, the element polygons, the pair kernel, occlusion with
  * RAD_OCC_AUTO, F_ji = S / (2 pi A_j), then F_ij = F_ji A_j / A_i).
  */

@@ -568,30 +568,6 @@ static rad_status check_size(const rad_scene *scene, const rad_solve_options *so
 }
 
 static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
-                              rad_result *r, rad_error *err);
-
-/* As rad_pipeline_run (pipeline.c): a scene with absent objects is solved
- * without them, on the copy of its present surfaces. */
-rad_status mpi_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
-                            rad_result *r, rad_error *err)
-{
-    if (!rad_scene_has_absent(scene))
-        return run_present(scene, opt, r, err);
-    rad_scene present;
-    memset(r, 0, sizeof *r);
-    rad_status st = rad_scene_present_copy(scene, NULL, &present, err);
-    if (st != RAD_OK)
-        return st;
-    if (present.nsurfaces == 0)
-        st = rad_fail(err, RAD_ERR_INVALID, "%s: every surface belongs to an absent object",
-                      scene->filename ? scene->filename : "-");
-    else
-        st = run_present(&present, opt, r, err);
-    rad_scene_free(&present);
-    return st;
-}
-
-static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
                               rad_result *r, rad_error *err)
 {
     memset(r, 0, sizeof *r);
@@ -623,6 +599,12 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
         r->t_smooth = seconds() - t3;
     }
     return st;
+}
+
+rad_status mpi_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
+                            rad_result *r, rad_error *err)
+{
+    return rad_pipeline_present(scene, opt, r, err, run_present); /* as pipeline.c */
 }
 
 int mpi_serve(void)

@@ -155,17 +155,14 @@ static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt
     return st;
 }
 
-static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
-                              rad_result *r, rad_error *err);
-
 /* A scene with absent objects is solved without them (radiosity-scene(5)):
  * the run works on the copy of its present surfaces, whose numbering the
  * result's mesh then follows. */
-rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
-                            rad_result *r, rad_error *err)
+rad_status rad_pipeline_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                                rad_result *r, rad_error *err, rad_pipeline_fn run)
 {
     if (!rad_scene_has_absent(scene))
-        return run_present(scene, opt, r, err);
+        return run(scene, opt, r, err);
     rad_scene present;
     memset(r, 0, sizeof *r);
     rad_status st = rad_scene_present_copy(scene, NULL, &present, err);
@@ -175,9 +172,18 @@ rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *
         st = rad_fail(err, RAD_ERR_INVALID, "%s: every surface belongs to an absent object",
                       scene->filename ? scene->filename : "-");
     else
-        st = run_present(&present, opt, r, err);
+        st = run(&present, opt, r, err);
     rad_scene_free(&present);
     return st;
+}
+
+static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                              rad_result *r, rad_error *err);
+
+rad_status rad_pipeline_run(const rad_scene *scene, const rad_pipeline_options *opt,
+                            rad_result *r, rad_error *err)
+{
+    return rad_pipeline_present(scene, opt, r, err, run_present);
 }
 
 static rad_status run_present(const rad_scene *scene, const rad_pipeline_options *opt,

@@ -79,6 +79,12 @@ RAD_API void rad_result_free(rad_result *result);
 typedef rad_status (*rad_pipeline_fn)(const rad_scene *scene, const rad_pipeline_options *opt,
                                       rad_result *result, rad_error *err);
 
+/* Call run on the scene's present part: the scene itself, or, when some
+ * object is declared absent, a copy without it (an error when nothing is
+ * left).  rad_pipeline_run is this around the serial run. */
+RAD_API rad_status rad_pipeline_present(const rad_scene *scene, const rad_pipeline_options *opt,
+                                        rad_result *result, rad_error *err, rad_pipeline_fn run);
+
 /* Elements the scene's mesh specification makes (a double: it may exceed
  * any int), without meshing. */
 RAD_API double rad_scene_element_count(const rad_scene *scene);
