@@ -59,6 +59,7 @@
 #include <string.h>
 
 #include "formfactor.h"
+#include "gausstab.h"
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
@@ -83,7 +84,7 @@ typedef rad_ff_edge ff_edge;
 /* K x K Gauss-Legendre product rule for I_pq. */
 static double ln_gauss(const ff_edge *p, const ff_edge *q, int k, double inv_s2)
 {
-    const double *x = rad_gauss_nodes(k), *w = rad_gauss_weights(k);
+    const double *x = gl_nodes(k), *w = gl_weights(k);
     double sum = 0;
     for (int a = 0; a < k; a++) {
         rad_vec3 pa = v3_add(p->p0, v3_scale(p->d, 0.5 * (1 + x[a])));
@@ -128,7 +129,7 @@ static double ln_gauss3_pts(const rad_vec3 *pa, const rad_vec3 *qb, rad_vec3 shi
 /* The 3 Gauss points of an edge (A&S 25.4.29, x = 0, +-sqrt(3/5)). */
 static void gauss3_points(const ff_edge *e, rad_vec3 out[3])
 {
-    static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
+    const double x3 = gl_nodes(3)[2]; /* sqrt(3/5) */
     for (int a = 0; a < 3; a++)
         out[a] = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + (a - 1) * x3)));
 }
