@@ -60,6 +60,7 @@
 
 #include "formfactor.h"
 #include "gausstab.h"
+#include "polygon.h"
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
@@ -153,24 +154,6 @@ int rad_ff_colinear(const ff_edge *p, const ff_edge *q)
 }
 
 /* ---- one polygon pair ---------------------------------------------------- */
-
-/* Clip polygon p (n vertices) to dist >= 0, dist[k] its signed distances
- * (already snapped to 0 within tolerance).  Output into out (room for n+1);
- * returns the vertex count. */
-static int clip_front(const rad_vec3 *p, const double *dist, int n, rad_vec3 *out)
-{
-    int m = 0;
-    for (int k = 0; k < n; k++) {
-        int k1 = (k + 1) % n;
-        if (dist[k] >= 0)
-            out[m++] = p[k];
-        if ((dist[k] > 0 && dist[k1] < 0) || (dist[k] < 0 && dist[k1] > 0)) {
-            double t = dist[k] / (dist[k] - dist[k1]);
-            out[m++] = v3_lerp(p[k], p[k1], t);
-        }
-    }
-    return m;
-}
 
 /* Signed distances of p's vertices from the plane (n, c), snapped to 0
  * within tol; returns 1 if any is positive, sets *neg if any is negative,
@@ -395,7 +378,7 @@ static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
     const rad_vec3 *pb = b->v;
     int nb = b->n;
     if (negb) {
-        nb = clip_front(b->v, dist, b->n, cb);
+        nb = poly_clip_side(b->v, dist, b->n, 1.0, cb, b->n + 1);
         pb = cb;
     }
     if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina))
@@ -403,9 +386,13 @@ static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
     const rad_vec3 *pa = a->v;
     int na = a->n;
     if (nega) {
-        na = clip_front(a->v, dist, a->n, ca);
+        na = poly_clip_side(a->v, dist, a->n, 1.0, ca, a->n + 1);
         pa = ca;
     }
+    /* (a clip that would not fit in n + 1 vertices returns -1: its
+     * distances changed sign more than twice beyond the tolerance, which a
+     * convex polygon within its twist cannot do; it is on the plane as far
+     * as they can tell) */
     if (na < 3 || nb < 3)
         return 0.0;
     const rad_vec3 sep = v3_sub(b->centroid, a->centroid);

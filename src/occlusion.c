@@ -105,6 +105,7 @@
 
 #include "formfactor.h"
 #include "occlusion.h"
+#include "polygon.h"
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
@@ -345,85 +346,6 @@ typedef struct occ_space {
 
 /* ---- small geometry -------------------------------------------------------- */
 
-static double poly_area(const rad_vec3 *p, int n)
-{
-    return 0.5 * v3_norm(v3_newell(p, n));
-}
-
-static rad_vec3 poly_mean(const rad_vec3 *p, int n)
-{
-    rad_vec3 c = v3(0, 0, 0);
-    for (int k = 0; k < n; k++)
-        c = v3_add(c, p[k]);
-    return v3_scale(c, 1.0 / n);
-}
-
-/* Signed distances d[k] = nrm . (p[k] - a), snapped to 0 within tol; the
- * smallest and largest go to *lo, *hi. */
-static void distances(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 a, double tol,
-                      double *d, double *lo, double *hi)
-{
-    double mn = HUGE_VAL, mx = -HUGE_VAL;
-    for (int k = 0; k < n; k++) {
-        double s = v3_dot(nrm, v3_sub(p[k], a));
-        if (fabs(s) <= tol)
-            s = 0;
-        d[k] = s;
-        mn = s < mn ? s : mn; /* not fmin: a libm call in the hottest loop */
-        mx = s > mx ? s : mx;
-    }
-    *lo = mn;
-    *hi = mx;
-}
-
-/* A convex polygon meets a plane in at most two sign changes of its
- * vertices' distances (walking round it, zeros skipped).  Round-off in the
- * distances of a polygon thinner than it (a sliver, or a piece far from the
- * origin) can show more; then the distances are noise: the polygon is on
- * the plane as far as they can tell, and all are set to 0 (*lo = *hi = 0).
- * Every polygon handed to clip_side goes through this first, so that its
- * output has at most n + 1 vertices and vertex counts cannot grow with
- * each cut (issue 20: a noisy polygon grew past its n + 1 buffer). */
-static void settle_signs(double *d, int n, double *lo, double *hi)
-{
-    if (*lo >= 0 || *hi <= 0)
-        return; /* one side: no change of sign at all */
-    int changes = 0, first = 0, last = 0;
-    for (int k = 0; k < n; k++) {
-        int s = d[k] > 0 ? 1 : d[k] < 0 ? -1 : 0;
-        if (s == 0)
-            continue;
-        if (!first)
-            first = s;
-        else if (s != last)
-            changes++;
-        last = s;
-    }
-    changes += first != last; /* the wrap from the last vertex to the first */
-    if (changes <= 2)
-        return;
-    for (int k = 0; k < n; k++)
-        d[k] = 0;
-    *lo = *hi = 0;
-}
-
-/* The part of p where sign * d >= 0 (Sutherland & Hodgman 1974), into out
- * (room for n + 1: with d settled by settle_signs there are at most two
- * crossings, and each drops a vertex); returns its vertex count. */
-static int clip_side(const rad_vec3 *p, const double *d, int n, double sign, rad_vec3 *out)
-{
-    int m = 0;
-    for (int k = 0; k < n; k++) {
-        int k1 = k + 1 < n ? k + 1 : 0;
-        double a = sign * d[k], b = sign * d[k1];
-        if (a >= 0)
-            out[m++] = p[k];
-        if ((a > 0 && b < 0) || (a < 0 && b > 0))
-            out[m++] = v3_lerp(p[k], p[k1], a / (a - b));
-    }
-    return m;
-}
-
 /* Clip p to the front (nrm . (q - a) >= 0) of a plane into set s; returns
  * the vertex count kept (0 when nothing or too little is left), -1 when
  * memory ran out. */
@@ -433,33 +355,15 @@ static int clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_ve
     double lo, hi;
     if (grow_d(&sp->d, &sp->capd, n) || ps_reserve(s, n + 1))
         return -1;
-    distances(p, n, nrm, a, tol, sp->d, &lo, &hi);
-    settle_signs(sp->d, n, &lo, &hi);
+    poly_distances(p, n, nrm, a, tol, sp->d, &lo, &hi);
+    poly_settle_signs(sp->d, n, &lo, &hi);
     if (hi <= 0)
         return 0;
-    int m = clip_side(p, sp->d, n, 1.0, s->v + s->nv);
+    int m = poly_clip_side(p, sp->d, n, 1.0, s->v + s->nv, n + 1);
     if (m < 3)
         return 0;
     ps_commit(s, m);
     return m;
-}
-
-/* Distance from point c to convex polygon p (n vertices, unit normal nrm). */
-static double point_polygon_distance(rad_vec3 c, const rad_vec3 *p, int n, rad_vec3 nrm)
-{
-    double h = v3_dot(nrm, v3_sub(c, p[0]));
-    rad_vec3 f = v3_sub(c, v3_scale(nrm, h));
-    int inside = 1;
-    double best = HUGE_VAL;
-    for (int k = 0; k < n; k++) {
-        rad_vec3 a = p[k], b = p[(k + 1) % n], e = v3_sub(b, a);
-        if (v3_dot(v3_cross(e, v3_sub(f, a)), nrm) < 0)
-            inside = 0;
-        double ee = v3_dot(e, e);
-        double t = ee > 0 ? fmin(1.0, fmax(0.0, v3_dot(v3_sub(c, a), e) / ee)) : 0.0;
-        best = fmin(best, v3_norm(v3_sub(c, v3_add(a, v3_scale(e, t)))));
-    }
-    return inside ? fabs(h) : best;
 }
 
 /* Point-to-polygon form factor from a differential area at x with unit
@@ -498,7 +402,7 @@ static int side_planes(occ_space *sp, const rad_vec3 *p, int np, const rad_vec3 
             double lo, hi;
             if (grow_d(&sp->d, &sp->capd, nall))
                 return -1;
-            distances(all, nall, nrm, a, tol, sp->d, &lo, &hi);
+            poly_distances(all, nall, nrm, a, tol, sp->d, &lo, &hi);
             if (hi > 0 && lo < 0)
                 continue;
             if (grow_v3(&sp->hn, &sp->caphn, *nh + 1) ||
@@ -596,20 +500,6 @@ static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
     return 4;
 }
 
-/* Largest distance of p's vertices from the plane with unit normal nrm
- * through their mean (differences first: exact for nearby vertices). */
-static double twist(const rad_vec3 *p, int n, rad_vec3 nrm)
-{
-    rad_vec3 c = v3(0, 0, 0);
-    for (int k = 1; k < n; k++)
-        c = v3_add(c, v3_sub(p[k], p[0]));
-    c = v3_scale(c, 1.0 / n);
-    double t = 0;
-    for (int k = 0; k < n; k++)
-        t = fmax(t, fabs(v3_dot(nrm, v3_sub(v3_sub(p[k], p[0]), c))));
-    return t;
-}
-
 /* The tolerance for the surfaces a and b and the candidates of their pair. */
 static double pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand)
 {
@@ -645,7 +535,7 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
             int n = surface_outline(m, s, o->sv + at);
             o->snormal[s] = m->elements[e0].normal;
             v3_bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
-            o->stwist[s] = twist(o->sv + at, n, o->snormal[s]);
+            o->stwist[s] = poly_twist(o->sv + at, n, o->snormal[s]);
             at += n;
         } else {
             o->snormal[s] = o->slo[s] = o->shi[s] = v3(0, 0, 0);
@@ -910,16 +800,16 @@ static int cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int
         double lo, hi;
         if (grow_d(&sp->d, &sp->capd, *n) || grow_v3(&sp->tmp, &sp->captmp, *n + 1))
             return -1;
-        distances(sp->rem, *n, nrm[k], pt[k], snap, sp->d, &lo, &hi);
-        settle_signs(sp->d, *n, &lo, &hi);
+        poly_distances(sp->rem, *n, nrm[k], pt[k], snap, sp->d, &lo, &hi);
+        poly_settle_signs(sp->d, *n, &lo, &hi);
         if (hi <= 0)
             return ps_push(out, sp->rem, *n) ? -1 : 0; /* wholly outside */
         if (lo >= 0)
             continue; /* wholly inside this plane */
-        int m = clip_side(sp->rem, sp->d, *n, -1.0, sp->tmp);
+        int m = poly_clip_side(sp->rem, sp->d, *n, -1.0, sp->tmp, *n + 1);
         if (m >= 3 && poly_area(sp->tmp, m) > sliver && ps_push(out, sp->tmp, m))
             return -1;
-        m = clip_side(sp->rem, sp->d, *n, 1.0, sp->tmp);
+        m = poly_clip_side(sp->rem, sp->d, *n, 1.0, sp->tmp, *n + 1);
         if (m < 3 || !(poly_area(sp->tmp, m) > sliver))
             return 0;
         rad_vec3 *t = sp->rem;
@@ -1004,13 +894,13 @@ static int shadow_in_piece(occ_space *sp, const pair_ctx *c, const rad_vec3 *q, 
             continue;
         if (grow_d(&sp->d, &sp->capd, m) || grow_v3(&sp->pj1, &sp->cappj1, m + 1))
             return -1;
-        distances(sp->pj0, m, v3_scale(nrm, turn / len), q[k], c->snap, sp->d, &lo, &hi);
-        settle_signs(sp->d, m, &lo, &hi);
+        poly_distances(sp->pj0, m, v3_scale(nrm, turn / len), q[k], c->snap, sp->d, &lo, &hi);
+        poly_settle_signs(sp->d, m, &lo, &hi);
         if (hi <= 0)
             return 0;
         if (lo >= 0)
             continue;
-        m = clip_side(sp->pj0, sp->d, m, 1.0, sp->pj1);
+        m = poly_clip_side(sp->pj0, sp->d, m, 1.0, sp->pj1, m + 1);
         rad_vec3 *t = sp->pj0;
         int tc = sp->cappj0;
         sp->pj0 = sp->pj1;
@@ -1144,8 +1034,8 @@ static int add_if_separating(occ_space *sp, rad_vec3 nrm, rad_vec3 a, const rad_
     double plo, phi, tlo, thi;
     if (grow_d(&sp->d, &sp->capd, np > nt ? np : nt))
         return -1;
-    distances(p, np, nrm, a, tol, sp->d, &plo, &phi);
-    distances(t, nt, nrm, a, tol, sp->d, &tlo, &thi);
+    poly_distances(p, np, nrm, a, tol, sp->d, &plo, &phi);
+    poly_distances(t, nt, nrm, a, tol, sp->d, &tlo, &thi);
     int up = plo >= 0 && thi <= 0, down = phi <= 0 && tlo >= 0;
     if (!(up || down) || (plo == 0 && phi == 0 && tlo == 0 && thi == 0))
         return 0;
@@ -1331,15 +1221,15 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
         }
         if (grow_d(&sp->d, &sp->capd, n) || grow_v3(&sp->tmp, &sp->captmp, n + 1))
             return -1;
-        distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
-        settle_signs(sp->d, n, &lo, &hi);
+        poly_distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
+        poly_settle_signs(sp->d, n, &lo, &hi);
         if (lo >= 0 || hi <= 0) {
             if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
         }
         for (int side = -1; side <= 1; side += 2) {
-            int m = clip_side(p, sp->d, n, side, sp->tmp);
+            int m = poly_clip_side(p, sp->d, n, side, sp->tmp, n + 1);
             rad_vec3 cen;
             double rad;
             if (m < 3 || !(poly_area(sp->tmp, m) > c->sliver))
@@ -1668,7 +1558,7 @@ static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const
 {
     double d = HUGE_VAL;
     for (int b = 0; b < nb; b++)
-        d = fmin(d, point_polygon_distance(e->centroid, sp->blk.v + sp->blk.first[b],
+        d = fmin(d, poly_point_distance(e->centroid, sp->blk.v + sp->blk.first[b],
                                            sp->blk.first[b + 1] - sp->blk.first[b],
                                            o->snormal[sp->bid[b]]));
     return e->size / fmax(d, 1e-300);
