@@ -116,6 +116,23 @@ static inline int poly_clip_side(const rad_vec3 *p, const double *d, int n, doub
     return poly_clip(p, d, n, &cut, out, cap);
 }
 
+/* The plane through edge k of p (from p[k] to p[k + 1], n vertices) and
+ * the point q: its unit normal e x w / |e x w| (e the edge, w = q - p[k])
+ * into *nrm, and 1; 0 when q is on the edge's line as far as round-off
+ * can tell (|e x w| <= 1e-12 |e| |w|).  The face planes of the hull of two
+ * convex polygons, and the planes where what one hides of the other
+ * changes, are all of this kind. */
+static inline int poly_edge_plane(const rad_vec3 *p, int n, int k, rad_vec3 q, rad_vec3 *nrm)
+{
+    const rad_vec3 a = p[k], e = v3_sub(p[(k + 1) % n], a), w = v3_sub(q, a);
+    const rad_vec3 c = v3_cross(e, w);
+    const double len = v3_norm(c);
+    if (!(len > 1e-12 * v3_norm(e) * v3_norm(w)))
+        return 0;
+    *nrm = v3_scale(c, 1.0 / len);
+    return 1;
+}
+
 /* When the distances d (n of them, smallest *lo, largest *hi) change sign
  * more than twice round the polygon, they are round-off: all are set to 0
  * and *lo = *hi = 0 (the polygon is on the plane as far as they can
