@@ -112,6 +112,7 @@
 #include <string.h>
 
 #include "formfactor.h"
+#include "gausstab.h"
 #include "vec.h"
 #include "vecmath.h"
 
@@ -123,45 +124,13 @@
  * here with a margin, per unit P. */
 #define LOG_SHORT_ERR 8e-15
 
-/* Gauss-Legendre nodes (ascending) and weights for K = 3, 4, 6, 8, as in
- * gauss.c (A&S table 25.4; tests/test_formfactor.c checks that they agree), as
- * constants here so that the unrolled rules fold them. */
-static const double GX3[3] = {-0.774596669241483377036, 0.0, 0.774596669241483377036};
-static const double GW3[3] = {0.555555555555555555556, 0.888888888888888888889,
-                              0.555555555555555555556};
-static const double GX4[4] = {-0.861136311594052575224, -0.339981043584856264803,
-                              0.339981043584856264803, 0.861136311594052575224};
-static const double GW4[4] = {0.347854845137453857373, 0.652145154862546142627,
-                              0.652145154862546142627, 0.347854845137453857373};
-static const double GX6[6] = {-0.932469514203152027812, -0.661209386466264513661,
-                              -0.238619186083196908631, 0.238619186083196908631,
-                              0.661209386466264513661,  0.932469514203152027812};
-static const double GW6[6] = {0.17132449237917034504, 0.36076157304813860757,
-                              0.46791393457269104739, 0.46791393457269104739,
-                              0.36076157304813860757, 0.17132449237917034504};
-static const double GX8[8] = {-0.960289856497536231684, -0.796666477413626739592,
-                              -0.525532409916328985818, -0.183434642495649804939,
-                              0.183434642495649804939,  0.525532409916328985818,
-                              0.796666477413626739592,  0.960289856497536231684};
-static const double GW8[8] = {0.101228536290376259153, 0.222381034453374470544,
-                              0.313706645877887287338, 0.362683783378361982965,
-                              0.362683783378361982965, 0.313706645877887287338,
-                              0.222381034453374470544, 0.101228536290376259153};
-
+/* The rules here are K = 3, 4, 6 and 8 points of the one Gauss-Legendre
+ * table (gausstab.h), which the unrolled rules below fold as constants. */
 const double *rad_ff_gauss_table(int k, int weights)
 {
-    switch (k) {
-    case 3:
-        return weights ? GW3 : GX3;
-    case 4:
-        return weights ? GW4 : GX4;
-    case 6:
-        return weights ? GW6 : GX6;
-    case 8:
-        return weights ? GW8 : GX8;
-    default:
+    if (k != 3 && k != 4 && k != 6 && k != 8)
         return NULL;
-    }
+    return weights ? gl_weights(k) : gl_nodes(k);
 }
 
 /* ---- the bounds ---------------------------------------------------------- */
@@ -380,7 +349,7 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
 static inline __attribute__((always_inline)) double nine_eval(const pair_batch *bt, int m,
                                                               double inv_s2)
 {
-    const double hu = 0.5 * 0.774596669241483377036; /* sqrt(3/5) / 2 */
+    const double hu = 0.5 * gl_nodes(3)[2]; /* sqrt(3/5) / 2 */
     v4 acc = {0, 0, 0, 0};
     for (int k = 0; k < m; k += 4) {
         const v4 wx = load4(bt->wx + k), wy = load4(bt->wy + k), wz = load4(bt->wz + k);
@@ -433,8 +402,7 @@ static inline __attribute__((always_inline)) double quad_eval(const pair_batch *
                                                               double inv_s2, const int K,
                                                               const int short_log)
 {
-    const double *xs = K == 3 ? GX3 : K == 4 ? GX4 : K == 6 ? GX6 : GX8;
-    const double *ws = K == 3 ? GW3 : K == 4 ? GW4 : K == 6 ? GW6 : GW8;
+    const double *xs = gl_nodes(K), *ws = gl_weights(K);
     const int H = (K + 1) / 2, NC = H * (H + 1) / 2;
     v4 acc = {0, 0, 0, 0};
     rad_v4i fine = {-1, -1, -1, -1}; /* lanes whose products are all normal */

@@ -192,7 +192,7 @@ static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int
         double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
         if (isnan(fij))
             return -1;
-        /* hidden surfaces (occlusion.c): S stays symmetric, or unchanged */
+        /* hidden surfaces (occlusion.h): S stays symmetric, or unchanged */
         if (ow && rad_occ_pair(ow, polys, i, j, &s, want ? &e : NULL) != 0)
             return -1;
         col[j] = s * inv_t[j];

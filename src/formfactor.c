@@ -46,6 +46,9 @@
  *              clamped to 0 and the error estimate covers the clamp; one
  *              above 1 either way is brought to 1 only when the excess is
  *              within its error bound, and counted (clamp_to_one).
+ * The routes are one table, ff_methods below: each row a method, when it
+ * applies, and (in its comment) what it costs and how its error is
+ * tested; a pair goes down the rows until one accepts it.
  *
  * "On a plane" means within the round-off of the distances (a few ulps
  * of the coordinates, 1e-12 of the pair's size) plus the polygons' own
@@ -59,6 +62,8 @@
 #include <string.h>
 
 #include "formfactor.h"
+#include "gausstab.h"
+#include "polygon.h"
 #include "radiosity.h"
 #include "status.h"
 #include "vec.h"
@@ -83,7 +88,7 @@ typedef rad_ff_edge ff_edge;
 /* K x K Gauss-Legendre product rule for I_pq. */
 static double ln_gauss(const ff_edge *p, const ff_edge *q, int k, double inv_s2)
 {
-    const double *x = rad_gauss_nodes(k), *w = rad_gauss_weights(k);
+    const double *x = gl_nodes(k), *w = gl_weights(k);
     double sum = 0;
     for (int a = 0; a < k; a++) {
         rad_vec3 pa = v3_add(p->p0, v3_scale(p->d, 0.5 * (1 + x[a])));
@@ -128,7 +133,7 @@ static double ln_gauss3_pts(const rad_vec3 *pa, const rad_vec3 *qb, rad_vec3 shi
 /* The 3 Gauss points of an edge (A&S 25.4.29, x = 0, +-sqrt(3/5)). */
 static void gauss3_points(const ff_edge *e, rad_vec3 out[3])
 {
-    static const double x3 = 0.774596669241483377036; /* sqrt(3/5) */
+    const double x3 = gl_nodes(3)[2]; /* sqrt(3/5) */
     for (int a = 0; a < 3; a++)
         out[a] = v3_add(e->p0, v3_scale(e->d, 0.5 * (1 + (a - 1) * x3)));
 }
@@ -152,24 +157,6 @@ int rad_ff_colinear(const ff_edge *p, const ff_edge *q)
 }
 
 /* ---- one polygon pair ---------------------------------------------------- */
-
-/* Clip polygon p (n vertices) to dist >= 0, dist[k] its signed distances
- * (already snapped to 0 within tolerance).  Output into out (room for n+1);
- * returns the vertex count. */
-static int clip_front(const rad_vec3 *p, const double *dist, int n, rad_vec3 *out)
-{
-    int m = 0;
-    for (int k = 0; k < n; k++) {
-        int k1 = (k + 1) % n;
-        if (dist[k] >= 0)
-            out[m++] = p[k];
-        if ((dist[k] > 0 && dist[k1] < 0) || (dist[k] < 0 && dist[k1] > 0)) {
-            double t = dist[k] / (dist[k] - dist[k1]);
-            out[m++] = v3_lerp(p[k], p[k1], t);
-        }
-    }
-    return m;
-}
 
 /* Signed distances of p's vertices from the plane (n, c), snapped to 0
  * within tol; returns 1 if any is positive, sets *neg if any is negative,
@@ -321,9 +308,398 @@ static double pair_done(const rad_ff_poly *a, const rad_ff_poly *b, rad_ff_scrat
     return s / (2 * RAD_PI * a->area);
 }
 
+/* ---- one pair: the methods in order ---------------------------------------- */
+
+/* A pair on its way through the methods: the polygons as clipped, what
+ * the applicability tests need, and the result so far. */
+typedef struct pair_state {
+    const rad_ff_poly *a, *b;
+    const rad_ff_options *opt;
+    rad_ff_scratch *w;
+    const rad_vec3 *pa, *pb;    /* a and b, clipped to each other's front */
+    int na, nb;
+    int clipped;                /* either was clipped: the batched rules,
+                                   which take the polygons' own edges, do
+                                   not apply */
+    int a_clipped;              /* a was: its precomputed edges do not either */
+    int touch;                  /* both have two vertices near the other's
+                                   plane: colinear edge pairs may exist */
+    double tol;                 /* "on the plane" (see pair_setup) */
+    double dplane;              /* larger of each polygon's smallest vertex
+                                   distance from the other's plane */
+    double scale2;              /* s^2 of the ln(r/s) every I_pq integrates */
+    double far;                 /* the pair is distant when far * (size_a +
+                                   size_b) is below the centroid distance */
+    double rel;                 /* target relative error of S, general path */
+    rad_ff_edge *ea, *eb;       /* edges about a's centroid (pair_edges) */
+    int mea, meb;               /* their counts; mea < 0: not yet made */
+    int skew;                   /* some edge pair is skew; -1: not yet known */
+    int area_tried;             /* the area rules ran on the whole pair */
+    double s, e;                /* S so far and its error estimate */
+} pair_state;
+
+/* What a method did: accepted its S, left the pair to the next method, or
+ * ran out of memory. */
+enum { FF_NEXT, FF_DONE, FF_FAIL };
+
+/* How a result is stored: as it is with no estimate (classic); through
+ * pair_done (S brought within 1 when its bound allows); or first clamped
+ * at 0 within its error, a form factor never being negative. */
+enum { FIN_RAW, FIN_BOUNDED, FIN_CLAMPED };
+
+/* The edges of the clipped polygons about a's centroid, made on first
+ * use: a's precomputed ones unless clipped; b's from its vertices, each
+ * rounded once, so that a vertex the two polygons share is the same point
+ * in both (through b's own centroid it would differ by an ulp of the
+ * coordinates, which a touching pair feels at the 1e-11 level). */
+static void pair_edges(pair_state *p)
+{
+    if (p->mea >= 0)
+        return;
+    if (p->a_clipped) {
+        p->mea = rad_ff_edges(p->pa, p->na, p->a->centroid, p->ea);
+    } else {
+        p->mea = p->a->nedges;
+        memcpy(p->ea, p->a->edges, sizeof *p->ea * (size_t)p->mea);
+    }
+    p->meb = rad_ff_edges(p->pb, p->nb, p->a->centroid, p->eb);
+}
+
+static int is_classic(const pair_state *p)
+{
+    return p->opt->accuracy == RAD_ACCURACY_CLASSIC;
+}
+
+/* S still misses the general path's target. */
+static int misses(pair_state *p)
+{
+    return !is_classic(p) && p->e > p->rel * fabs(p->s);
+}
+
+/* -- the applicability tests -- */
+
+static int ap_nine_point(pair_state *p)
+{
+    return is_classic(p) && p->opt->quadrature == 3 && !p->clipped;
+}
+
+static int ap_bounded(pair_state *p)
+{
+    return !is_classic(p) && !p->clipped;
+}
+
+static int ap_classic(pair_state *p)
+{
+    return is_classic(p);
+}
+
+/* Is some edge pair skew (neither parallel nor perpendicular)?  Edges
+ * made and the answer kept on first use. */
+static int pair_skew(pair_state *p)
+{
+    pair_edges(p);
+    if (p->skew < 0)
+        p->skew = has_skew(p->ea, p->mea, p->eb, p->meb);
+    return p->skew;
+}
+
+static int ap_no_skew(pair_state *p)
+{
+    return !is_classic(p) && !pair_skew(p);
+}
+
+static int ap_distant(pair_state *p)
+{
+    const double r = v3_norm(v3_sub(p->b->centroid, p->a->centroid));
+    return !is_classic(p) && p->far * (p->a->size + p->b->size) < r;
+}
+
+static int ap_general(pair_state *p)
+{
+    return !is_classic(p);
+}
+
+static int ap_area_whole(pair_state *p)
+{
+    return misses(p) && !p->area_tried;
+}
+
+/* -- the methods -- */
+
+/* The nine-point rule batched for SIMD (ffgauss.c; NaN without vector
+ * extensions: the classic rule below then does it). */
+static int run_nine_point(pair_state *p)
+{
+    p->s = rad_ff_nine_point(p->a, p->b, p->scale2, p->touch);
+    return isnan(p->s) ? FF_NEXT : FF_DONE;
+}
+
+/* The 3 x 3 .. 8 x 8 Gauss rules under a priori bounds (ffgauss.c).  The
+ * bounds are bounds (the truncation error proved, round-off with a
+ * margin), not estimates: accepted within half the promise (1e-9
+ * reference, 1e-6 default). */
+static int run_bounded(pair_state *p)
+{
+    const double rel = p->opt->accuracy == RAD_ACCURACY_REFERENCE ? 5e-10 : 5e-7;
+    return rad_ff_gauss_tiers(p->a, p->b, p->scale2, box_gap2(p->a, p->b), p->dplane, p->tol,
+                              rel, &p->s, &p->e)
+               ? FF_DONE
+               : FF_NEXT;
+}
+
+static int run_classic(pair_state *p)
+{
+    pair_edges(p);
+    p->s = classic_sum(p->ea, p->mea, p->eb, p->meb, p->opt->quadrature, p->scale2);
+    return FF_DONE;
+}
+
+/* No skew edge pair: every I_pq in closed form (vectorised), exact but
+ * for round-off. */
+static int run_closed(pair_state *p)
+{
+    p->s = rad_ff_contour(p->ea, p->mea, p->eb, p->meb, p->scale2, 0, 0, p->a->centroid, &p->e);
+    return p->s > 0 && p->e <= p->rel * p->s ? FF_DONE : FF_NEXT;
+}
+
+/* Distant: the area rules, where nothing cancels (ffarea.c). */
+static int run_area_distant(pair_state *p)
+{
+    const rad_ff_poly *a = p->a, *b = p->b;
+    p->area_tried = 1;
+    const int r = rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid,
+                              p->rel, &p->s, &p->e);
+    return r < 0 ? FF_FAIL : r == 0 ? FF_DONE : FF_NEXT;
+}
+
+/* Near: the contour, closed forms for parallel edge pairs and adaptive
+ * Gauss-Kronrod for skew ones (ffcontour.c).  With skew edges, a first
+ * pass with the classic rule sets the scale of S for the absolute
+ * tolerance of their adaptive quadrature; parallel edges need none. */
+static int run_contour(pair_state *p)
+{
+    const double rel = p->rel;
+    double s0 = 0;
+    if (pair_skew(p))
+        s0 = fabs(classic_sum(p->ea, p->mea, p->eb, p->meb, 3, p->scale2));
+    p->s = rad_ff_contour(p->ea, p->mea, p->eb, p->meb, p->scale2, rel * s0, 0, p->a->centroid,
+                          &p->e);
+    if (p->e > rel * fabs(p->s) && fabs(p->s) < 0.5 * s0) /* scale was too optimistic */
+        p->s = rad_ff_contour(p->ea, p->mea, p->eb, p->meb, p->scale2, rel * fabs(p->s), 0,
+                              p->a->centroid, &p->e);
+    return misses(p) ? FF_NEXT : FF_DONE;
+}
+
+/* Keep (s, e) if it does better than the result so far. */
+static int take_if_better(pair_state *p, double s, double e)
+{
+    if (e < p->e) {
+        p->s = s;
+        p->e = e;
+    }
+    return misses(p) ? FF_NEXT : FF_DONE;
+}
+
+/* The terms cancel beyond double (long thin pairs): the same in long
+ * double. */
+static int run_contour_long(pair_state *p)
+{
+    double s, e;
+    s = rad_ff_contour(p->ea, p->mea, p->eb, p->meb, p->scale2, p->rel * fabs(p->s), 1,
+                       p->a->centroid, &e);
+    return take_if_better(p, s, e);
+}
+
+/* The area rules on the whole pair (a failure to converge, or to find
+ * memory, leaves the result as it is). */
+static int run_area_whole(pair_state *p)
+{
+    const rad_ff_poly *a = p->a, *b = p->b;
+    double s, e;
+    if (rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid, p->rel, &s,
+                    &e) != 0)
+        return FF_NEXT;
+    return take_if_better(p, s, e);
+}
+
+/* The area rules with both polygons cut into parts small against their
+ * distance (strips end to end, a strip beside a plate). */
+static int run_area_split(pair_state *p)
+{
+    const rad_ff_poly *a = p->a, *b = p->b;
+    double s, e;
+    const int r = rad_ff_area_adaptive(p->pa, p->na, a->normal, p->pb, p->nb, b->normal,
+                                       a->centroid, p->rel, &s, &e);
+    if (r < 0)
+        return FF_FAIL;
+    return r == 0 ? take_if_better(p, s, e) : FF_NEXT;
+}
+
+/* The methods in the order they are tried: the first that applies and
+ * accepts its result ends the pair; one that does not accept leaves it to
+ * the rows below.  Classic mode takes rows 1 and 3 only (the paper's rule
+ * and nothing else); default and reference take the rest, fastest first,
+ * each accepting only what meets the mode's target (rel, 1e-8 of S in
+ * default, 1e-11 in reference) by its own error estimate: the method's
+ * own plus a round-off bound.  The comment above each row says when it
+ * applies, what it costs, and how its error is tested. */
+typedef struct ff_method {
+    int (*applies)(pair_state *p);
+    int (*run)(pair_state *p);
+    int finish;
+} ff_method;
+
+static const ff_method ff_methods[] = {
+    /* 1. classic, K = 3, neither polygon clipped: the nine-point rule,
+     * batched for SIMD; the fill's common case; no error estimate */
+    {ap_nine_point, run_nine_point, FIN_RAW},
+    /* 2. default and reference, neither clipped: Gauss 3x3 .. 8x8, about
+     * classic's cost; accepted when the proved a priori bound (truncation
+     * and round-off) is within half the promise */
+    {ap_bounded, run_bounded, FIN_BOUNDED},
+    /* 3. classic otherwise: K Gauss points per edge, closed form for
+     * colinear edges (Goral et al. 1984); always accepted, no estimate */
+    {ap_classic, run_classic, FIN_RAW},
+    /* 4. no skew edge pair: closed forms, vectorised; exact but for
+     * round-off, accepted when the round-off bound is within rel */
+    {ap_no_skew, run_closed, FIN_CLAMPED},
+    /* 5. small against their distance (sum of the bounding diagonals
+     * below the centroid distance, below 1/4 of it in default): area
+     * rules, where nothing cancels; accepted when two orders agree */
+    {ap_distant, run_area_distant, FIN_CLAMPED},
+    /* 6. near: the contour, closed forms and adaptive Gauss-Kronrod 7-15
+     * on skew edges; accepted on the Kronrod estimate plus round-off */
+    {ap_general, run_contour, FIN_CLAMPED},
+    /* 7. still short: the contour in long double (cancellation beyond
+     * double, long thin pairs), kept if its estimate is smaller */
+    {misses, run_contour_long, FIN_CLAMPED},
+    /* 8. then the area rules in one piece, kept if better */
+    {ap_area_whole, run_area_whole, FIN_CLAMPED},
+    /* 9. then cut into parts small against their distance, kept if
+     * better; what still misses is counted by the fill */
+    {misses, run_area_split, FIN_CLAMPED},
+};
+#define FF_NMETHODS ((int)(sizeof ff_methods / sizeof ff_methods[0]))
+
+/* Store the result as method `finish` says; F from a to b. */
+static double pair_finish(pair_state *p, int finish, double *contour, double *errest)
+{
+    if (finish == FIN_RAW) {
+        *contour = p->s;
+        if (errest)
+            *errest = NAN;
+        /* With both contours counter-clockwise about their own fronts,
+         * facing polygons give S > 0 (checked on two facing unit squares). */
+        return p->s / (2 * RAD_PI * p->a->area);
+    }
+    if (finish == FIN_CLAMPED && p->s < 0) { /* clamp within its error */
+        p->e = fmax(p->e, -p->s);
+        p->s = 0;
+    }
+    return pair_done(p->a, p->b, p->w, p->s, p->e, contour, errest);
+}
+
+/* Clip each polygon to the front of the other's plane and fill p for the
+ * methods; 1 to go on, 0 when F = 0 (one wholly behind the other's plane,
+ * or both on one plane), -1 when scratch memory ran out. */
+static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
+                      const rad_ff_options *opt, rad_ff_scratch *w)
+{
+    if (scratch_reserve(w, a->n, b->n) != 0)
+        return -1;
+    rad_vec3 *ca = (rad_vec3 *)w->buf;
+    rad_vec3 *cb = ca + a->n + 2;
+    double *dist = (double *)(cb + b->n + 2);
+    p->ea = (ff_edge *)(dist + (a->n > b->n ? a->n : b->n) + 2);
+    p->eb = p->ea + a->n + 2;
+    /* Tolerance for "on the plane" (issue 20): the round-off of the
+     * distances, nothing more, plus the polygons' own twists.  The
+     * distance n . (p - c) is off by the rounding of the centroid c (a few
+     * ulps of the coordinates, FF_ROUND of them allowed) and by that of the
+     * product (1e-12 of the pair's size, generous).  It used to be 1e-12 of
+     * the coordinates' magnitude: two plates 1e-7 apart at 1e6 from the
+     * origin were one plane (F = 0), at the origin they see each other
+     * fully.  A twisted polygon (the scene accepts a vertex 1e-6 of a
+     * quad's size off its plane) is planar only to within its twist, so
+     * two faces of one twisted panel lie on one plane and see nothing of
+     * each other (they used to give F = 2/9 both ways). */
+    const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
+    const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
+                         1e-12 * (a->size + b->size);
+    const double tol = rtol + a->twist + b->twist;
+    /* A colinear edge pair lies on both planes: each polygon then has two
+     * vertices near the other's plane, allowing for non-planar polygons
+     * (the scene's 1e-6 of a quad's size, less for its elements). */
+    const double ntol = tol + 1e-5 * (a->size + b->size);
+    int nega, negb, neara, nearb;
+    double mina, minb;
+    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, ntol, dist, &negb, &nearb, &minb))
+        return 0; /* B wholly behind A's plane, or on it */
+    p->pb = negb ? cb : b->v;
+    p->nb = negb ? poly_clip_side(b->v, dist, b->n, 1.0, cb, b->n + 1) : b->n;
+    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina))
+        return 0;
+    p->pa = nega ? ca : a->v;
+    p->na = nega ? poly_clip_side(a->v, dist, a->n, 1.0, ca, a->n + 1) : a->n;
+    /* (a clip that would not fit in n + 1 vertices returns -1: its
+     * distances changed sign more than twice beyond the tolerance, which a
+     * convex polygon within its twist cannot do; it is on the plane as far
+     * as they can tell) */
+    if (p->na < 3 || p->nb < 3)
+        return 0;
+    const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
+    const int ref = opt->accuracy == RAD_ACCURACY_REFERENCE;
+    p->a = a;
+    p->b = b;
+    p->opt = opt;
+    p->w = w;
+    p->clipped = nega || negb;
+    p->a_clipped = nega;
+    p->touch = neara >= 2 && nearb >= 2;
+    p->tol = tol;
+    /* for a lower bound on their distance: each polygon's nearest vertex
+     * from the other's plane (and, in run_bounded, the box gap) */
+    p->dplane = mina > minb ? mina : minb;
+    p->scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
+    /* The contour's closed forms lose about eps (r/L)^4 to cancellation:
+     * default (1e-8 internally) can afford r/L up to ~10, reference
+     * (1e-11) moves to the area form as soon as the pair is apart.  The
+     * targets are 1e-9 (reference) and 1e-6 (default) with a margin of
+     * 100 for the estimates. */
+    p->far = ref ? 1 : 4;
+    p->rel = ref ? 1e-11 : 1e-8;
+    p->mea = p->meb = -1;
+    p->skew = -1;
+    p->area_tried = 0;
+    p->s = p->e = 0;
+    return 1;
+}
+
 static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
                            const rad_ff_options *opt, rad_ff_scratch *w, double *contour,
-                           double *errest);
+                           double *errest)
+{
+    pair_state p;
+    *contour = 0;
+    if (errest)
+        *errest = 0;
+    const int go = pair_setup(&p, a, b, opt, w);
+    if (go <= 0)
+        return go < 0 ? NAN : 0.0;
+    int finish = FIN_CLAMPED;
+    for (int k = 0; k < FF_NMETHODS; k++) {
+        const ff_method *m = &ff_methods[k];
+        if (!m->applies(&p))
+            continue;
+        const int r = m->run(&p);
+        if (r == FF_FAIL)
+            return NAN;
+        finish = m->finish;
+        if (r == FF_DONE)
+            break;
+    }
+    return pair_finish(&p, finish, contour, errest);
+}
 
 /* Default mode promises 1e-6 relative.  A pair whose own estimate still
  * misses that after default's methods is done again to reference mode's
@@ -352,176 +728,4 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     }
     w->clamped = c1;
     return f;
-}
-
-static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
-                           const rad_ff_options *opt, rad_ff_scratch *w, double *contour,
-                           double *errest)
-{
-    *contour = 0;
-    if (errest)
-        *errest = 0;
-    if (scratch_reserve(w, a->n, b->n) != 0)
-        return NAN;
-    rad_vec3 *ca = (rad_vec3 *)w->buf;
-    rad_vec3 *cb = ca + a->n + 2;
-    double *dist = (double *)(cb + b->n + 2);
-    ff_edge *ea = (ff_edge *)(dist + (a->n > b->n ? a->n : b->n) + 2);
-    ff_edge *eb = ea + a->n + 2;
-    /* Tolerance for "on the plane" (issue 20): the round-off of the
-     * distances, nothing more, plus the polygons' own twists.  The
-     * distance n . (p - c) is off by the rounding of the centroid c (a few
-     * ulps of the coordinates, FF_ROUND of them allowed) and by that of the
-     * product (1e-12 of the pair's size, generous).  It used to be 1e-12 of
-     * the coordinates' magnitude: two plates 1e-7 apart at 1e6 from the
-     * origin were one plane (F = 0), at the origin they see each other
-     * fully.  A twisted polygon (the scene accepts a vertex 1e-6 of a
-     * quad's size off its plane) is planar only to within its twist, so
-     * two faces of one twisted panel lie on one plane and see nothing of
-     * each other (they used to give F = 2/9 both ways). */
-    const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
-    const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
-                         1e-12 * (a->size + b->size);
-    double tol = rtol + a->twist + b->twist;
-    /* A colinear edge pair lies on both planes: each polygon then has two
-     * vertices near the other's plane, allowing for non-planar polygons
-     * (the scene's 1e-6 of a quad's size, less for its elements). */
-    const double ntol = tol + 1e-5 * (a->size + b->size);
-    int nega, negb, neara, nearb;
-    double mina, minb;
-    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, ntol, dist, &negb, &nearb, &minb))
-        return 0.0; /* B wholly behind A's plane, or on it */
-    const rad_vec3 *pb = b->v;
-    int nb = b->n;
-    if (negb) {
-        nb = clip_front(b->v, dist, b->n, cb);
-        pb = cb;
-    }
-    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina))
-        return 0.0;
-    const rad_vec3 *pa = a->v;
-    int na = a->n;
-    if (nega) {
-        na = clip_front(a->v, dist, a->n, ca);
-        pa = ca;
-    }
-    if (na < 3 || nb < 3)
-        return 0.0;
-    const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
-    const double scale2 = v3_dot(sep, sep) + a->size * a->size + b->size * b->size;
-    if (opt->accuracy == RAD_ACCURACY_CLASSIC && opt->quadrature == 3 && !nega && !negb) {
-        /* the common case, batched (the polygons' own edges hold only for
-         * unclipped polygons) */
-        const double s9 = rad_ff_nine_point(a, b, scale2, neara >= 2 && nearb >= 2);
-        if (!isnan(s9)) {
-            *contour = s9;
-            if (errest)
-                *errest = NAN;
-            return s9 / (2 * RAD_PI * a->area);
-        }
-    }
-    /* polygons apart: the bounded Gauss rules (default, reference) */
-    if (opt->accuracy != RAD_ACCURACY_CLASSIC && !nega && !negb) {
-        double sg, eg;
-        /* the bounds are bounds (the truncation error proved, round-off
-         * with a margin), not estimates: half the promise (1e-9
-         * reference, 1e-6 default) */
-        const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 5e-10 : 5e-7;
-        /* for a lower bound on their distance: each polygon's nearest
-         * vertex from the other's plane, the gap between bounding boxes */
-        if (rad_ff_gauss_tiers(a, b, scale2, box_gap2(a, b), mina > minb ? mina : minb, tol, rel,
-                               &sg, &eg))
-            return pair_done(a, b, w, sg, eg, contour, errest);
-    }
-    /* edges in coordinates centred on A's centroid: A's precomputed unless
-     * clipped; B's from its vertices, each rounded once, so that a vertex
-     * the two polygons share is the same point in both (through B's own
-     * centroid it would differ by an ulp of the coordinates, which a
-     * touching pair feels at the 1e-11 level) */
-    int mea, meb;
-    if (nega) {
-        mea = rad_ff_edges(pa, na, a->centroid, ea);
-    } else {
-        mea = a->nedges;
-        memcpy(ea, a->edges, sizeof *ea * (size_t)mea);
-    }
-    meb = rad_ff_edges(pb, nb, a->centroid, eb);
-    double s, e = 0;
-    if (opt->accuracy == RAD_ACCURACY_CLASSIC) {
-        s = classic_sum(ea, mea, eb, meb, opt->quadrature, scale2);
-        if (errest)
-            *errest = NAN;
-    } else {
-        /* target relative error of S: 1e-9 (reference), 1e-6 (default), with a
-         * margin of 100 for the estimates */
-        const double rel = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1e-11 : 1e-8;
-        const int skew = has_skew(ea, mea, eb, meb);
-        /* no skew edge pair: the closed forms (vectorised), exact but for
-         * round-off */
-        if (!skew) {
-            s = rad_ff_contour(ea, mea, eb, meb, scale2, 0, 0, a->centroid, &e);
-            if (s > 0 && e <= rel * s)
-                return pair_done(a, b, w, s, e, contour, errest);
-        }
-        const double r = v3_norm(sep);
-        /* The contour's closed forms lose about eps (r/L)^4 to cancellation:
-         * default (1e-8 internally) can afford r/L up to ~10, reference
-         * (1e-11) moves to the area form as soon as the pair is apart. */
-        const double far = opt->accuracy == RAD_ACCURACY_REFERENCE ? 1 : 4;
-        int area = 1;
-        if (far * (a->size + b->size) < r) /* distant: the area form does not cancel */
-            area = rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &s, &e);
-        if (area < 0)
-            return NAN;
-        if (area != 0) {
-            /* near: the contour.  With skew edges, a first pass with the
-             * classic rule sets the scale of S for the absolute tolerance
-             * of their adaptive quadrature; parallel edges need none. */
-            double s0 = 0;
-            if (skew)
-                s0 = fabs(classic_sum(ea, mea, eb, meb, 3, scale2));
-            s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * s0, 0, a->centroid, &e);
-            if (e > rel * fabs(s) && fabs(s) < 0.5 * s0) /* scale was too optimistic */
-                s = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 0, a->centroid, &e);
-            /* still short of the tolerance: the terms cancel beyond double
-             * (long thin pairs); the same in long double, if it does better */
-            if (e > rel * fabs(s)) {
-                double sx, ex;
-                sx = rad_ff_contour(ea, mea, eb, meb, scale2, rel * fabs(s), 1, a->centroid, &ex);
-                if (ex < e) {
-                    s = sx;
-                    e = ex;
-                }
-            }
-            /* and failing that, the area form, if it does better: in one
-             * piece, then cut into parts small against their distance */
-            double sa, ea_;
-            if (e > rel * fabs(s) && area == 1 &&
-                rad_ff_area(pa, na, a->normal, pb, nb, b->normal, a->centroid, rel, &sa,
-                            &ea_) == 0 &&
-                ea_ < e) {
-                s = sa;
-                e = ea_;
-            }
-            if (e > rel * fabs(s)) {
-                const int ad = rad_ff_area_adaptive(pa, na, a->normal, pb, nb, b->normal,
-                                                    a->centroid, rel, &sa, &ea_);
-                if (ad < 0)
-                    return NAN;
-                if (ad == 0 && ea_ < e) {
-                    s = sa;
-                    e = ea_;
-                }
-            }
-        }
-        if (s < 0) { /* a form factor is never negative: clamp within its error */
-            e = fmax(e, -s);
-            s = 0;
-        }
-        return pair_done(a, b, w, s, e, contour, errest);
-    }
-    *contour = s;
-    /* With both contours counter-clockwise about their own fronts, facing
-     * polygons give S > 0 (checked on two facing unit squares). */
-    return s / (2 * RAD_PI * a->area);
 }

@@ -8,7 +8,8 @@
  * between the two elements, 0 when they are fully hidden from each other,
  * and S minus 2 pi times the hidden part otherwise.  The value stays one
  * symmetric number per pair, so reciprocity A_i F_ij = A_j F_ji survives
- * occlusion exactly.  The method is described in occlusion.c.
+ * occlusion exactly.  occlusion.c lists the files that do the work and
+ * what each does.
  */
 #ifndef RAD_OCCLUSION_H
 #define RAD_OCCLUSION_H
@@ -56,7 +57,7 @@ void rad_occ_free(rad_occ *occ);
 typedef struct rad_occ_work {
     const rad_occ *occ;
     rad_occ_stats stats;        /* this thread's counts */
-    void *space;                /* growable buffers (occlusion.c) */
+    void *space;                /* growable buffers (occspace.h) */
 } rad_occ_work;
 
 void rad_occ_work_init(rad_occ_work *w, const rad_occ *occ);

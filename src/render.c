@@ -57,6 +57,7 @@
 #include <cairo.h>
 
 #include "plot.h"
+#include "polygon.h"
 #include "radiosity.h"
 #include "radiosity/render.h"
 #include "status.h"
@@ -252,6 +253,7 @@ typedef struct face_work {
     rad_vec3 *cam;              /* n vertices in camera space */
     rad_vec3 *clip;             /* after near clipping: n + 1 for a convex
                                    polygon, never more than 2 n */
+    double *dz;                 /* n: distances from the near plane */
     double *sx, *sy;            /* the clipped polygon on the screen */
     double *q;                  /* 2 n: vertices in the face's plane frame */
     double *val;                /* 3 n: vertex radiosity, vertex-major */
@@ -275,6 +277,7 @@ static void face_work_free(face_work *w)
     free(w->rel);
     free(w->cam);
     free(w->clip);
+    free(w->dz);
     free(w->sx);
     free(w->sy);
     free(w->q);
@@ -289,12 +292,13 @@ static int face_work_alloc(face_work *w, int maxn)
     w->rel = malloc(sizeof *w->rel * n);
     w->cam = malloc(sizeof *w->cam * n);
     w->clip = malloc(sizeof *w->clip * 2 * n);
+    w->dz = malloc(sizeof *w->dz * n);
     w->sx = malloc(sizeof *w->sx * 2 * n);
     w->sy = malloc(sizeof *w->sy * 2 * n);
     w->q = malloc(sizeof *w->q * 2 * n);
     w->val = malloc(sizeof *w->val * RAD_BANDS * n);
     w->lines = malloc(sizeof *w->lines * 3 * n);
-    if (!w->rel || !w->cam || !w->clip || !w->sx || !w->sy || !w->q || !w->val || !w->lines) {
+    if (!w->rel || !w->cam || !w->clip || !w->dz || !w->sx || !w->sy || !w->q || !w->val || !w->lines) {
         face_work_free(w);
         return -1;
     }
@@ -311,9 +315,14 @@ static int v3_before(rad_vec3 a, rad_vec3 b)
     return a.z < b.z;
 }
 
-/* Where segment ab crosses z = zn, from the endpoints in canonical order. */
-static rad_vec3 near_crossing(rad_vec3 a, rad_vec3 b, double zn)
+/* Where segment ab crosses z = zn (a poly_crossing, ctx -> zn), from the
+ * endpoints in canonical order, so that an edge two faces share is cut
+ * at one point; the distances are not needed. */
+static rad_vec3 near_crossing(rad_vec3 a, rad_vec3 b, double da, double db, const void *ctx)
 {
+    const double zn = *(const double *)ctx;
+    (void)da;
+    (void)db;
     if (v3_before(b, a)) {
         rad_vec3 t = a;
         a = b;
@@ -324,19 +333,17 @@ static rad_vec3 near_crossing(rad_vec3 a, rad_vec3 b, double zn)
     return p;
 }
 
-/* Sutherland-Hodgman against the half-space z >= zn; returns the count. */
-static int clip_near(const rad_vec3 *in, int n, double zn, rad_vec3 *out)
+/* Sutherland-Hodgman against the half-space z >= zn (polygon.h); d has
+ * room for n distances, out for 2 n vertices.  Nothing is snapped: a
+ * vertex exactly on the plane is kept and an edge from it to the far
+ * side cut there too (POLY_TOUCH_CUTS), as this clipper always did.
+ * Returns the count. */
+static int clip_near(const rad_vec3 *in, int n, double zn, double *d, rad_vec3 *out)
 {
-    int m = 0;
-    for (int k = 0; k < n; k++) {
-        rad_vec3 a = in[k], b = in[(k + 1) % n];
-        int ain = a.z >= zn, bin = b.z >= zn;
-        if (ain)
-            out[m++] = a;
-        if (ain != bin)
-            out[m++] = near_crossing(a, b, zn);
-    }
-    return m;
+    const poly_cut cut = {1.0, POLY_TOUCH_CUTS, near_crossing, &zn};
+    for (int k = 0; k < n; k++)
+        d[k] = in[k].z - zn; /* >= 0 exactly when z >= zn (finite values) */
+    return poly_clip(in, d, n, &cut, out, 2 * n);
 }
 
 /* Camera-space vertices, culling and clipping.  0: draw, 1: skip. */
@@ -363,7 +370,7 @@ static int face_setup(const rad_render_model *m, int f, const view *v, int shadi
     /* front faces have the eye (the origin) on their normal's side */
     if (!(nn > 0) || !(g->plane < -1e-13 * nn * v3_norm(mean)))
         return 1;
-    g->nclip = clip_near(w->cam, n, v->znear, w->clip);
+    g->nclip = clip_near(w->cam, n, v->znear, w->dz, w->clip);
     if (g->nclip < 3)
         return 1;
     for (int k = 0; k < g->nclip; k++) {

@@ -18,13 +18,14 @@
  * segment, touching included (triangles and segments are closed sets).
  * The coordinates themselves are rounded doubles computed by the caller.
  *
- * What is not: the hidden surfaces of the form factors.  occlusion.c uses
+ * What is not: the hidden surfaces of the form factors.  occshaft.c uses
  * only rad_vis_box_polygons, once per pair of surfaces at setup, as a
  * conservative pre-filter: the box is the bounding box of the two surfaces
  * clipped to the front of each other's plane (in floating point), padded
  * by 1e-9 of the scene's size, so it holds the pair's shaft, and a surface
  * it does not list cannot block the pair; one it lists may not block it.
- * Whether and how much a listed surface hides is decided in occlusion.c in
+ * Whether and how much a listed surface hides is decided in occshaft.c and
+ * occhidden.c in
  * floating-point arithmetic with stated tolerances (separating planes of
  * the shaft, the fully-hidden test, the integration of the hidden part),
  * not by exact predicates.  The segment queries serve the tests

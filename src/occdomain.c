@@ -1,0 +1,355 @@
+/* occdomain.c -- where on the outer element anything can be hidden: the
+ * domain of occhidden.c's integral, as disjoint convex pieces.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * hidden(x) vanishes outside each blocker's penumbra region and equals
+ * the unoccluded integrand inside its umbra; both regions are convex and
+ * bounded by planes through an edge of the blocker and a vertex of the
+ * inner element or the other way round (see below).  The outer element is
+ * cut along those planes into convex pieces, and only the pieces inside
+ * some penumbra are integrated: a thin penumbra, or a thin strip that
+ * still sees past a silhouette, becomes a piece of its own instead of
+ * falling between evaluation points.  Pieces inside an umbra are kept
+ * apart (known to be fully hidden there).  In reference mode the pieces
+ * are also cut along every event plane (split_events).
+ */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "formfactor.h"
+#include "occlusion.h"
+#include "occspace.h"
+#include "polygon.h"
+#include "radiosity.h"
+#include "vec.h"
+
+
+/* The penumbra region of a convex blocker P lit by a convex polygon T, the
+ * points z with a segment from z to T through P, is
+ *     W = union over s >= 1 of (s P - (s - 1) T),
+ * a union of Minkowski sums that is convex (the midpoint of points of
+ * W(s1) and W(s2) lies in W((s1 + s2)/2)).  Its support function gives
+ * its faces: the planes that touch P and separate it from T (through an
+ * edge of one and a vertex of the other, or P's own plane), with W on P's
+ * side.  hidden(x) vanishes outside the union of the blockers' W, so the
+ * integral runs over the outer element's part of that union only: no
+ * evaluation point is wasted where nothing is hidden, and a thin penumbra
+ * is never missed between points. */
+
+/* The umbra of P lit by T, the points z from which every segment to T
+ * passes through P, is the intersection over y in T of the shadow C(y) of
+ * P from y.  The set of y whose shadow holds z is itself convex (the cone
+ * from z through P, beyond P), so the intersection over T is that over
+ * T's vertices y_k: each C(y_k) is bounded by the planes through y_k and
+ * an edge of P (the region on P's side) and by P's plane (the region away
+ * from y_k).  When T reaches P's plane the umbra has no interior.  The
+ * pieces of the domain are cut along the umbras too: hidden(x) then has
+ * no kink across a piece there, a thin strip that still sees past a
+ * blocker's silhouette becomes a piece of its own with its own evaluation
+ * points, and a piece inside an umbra is known to be fully hidden. */
+
+/* Append plane (nrm, a) with the region on the side where nrm . (q - a)
+ * >= 0 if it separates p (that side) from t (the other side). */
+static int add_if_separating(occ_space *sp, rad_vec3 nrm, rad_vec3 a, const rad_vec3 *p, int np,
+                             const rad_vec3 *t, int nt, double tol, int *ns)
+{
+    double plo, phi, tlo, thi;
+    if (occ_grow_d(&sp->d, &sp->capd, np > nt ? np : nt))
+        return -1;
+    poly_distances(p, np, nrm, a, tol, sp->d, &plo, &phi);
+    poly_distances(t, nt, nrm, a, tol, sp->d, &tlo, &thi);
+    int up = plo >= 0 && thi <= 0, down = phi <= 0 && tlo >= 0;
+    if (!(up || down) || (plo == 0 && phi == 0 && tlo == 0 && thi == 0))
+        return 0;
+    if (occ_grow_v3(&sp->sn, &sp->capsn, *ns + 1) || occ_grow_v3(&sp->sa, &sp->capsa, *ns + 1))
+        return -1;
+    sp->sn[*ns] = up ? nrm : v3_scale(nrm, -1.0);
+    sp->sa[*ns] = a;
+    ++*ns;
+    return 0;
+}
+
+/* Planes through an edge of e and a vertex of f that separate p from t. */
+static int edge_vertex_planes(occ_space *sp, const rad_vec3 *e, int ne, const rad_vec3 *f, int nf,
+                              const rad_vec3 *p, int np, const rad_vec3 *t, int nt, double tol,
+                              int *ns)
+{
+    for (int k = 0; k < ne; k++)
+        for (int l = 0; l < nf; l++) {
+            rad_vec3 nrm;
+            if (poly_edge_plane(e, ne, k, f[l], &nrm) &&
+                add_if_separating(sp, nrm, e[k], p, np, t, nt, tol, ns))
+                return -1;
+        }
+    return 0;
+}
+
+/* The faces of blocker b's penumbra, appended to sp->sn / sp->sa. */
+static int penumbra_planes(occ_space *sp, const pair_ctx *c, int b, int *ns)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    if (add_if_separating(sp, sp->bn[b], p[0], p, np, c->t, c->nt, c->snap, ns) ||
+        add_if_separating(sp, v3_scale(sp->bn[b], -1.0), p[0], p, np, c->t, c->nt, c->snap,
+                          ns) ||
+        edge_vertex_planes(sp, p, np, c->t, c->nt, p, np, c->t, c->nt, c->snap, ns) ||
+        edge_vertex_planes(sp, c->t, c->nt, p, np, p, np, c->t, c->nt, c->snap, ns))
+        return -1;
+    return 0;
+}
+
+static int push_plane(occ_space *sp, rad_vec3 nrm, rad_vec3 a, int *ns)
+{
+    if (occ_grow_v3(&sp->sn, &sp->capsn, *ns + 1) || occ_grow_v3(&sp->sa, &sp->capsa, *ns + 1))
+        return -1;
+    sp->sn[*ns] = nrm;
+    sp->sa[*ns] = a;
+    ++*ns;
+    return 0;
+}
+
+/* The faces of blocker b's umbra (the shadow cones from the inner
+ * element's vertices), appended to sp->sn / sp->sa; returns 1 when the
+ * umbra has no interior (no planes appended), 0, or -1. */
+static int umbra_planes(occ_space *sp, const pair_ctx *c, int b, int *ns)
+{
+    const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+    int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    rad_vec3 n = sp->bn[b], cen = sp->bc[b];
+    double side = 0;
+    for (int k = 0; k < c->nt; k++) {
+        double h = v3_dot(n, v3_sub(c->t[k], cen));
+        if (fabs(h) <= c->snap || h * side < 0)
+            return 1; /* T touches or straddles P's plane */
+        side = h;
+    }
+    if (push_plane(sp, side > 0 ? v3_scale(n, -1.0) : n, cen, ns))
+        return -1;
+    for (int k = 0; k < c->nt; k++)
+        for (int e = 0; e < np; e++) {
+            rad_vec3 y = c->t[k];
+            rad_vec3 nrm = v3_cross(v3_sub(p[e], y), v3_sub(p[(e + 1) % np], y));
+            double len = v3_norm(nrm);
+            if (!(len > 0))
+                continue;
+            nrm = v3_scale(nrm, 1.0 / len);
+            if (push_plane(sp, v3_dot(nrm, v3_sub(cen, y)) < 0 ? v3_scale(nrm, -1.0) : nrm, y,
+                           ns))
+                return -1;
+        }
+    return 0;
+}
+
+enum { PENUMBRA, UMBRA };
+
+/* Every blocker's penumbra or umbra planes: blocker b's are
+ * [sp->sfirst[b], sp->sfirst[b+1]); an umbra without interior has none
+ * and sp->empty[b] set. */
+static int all_region_planes(occ_space *sp, const pair_ctx *c, int kind)
+{
+    int ns = 0;
+    if (occ_grow_i(&sp->sfirst, &sp->capsf, c->nb + 1) || occ_grow_i(&sp->empty, &sp->capem, c->nb))
+        return -1;
+    for (int b = 0; b < c->nb; b++) {
+        sp->sfirst[b] = ns;
+        int r = kind == PENUMBRA ? penumbra_planes(sp, c, b, &ns) : umbra_planes(sp, c, b, &ns);
+        if (r < 0)
+            return -1;
+        sp->empty[b] = r;
+    }
+    sp->sfirst[c->nb] = ns;
+    return 0;
+}
+
+/* Cut every piece of sp->da by blocker e's planes: outside parts to
+ * sp->db, inside parts to `inside` (or dropped when NULL); then swap. */
+static int cut_set(occ_space *sp, const pair_ctx *c, int e, polyset *inside)
+{
+    int g = sp->sfirst[e], ng = sp->sfirst[e + 1] - g;
+    occ_ps_clear(&sp->db);
+    for (int k = 0; k < sp->da.np; k++) {
+        int n = occ_load_rem(sp, &sp->da, k);
+        int r = n < 0 ? -1
+                      : occ_cut_piece(sp, sp->sn + g, sp->sa + g, ng, c->snap, c->sliver, &sp->db, &n);
+        if (r < 0 || (r > 0 && inside && occ_ps_push(inside, sp->rem, n)))
+            return -1;
+    }
+    polyset t = sp->da;
+    sp->da = sp->db;
+    sp->db = t;
+    return 0;
+}
+
+/* Append polygon p (n vertices) to sp->db with its bounding sphere
+ * (centre cen, radius rad); 0 or -1. */
+static int push_db(occ_space *sp, const rad_vec3 *p, int n, rad_vec3 cen, double rad)
+{
+    int k = sp->db.np;
+    if (occ_grow_v3(&sp->qcen, &sp->capqc, k + 1) || occ_grow_d(&sp->qrad, &sp->capqr, k + 1) ||
+        occ_ps_push(&sp->db, p, n))
+        return -1;
+    sp->qcen[k] = cen;
+    sp->qrad[k] = rad;
+    return 0;
+}
+
+/* The bounding sphere of p about its vertex mean. */
+static void sphere(const rad_vec3 *p, int n, rad_vec3 *cen, double *rad)
+{
+    rad_vec3 c = poly_mean(p, n);
+    double r2 = 0;
+    for (int k = 0; k < n; k++) {
+        rad_vec3 e = v3_sub(p[k], c);
+        double x = v3_dot(e, e);
+        r2 = x > r2 ? x : r2;
+    }
+    *cen = c;
+    *rad = sqrt(r2);
+}
+
+/* The bounding spheres of sp->dom's pieces, for split_dom. */
+static int dom_spheres(occ_space *sp)
+{
+    int np = sp->dom.np;
+    if (occ_grow_v3(&sp->pcen, &sp->cappc, np) || occ_grow_d(&sp->prad, &sp->cappr, np))
+        return -1;
+    for (int k = 0; k < np; k++)
+        sphere(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k],
+               &sp->pcen[k], &sp->prad[k]);
+    return 0;
+}
+
+/* Split every piece of sp->dom that the plane through a with unit normal
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date).  A
+ * piece whose bounding sphere the plane misses is copied without looking
+ * at its vertices: with a K-gon blocker there are O(K) planes and O(K^2)
+ * pieces, most of them far from any one plane (issue 20: reference mode
+ * slowed as K^4).  Returns 0 or -1. */
+static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
+{
+    occ_ps_clear(&sp->db);
+    for (int k = 0; k < sp->dom.np; k++) {
+        const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
+        int n = sp->dom.first[k + 1] - sp->dom.first[k];
+        double lo, hi;
+        if (fabs(v3_dot(nrm, v3_sub(sp->pcen[k], a))) > sp->prad[k] + c->snap) {
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
+                return -1;
+            continue;
+        }
+        if (occ_grow_d(&sp->d, &sp->capd, n) || occ_grow_v3(&sp->tmp, &sp->captmp, n + 1))
+            return -1;
+        poly_distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
+        poly_settle_signs(sp->d, n, &lo, &hi);
+        if (lo >= 0 || hi <= 0) {
+            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
+                return -1;
+            continue;
+        }
+        for (int side = -1; side <= 1; side += 2) {
+            int m = poly_clip_side(p, sp->d, n, side, sp->tmp, n + 1);
+            rad_vec3 cen;
+            double rad;
+            if (m < 3 || !(poly_area(sp->tmp, m) > c->sliver))
+                continue;
+            sphere(sp->tmp, m, &cen, &rad);
+            if (push_db(sp, sp->tmp, m, cen, rad))
+                return -1;
+        }
+    }
+    polyset t = sp->dom;
+    sp->dom = sp->db;
+    sp->db = t;
+    occ_swap_v3(&sp->pcen, &sp->cappc, &sp->qcen, &sp->capqc);
+    double *tr = sp->prad;
+    sp->prad = sp->qrad;
+    sp->qrad = tr;
+    int ti = sp->cappr;
+    sp->cappr = sp->capqr;
+    sp->capqr = ti;
+    return 0;
+}
+
+/* Split sp->dom along the planes through an edge of e and a vertex of f. */
+static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e, int ne,
+                             const rad_vec3 *f, int nf)
+{
+    for (int k = 0; k < ne; k++)
+        for (int l = 0; l < nf && sp->dom.np > 0; l++) {
+            rad_vec3 nrm;
+            if (poly_edge_plane(e, ne, k, f[l], &nrm) && split_dom(sp, c, nrm, e[k]))
+                return -1;
+        }
+    return 0;
+}
+
+/* Reference mode: split the pieces not known to be hidden along every
+ * plane where a blocker's edge passes a vertex of the inner element, or a
+ * blocker's vertex one of its edges (the first-derivative discontinuities
+ * of hidden(x) that one blocker causes; Heckbert, "Discontinuity meshing
+ * for radiosity", Eurographics Workshop on Rendering 1992).  Inside the
+ * pieces hidden(x) is then smooth but for events that involve two
+ * blockers, and the adaptive rule's error estimate can be trusted; a
+ * penumbra narrower than the spacing of the points no longer hides
+ * between them. */
+static int split_events(occ_space *sp, const pair_ctx *c)
+{
+    if (dom_spheres(sp))
+        return -1;
+    for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
+        const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
+        int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
+        if (split_edge_vertex(sp, c, p, np, c->t, c->nt) ||
+            split_edge_vertex(sp, c, c->t, c->nt, p, np))
+            return -1;
+    }
+    return 0;
+}
+
+/* The domain of integration: the outer polygon o cut to the union of the
+ * blockers' penumbras, as disjoint convex pieces (W_b minus the earlier
+ * W's), then cut along every umbra, the pieces inside one going to
+ * sp->umb.  Pieces not known to be hidden end in sp->dom. */
+int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
+{
+    occ_ps_clear(&sp->dom);
+    occ_ps_clear(&sp->umb);
+    if (all_region_planes(sp, c, PENUMBRA))
+        return -1;
+    for (int b = 0; b < c->nb; b++) {
+        occ_ps_clear(&sp->da);
+        occ_ps_clear(&sp->db);
+        if (occ_grow_v3(&sp->rem, &sp->caprem, no))
+            return -1;
+        memcpy(sp->rem, o, sizeof *o * (size_t)no);
+        int n = no, f = sp->sfirst[b], nf = sp->sfirst[b + 1] - f;
+        int r = occ_cut_piece(sp, sp->sn + f, sp->sa + f, nf, c->snap, c->sliver, &sp->db, &n);
+        if (r < 0 || (r > 0 && occ_ps_push(&sp->da, sp->rem, n)))
+            return -1;
+        for (int e = 0; e < b && sp->da.np > 0; e++)
+            if (cut_set(sp, c, e, NULL))
+                return -1;
+        for (int k = 0; k < sp->da.np; k++)
+            if (occ_ps_push(&sp->dom, sp->da.v + sp->da.first[k], sp->da.first[k + 1] - sp->da.first[k]))
+                return -1;
+    }
+    if (sp->dom.np == 0)
+        return 0;
+    if (all_region_planes(sp, c, UMBRA))
+        return -1;
+    polyset t = sp->da;
+    sp->da = sp->dom;
+    sp->dom = t;
+    for (int b = 0; b < c->nb && sp->da.np > 0; b++)
+        if (!sp->empty[b] && cut_set(sp, c, b, &sp->umb))
+            return -1;
+    t = sp->dom;
+    sp->dom = sp->da;
+    sp->da = t;
+    return c->events ? split_events(sp, c) : 0;
+}

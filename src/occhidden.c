@@ -1,0 +1,342 @@
+/* occhidden.c -- how much of an element pair the blockers hide: all of
+ * it (one blocker between the two), or the integral of the hidden part
+ * over the outer element by an adaptive rule.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Fully hidden by one blocker (hides_all): if P's plane strictly
+ * separates the two elements and the 16 (or so) segments between their
+ * vertices all pass through P's interior, every segment does (the
+ * crossing points of the segments from A to B form the convex hull of
+ * those of the vertex pairs), and F = 0.
+ *
+ * The hidden part.  With A_o the outer and A_t the inner element,
+ *     A_o F_ot = A_t F_to = integral over x in A_o of F(x -> visible part of A_t),
+ * and the integrand is computed exactly (occpoint.c: hidden(x), the form
+ * factor from x to the part of A_t the blockers hide).  So
+ *     S_occluded = S - 2 pi * integral over A_o of hidden(x) dx,
+ * where S is the unoccluded contour sum of the kernel: the quadrature
+ * error only touches the hidden part, never the (possibly singular)
+ * unoccluded one.
+ *
+ * The integral runs over the domain of occdomain.c (the outer element's
+ * part of the blockers' penumbras, cut along their umbras): on each
+ * piece's fan of triangles hidden(x) is integrated by the 3-point degree-2
+ * rule (Strang & Fix 1973) on each triangle and on its four midpoint
+ * children; |parent - children| estimates the error, and the triangle
+ * with the largest estimate is split until the sum of estimates is below
+ * the pair's tolerance (global adaptive subdivision as in QUADPACK's QAG,
+ * Piessens et al. 1983).  The outer element is the one that looks
+ * smaller from the nearest blocker (size / distance): from there the
+ * blocker's shadow moves least over the inner element, so hidden(x) is
+ * smoothest.  If no piece is left, S is kept as it is (bit for bit); if
+ * every piece is inside an umbra, or no evaluation point sees anything of
+ * the inner element from either side, F = 0.  The accuracy modes'
+ * targets are in occlusion.c's header.
+ */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "formfactor.h"
+#include "occlusion.h"
+#include "occspace.h"
+#include "polygon.h"
+#include "radiosity.h"
+#include "vec.h"
+
+
+/* The 3-point degree-2 rule on triangle p (Strang & Fix 1973): points at
+ * barycentric (2/3, 1/6, 1/6) and its permutations, weights area / 3. */
+static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)
+{
+    double sum = 0;
+    for (int k = 0; k < 3; k++) {
+        rad_vec3 x = v3_add(v3_scale(p[k], 2.0 / 3.0),
+                            v3_scale(v3_add(p[(k + 1) % 3], p[(k + 2) % 3]), 1.0 / 6.0));
+        double h;
+        if (occ_hidden_at(sp, c, x, &h))
+            return -1;
+        sum += h;
+    }
+    *q = area / 3.0 * sum;
+    return 0;
+}
+
+/* The four midpoint children of triangle p. */
+static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
+{
+    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
+             m20 = v3_lerp(p[2], p[0], 0.5);
+    rad_vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m12, m20, m01}};
+    memcpy(ch, t, sizeof t);
+}
+
+/* Fill in a node's children values and error; its q must be set. */
+static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
+{
+    rad_vec3 ch[4][3];
+    children(t->p, ch);
+    double sum = 0;
+    for (int k = 0; k < 4; k++) {
+        if (rule3(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
+            return -1;
+        sum += t->qc[k];
+    }
+    t->err = fabs(t->q - sum);
+    return 0;
+}
+
+/* Replace leaf k by its four children (appended at the end). */
+static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
+{
+    if (occ_grow_node(&sp->node, &sp->capnode, *nleaf + 3))
+        return -1;
+    tri_node parent = sp->node[k];
+    rad_vec3 ch[4][3];
+    children(parent.p, ch);
+    for (int l = 0; l < 4; l++) {
+        tri_node *t = l == 0 ? &sp->node[k] : &sp->node[(*nleaf)++];
+        memcpy(t->p, ch[l], sizeof t->p);
+        t->area = 0.25 * parent.area;
+        t->q = parent.qc[l];
+        if (node_eval(sp, c, t))
+            return -1;
+    }
+    return 0;
+}
+
+static double leaf_value(const tri_node *t)
+{
+    return t->qc[0] + t->qc[1] + t->qc[2] + t->qc[3];
+}
+
+/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value and its
+ * estimated error *error; refined while the error exceeds tau (when
+ * `adaptive`) and fewer than max_leaves triangles are in use. */
+static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau, int max_leaves,
+                     double *value, double *error)
+{
+    int nleaf = 0;
+    const polyset *sets[2] = {&sp->dom, &sp->umb};
+    if (occ_grow_node(&sp->node, &sp->capnode, sp->dom.nv + sp->umb.nv))
+        return -1;
+    for (int set = 0; set < 2; set++)
+        for (int k = 0; k < sets[set]->np; k++) {
+            const rad_vec3 *o = sets[set]->v + sets[set]->first[k];
+            int no = sets[set]->first[k + 1] - sets[set]->first[k];
+            for (int l = 1; l + 1 < no; l++) {
+                tri_node *t = &sp->node[nleaf];
+                t->p[0] = o[0];
+                t->p[1] = o[l];
+                t->p[2] = o[l + 1];
+                t->area = 0.5 * v3_norm(v3_cross(v3_sub(o[l], o[0]), v3_sub(o[l + 1], o[0])));
+                if (!(t->area > 0))
+                    continue;
+                if (rule3(sp, c, t->p, t->area, &t->q) || node_eval(sp, c, t))
+                    return -1;
+                nleaf++;
+            }
+        }
+    double err = 0;
+    for (int k = 0; k < nleaf; k++)
+        err += sp->node[k].err;
+    while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
+           nleaf + 3 <= max_leaves) {
+        int worst = 0;
+        for (int k = 1; k < nleaf; k++)
+            if (sp->node[k].err > sp->node[worst].err)
+                worst = k;
+        if (node_split(sp, c, worst, &nleaf))
+            return -1;
+        err = 0;
+        for (int k = 0; k < nleaf; k++)
+            err += sp->node[k].err;
+    }
+    double v = 0;
+    for (int k = 0; k < nleaf; k++)
+        v += leaf_value(&sp->node[k]);
+    *value = v;
+    *error = err;
+    return 0;
+}
+
+/* Does blocker b alone hide all of p from all of q?  (Fully hidden, at
+ * the top of the file.) */
+static int hides_all(const rad_vec3 *p, int np, const rad_vec3 *q, int nq, const rad_vec3 *b,
+                     int nb, rad_vec3 bn, double tol)
+{
+    double plo = HUGE_VAL, phi = -HUGE_VAL, qlo = HUGE_VAL, qhi = -HUGE_VAL;
+    for (int k = 0; k < np; k++) {
+        double s = v3_dot(bn, v3_sub(p[k], b[0]));
+        plo = fmin(plo, s);
+        phi = fmax(phi, s);
+    }
+    for (int k = 0; k < nq; k++) {
+        double s = v3_dot(bn, v3_sub(q[k], b[0]));
+        qlo = fmin(qlo, s);
+        qhi = fmax(qhi, s);
+    }
+    if (!((plo > tol && qhi < -tol) || (phi < -tol && qlo > tol)))
+        return 0;
+    for (int k = 0; k < np; k++)
+        for (int l = 0; l < nq; l++) {
+            double dp = v3_dot(bn, v3_sub(p[k], b[0])), dq = v3_dot(bn, v3_sub(q[l], b[0]));
+            rad_vec3 z = v3_lerp(p[k], q[l], dp / (dp - dq));
+            for (int e = 0; e < nb; e++) {
+                rad_vec3 a = b[e], ed = v3_sub(b[(e + 1) % nb], a);
+                if (v3_dot(v3_cross(ed, v3_sub(z, a)), bn) < tol * v3_norm(ed))
+                    return 0;
+            }
+        }
+    return 1;
+}
+
+/* Clip the pair's blockers to the front of the inner plane (normal tn
+ * through tp), dropping those with nothing in front; fill normals and
+ * centroids.  Returns the number kept, or -1. */
+static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp)
+{
+    if (occ_grow_v3(&sp->bn, &sp->capbn, nb) || occ_grow_v3(&sp->bc, &sp->capbc, nb))
+        return -1;
+    occ_ps_clear(&sp->blkc);
+    int kept = 0;
+    for (int b = 0; b < nb; b++) {
+        int n = sp->blk.first[b + 1] - sp->blk.first[b];
+        int m = occ_clip_into(sp, &sp->blkc, sp->blk.v + sp->blk.first[b], n, tn, tp, sp->snap);
+        if (m < 0)
+            return -1;
+        if (m == 0)
+            continue;
+        sp->bn[kept] = o->snormal[sp->bid[b]];
+        sp->bc[kept] = poly_mean(sp->blkc.v + sp->blkc.first[kept], m);
+        kept++;
+    }
+    return kept;
+}
+
+/* size / distance to the nearest blocker, for the choice of outer element. */
+static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const rad_ff_poly *e)
+{
+    double d = HUGE_VAL;
+    for (int b = 0; b < nb; b++)
+        d = fmin(d, poly_point_distance(e->centroid, sp->blk.v + sp->blk.first[b],
+                                           sp->blk.first[b + 1] - sp->blk.first[b],
+                                           o->snormal[sp->bid[b]]));
+    return e->size / fmax(d, 1e-300);
+}
+
+/* What integrating in one orientation found. */
+typedef struct orient_result {
+    double value, error;        /* integral of hidden(x) over the outer element */
+    int hidden, visible;        /* some point saw something hidden / visible */
+} orient_result;
+
+/* The integral of the hidden part with element i (outer_i) or j as the
+ * outer element. */
+static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
+                           const rad_ff_poly *pj, int outer_i, double s, double rel,
+                           orient_result *res)
+{
+    const rad_vec3 *ci = sp->elem.v, *cj = sp->elem.v + sp->elem.first[1];
+    int ni = sp->elem.first[1], nj = sp->elem.nv - ni;
+    const rad_ff_poly *po = outer_i ? pi : pj, *pt = outer_i ? pj : pi;
+    const rad_vec3 *co = outer_i ? ci : cj, *ct = outer_i ? cj : ci;
+    int no = outer_i ? ni : nj, nt = outer_i ? nj : ni;
+    memset(res, 0, sizeof *res);
+    int kept = clip_blockers(o, sp, nb, pt->normal, ct[0]);
+    if (kept < 0)
+        return -1;
+    pair_ctx c;
+    c.nx = po->normal;
+    c.tn = pt->normal;
+    c.t = ct;
+    c.nt = nt;
+    c.nb = kept;
+    c.snap = sp->snap;
+    c.sliver = OCC_SLIVER * poly_area(ct, nt);
+    c.events = o->accuracy == RAD_ACCURACY_REFERENCE;
+    sp->any_hidden = sp->any_visible = 0;
+    if (occ_support_domain(sp, &c, co, no))
+        return -1;
+    if (sp->dom.np == 0 && sp->umb.np == 0)
+        return 0; /* no point of the outer element sees anything hidden */
+    double dom_area = 0;
+    for (int k = 0; k < sp->dom.np; k++)
+        dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
+    for (int k = 0; k < sp->umb.np; k++)
+        dom_area += poly_area(sp->umb.v + sp->umb.first[k], sp->umb.first[k + 1] - sp->umb.first[k]);
+    if (dom_area < (1 - 1e-9) * poly_area(co, no))
+        sp->any_visible = 1; /* points outside the domain see all of the inner one */
+    else if (sp->dom.np == 0) {
+        res->hidden = 1; /* every point is in some blocker's umbra */
+        res->value = s / (2 * RAD_PI);
+        return 0;
+    }
+    const int adaptive = o->accuracy != RAD_ACCURACY_CLASSIC;
+    const int leaves =
+        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE : OCC_LEAVES_DEFAULT;
+    if (integrate(sp, &c, adaptive, rel * s / (2 * RAD_PI), leaves, &res->value, &res->error))
+        return -1;
+    res->hidden = sp->any_hidden;
+    res->visible = sp->any_visible;
+    if (res->hidden && !res->visible)
+        res->value = s / (2 * RAD_PI);
+    return 0;
+}
+
+/* The new S of a pair with nb blockers in sp->blk: 0 when one blocker
+ * hides all, else S less 2 pi times the integral of the hidden part. */
+int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
+                     const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
+                     double *errest)
+{
+    const rad_vec3 *ci = sp->elem.v, *cj = sp->elem.v + sp->elem.first[1];
+    int ni = sp->elem.first[1], nj = sp->elem.nv - ni;
+    *snew = s;
+    for (int b = 0; b < nb; b++) {
+        const rad_vec3 *v = sp->blk.v + sp->blk.first[b];
+        int n = sp->blk.first[b + 1] - sp->blk.first[b];
+        if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], sp->snap)) {
+            st->pairs_blocked++;
+            *snew = 0;
+            return 0;
+        }
+    }
+    /* outer: the element that looks smaller from the nearest blocker */
+    int outer_i = apparent_size(o, sp, nb, pi) <= apparent_size(o, sp, nb, pj);
+    const double rel =
+        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_TOL_REFERENCE : OCC_TOL_DEFAULT;
+    orient_result r;
+    sp->evals = 0;
+    if (orient_integral(o, sp, nb, pi, pj, outer_i, s, rel, &r))
+        return -1;
+    if (r.hidden && !r.visible) {
+        /* Everything looked hidden from the outer element's points: a
+         * visible part may hide in a thin strip between them.  Look from
+         * the other element; keep its answer if it sees something. */
+        orient_result r2;
+        if (orient_integral(o, sp, nb, pi, pj, !outer_i, s, rel, &r2))
+            return -1;
+        if (r2.visible)
+            r = r2;
+    }
+    st->evaluations += sp->evals;
+    if (!r.hidden)
+        return 0; /* nothing hidden anywhere: the kernel's value, bit for bit */
+    if (!r.visible) {
+        st->pairs_blocked++;
+        *snew = 0;
+        return 0;
+    }
+    st->pairs_partial++;
+    double v = s - 2 * RAD_PI * r.value;
+    *snew = v < 0 ? 0 : v > s ? s : v;
+    if (errest)
+        *errest += 2 * RAD_PI * r.error;
+    st->max_errest = fmax(st->max_errest, r.error / fmin(pi->area, pj->area));
+    return 0;
+}

@@ -1,0 +1,209 @@
+/* occspace.h -- what the occlusion files share (internal to them): the
+ * tolerances, the scene's culling data (struct rad_occ), the per-thread
+ * work space and the functions one file calls in another.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * occlusion.c lists the files and their jobs; each function is described
+ * where it is defined.
+ */
+#ifndef RAD_OCCSPACE_H
+#define RAD_OCCSPACE_H
+
+#include <stddef.h>
+#include <time.h>
+
+#include "formfactor.h"
+#include "occlusion.h"
+#include "radiosity.h"
+
+/* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
+ * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
+ * round-off of mesh vertices interpolated at the scene's coordinates
+ * (OCC_ROUND ulps of the largest), plus the surfaces' own departures from
+ * planarity (the scene accepts 1e-6 of a quad's size; scene.c): two
+ * faces of one twisted panel lie on one plane as far as the data can say.
+ * Nothing larger: a blocker 1e-9 of the scene's size from an element is
+ * in front of it, and hides what lies behind (issue 20: a tolerance of
+ * 1e-9 L let a floor's light through to an element 1e-9 above it). */
+#define OCC_SNAP 1e-11
+#define OCC_ROUND 16
+#define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
+                               are dropped (round-off slivers of the cuts) */
+/* Per-pair error targets (relative to the unoccluded A_i F_ij) and the
+ * largest number of triangles the adaptive rule may use. */
+#define OCC_TOL_DEFAULT 3e-4
+#define OCC_TOL_REFERENCE 1e-6
+#define OCC_LEAVES_DEFAULT 256
+#define OCC_LEAVES_REFERENCE 16384
+
+struct rad_occ {
+    rad_occ_mode mode;
+    rad_accuracy accuracy;
+    int nsurf;
+    rad_vec3 *sv;               /* surface polygons: sv[sfirst[s] .. sfirst[s+1]) */
+    int *sfirst;
+    rad_vec3 *snormal, *slo, *shi;
+    double *stwist;             /* each surface's largest vertex distance from
+                                   its plane through the vertex mean */
+    int *esurf;                 /* surface of each element */
+    size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
+    int *cand;
+    double snap;                /* absolute tolerance (see OCC_SNAP) */
+};
+
+/* Index of the unordered surface pair a < b among ns(ns-1)/2. */
+static inline size_t pair_index(int a, int b, int ns)
+{
+    return (size_t)a * (size_t)(2 * ns - a - 1) / 2 + (size_t)(b - a - 1);
+}
+
+/* One triangle of the adaptive rule: its own 3-point value and those of its
+ * four midpoint children. */
+typedef struct tri_node {
+    rad_vec3 p[3];
+    double area;
+    double q;                   /* the rule on the triangle */
+    double qc[4];               /* the rule on each child */
+    double err;                 /* |q - sum qc| */
+} tri_node;
+
+/* A list of polygons sharing one vertex array. */
+typedef struct polyset {
+    rad_vec3 *v;
+    int nv, capv;
+    int *first;                 /* np + 1 entries */
+    int np, capp;
+} polyset;
+
+/* Per-thread space. */
+typedef struct occ_space {
+    polyset loc;                /* the two elements in the pair's frame: 0 = i, 1 = j */
+    polyset elem;               /* the two clipped elements: 0 = i, 1 = j */
+    polyset blk;                /* the pair's blockers, whole */
+    polyset blkc;               /* the same, clipped to the front of the inner plane */
+    int *bid;                   /* surface of each blocker of the pair */
+    int capb;
+    rad_vec3 *bn, *bc;          /* clipped blockers: normal, centroid */
+    int capbn, capbc;
+    polyset cur, next;          /* visible pieces before / after a blocker */
+    rad_vec3 *rem, *tmp;        /* the piece being cut, and the cut's output */
+    int caprem, captmp;
+    double *d;                  /* signed distances */
+    int capd;
+    rad_vec3 *cone, *conep;     /* cone planes: inward normal, point */
+    int capcone, capconep;
+    rad_vec3 *sn, *sa;          /* penumbra or umbra planes of all blockers */
+    int capsn, capsa;
+    int *sfirst;                /* blocker b's planes: [sfirst[b], sfirst[b+1]) */
+    int capsf;
+    int *empty;                 /* blocker b's umbra has no interior */
+    int capem;
+    polyset da, db;             /* the support domain while it is built */
+    polyset dom;                /* the support domain: disjoint convex pieces */
+    rad_vec3 *pcen, *qcen;      /* bounding spheres of dom's (p) and db's (q)
+                                   pieces while split_events runs */
+    double *prad, *qrad;
+    int cappc, capqc, cappr, capqr;
+    polyset umb;                /* its pieces inside some blocker's umbra */
+    rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
+    int cappj0, cappj1;
+    rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
+    int caphn, capha;
+    tri_node *node;
+    int capnode;
+    double snap;                /* the pair's tolerance: o->snap plus the
+                                   twists of its surfaces and candidates */
+    int any_hidden, any_visible;/* over the pair's evaluations */
+    double evals;
+} occ_space;
+
+/* What an evaluation needs: the outer element's normal, the inner element
+ * (clipped) and the blockers (clipped to the front of the inner plane). */
+typedef struct pair_ctx {
+    rad_vec3 nx;                /* outer normal */
+    rad_vec3 tn;                /* inner normal */
+    const rad_vec3 *t;          /* inner element */
+    int nt;
+    int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
+    double snap, sliver;        /* distance and area tolerances */
+    int events;                 /* split the domain along every event plane */
+} pair_ctx;
+
+static inline double occ_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+
+/* ---- across the files (each described where it is defined) ------------ */
+
+/* occspace.c: growable arrays, polysets, the cuts */
+void *occ_realloc(void *p, int *cap, int need, size_t size);
+int occ_ps_push(polyset *s, const rad_vec3 *p, int n);
+int occ_ps_push_shifted(polyset *s, const rad_vec3 *p, int n, rad_vec3 origin);
+void occ_ps_pop(polyset *s);
+void occ_space_free(occ_space *sp);
+int occ_clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_vec3 nrm,
+                  rad_vec3 a, double tol);
+int occ_cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int np, double snap,
+                  double sliver, polyset *out, int *n);
+int occ_load_rem(occ_space *sp, const polyset *s, int k);
+
+/* occshaft.c: the pair's blockers */
+int occ_clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const rad_vec3 *q,
+                  int nq, rad_vec3 qn, double tol);
+double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand);
+int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                      const rad_ff_poly *pj, rad_vec3 origin);
+
+/* occdomain.c: the domain of integration */
+int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occpoint.c: hidden(x) */
+int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
+
+/* occhidden.c: how much of a pair is hidden */
+int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
+                     const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
+                     double *errest);
+
+/* Make room for `need` elements in *p (capacity *cap); 0, or -1 when
+ * memory ran out (then *p is untouched).  One per element type, so that
+ * no pointer is accessed through a pointer of another type; the check is
+ * inline (the cuts call it once per plane), the growth is occ_realloc. */
+#define OCC_GROW(name, T)                                                                   \
+    static inline int name(T **p, int *cap, int need)                                       \
+    {                                                                                       \
+        if (need <= *cap)                                                                   \
+            return 0;                                                                       \
+        T *q = occ_realloc(*p, cap, need, sizeof *q);                                       \
+        if (!q)                                                                             \
+            return -1;                                                                      \
+        *p = q;                                                                             \
+        return 0;                                                                           \
+    }
+OCC_GROW(occ_grow_v3, rad_vec3)
+OCC_GROW(occ_grow_d, double)
+OCC_GROW(occ_grow_node, tri_node)
+OCC_GROW(occ_grow_i, int)
+
+/* Exchange two growable arrays (a cut's input and output). */
+static inline void occ_swap_v3(rad_vec3 **a, int *capa, rad_vec3 **b, int *capb)
+{
+    rad_vec3 *t = *a;
+    int tc = *capa;
+    *a = *b;
+    *capa = *capb;
+    *b = t;
+    *capb = tc;
+}
+
+static inline void occ_ps_clear(polyset *s)
+{
+    s->nv = s->np = 0;
+}
+
+#endif /* RAD_OCCSPACE_H */
