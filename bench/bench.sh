@@ -88,6 +88,22 @@ if [ "${BENCH_CUBE50:-0}" = 1 ]; then
   fi
 fi
 
+# The largest solve: 50,784 elements (the cube at 92x92), F alone (19.7
+# GiB) with conjugate gradients; the peak resident memory against the
+# estimate checked before meshing.  Needs about 20 GiB free and 10
+# minutes: only with BENCH_LARGEST=1 (BENCH_LARGEST_MESH, _SOLVER choose).
+if [ "${BENCH_LARGEST:-0}" = 1 ] && command -v /usr/bin/time > /dev/null; then
+  mesh=${BENCH_LARGEST_MESH:-92x92} solver=${BENCH_LARGEST_SOLVER:-cg}
+  echo
+  echo "== the largest solve: cube $mesh, --solver $solver"
+  /usr/bin/time -f 'peak_kb %M wall %e' "$rad" solve --mesh "$mesh" --solver "$solver" \
+    --report "$tmp/largest.json" --elements "$tmp/largest.npy" "$cube" 2> "$tmp/largest.log" || true
+  grep '^radiosity: ' "$tmp/largest.log" || true
+  est=$(sed -n 's/.*"memory_bytes": *\([0-9.e+]*\).*/\1/p' "$tmp/largest.json" 2>/dev/null)
+  awk -v est="${est:-0}" '/^peak_kb/ { printf "peak %.0f MiB, estimate %.0f MiB (ratio %.4f), wall %s s\n",
+      $2 / 1024, est / 1048576, est > 0 ? $2 * 1024 / est : 0, $4 }' "$tmp/largest.log"
+fi
+
 # radiosity-mpi: peak memory per process against the serial run, and wall
 # time, on one machine (processes oversubscribe it beyond its cores, so
 # the times say little about a cluster; the memory is the point).
