@@ -47,12 +47,6 @@
 #include "status.h"
 #include "vec.h"
 
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void rad_anim_options_init(rad_anim_options *opt)
 {
@@ -213,7 +207,7 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
                            rad_anim_report *rep_out, rad_error *err)
 {
     rad_anim_report rep;
-    double t0 = seconds();
+    double t0 = rad_seconds();
     memset(&rep, 0, sizeof rep);
     *out = NULL;
     rad_anim *a = calloc(1, sizeof *a);
@@ -236,16 +230,16 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         element_state(a, NULL);
         st = fill_frame0(a, &rep, err);
     }
-    rep.t_formfactor = seconds() - t0;
+    rep.t_formfactor = rad_seconds() - t0;
     if (st == RAD_OK) { /* shooting from B = dB = E (Cohen et al. 1988) */
         memcpy(a->B, a->E, sizeof *a->B * (size_t)a->n * RAD_BANDS);
         memcpy(a->dB, a->E, sizeof *a->B * (size_t)a->n * RAD_BANDS);
         a->emitted0 = rad_anim_emitted(a);
-        double t1 = seconds();
+        double t1 = rad_seconds();
         st = rad_anim_shoot(a, a->opt.partial_start, &rep, err);
-        rep.t_shoot = seconds() - t1;
+        rep.t_shoot = rad_seconds() - t1;
     }
-    rep.t_total = seconds() - t0;
+    rep.t_total = rad_seconds() - t0;
     if (rep_out)
         *rep_out = rep;
     if (st != RAD_OK) {
@@ -262,7 +256,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
                          rad_error *err)
 {
     const int no = a->scene.nobjects, next = a->frame + 1;
-    double t0 = seconds();
+    double t0 = rad_seconds();
     memset(rep, 0, sizeof *rep);
     if (next > ch->nframes)
         return rad_fail(err, RAD_ERR_INVALID, "there is no frame %d", next);
@@ -301,14 +295,14 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     for (int e = 0; e < a->n; e++)
         np += a->present[e];
     rep->pairs_total = 0.5 * np * (np - 1);
-    rep->t_formfactor = seconds() - t0;
+    rep->t_formfactor = rad_seconds() - t0;
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
-        double t1 = seconds();
+        double t1 = rad_seconds();
         st = rad_anim_shoot(a, 1, rep, err); /* 6 */
-        rep->t_shoot = seconds() - t1;
+        rep->t_shoot = rad_seconds() - t1;
     }
-    rep->t_total = seconds() - t0;
+    rep->t_total = rad_seconds() - t0;
     free(dirty);
     free(old_in);
     free(changed);

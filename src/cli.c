@@ -15,6 +15,7 @@
 
 #include "atomicfile.h"
 #include "cli.h"
+#include "status.h"
 #include "lapack.h"
 
 void cli_error(const char *fmt, ...)
@@ -213,9 +214,7 @@ typedef struct progress_state {
 
 double cli_seconds(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+    return rad_seconds();
 }
 
 int cli_progress(void *user, const char *stage, double done, double total)

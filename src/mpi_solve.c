@@ -55,12 +55,6 @@
 
 #define RAD_RCOND_MIN 1e-10 /* as gauss (solve.c) */
 
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 /* What one job works on, on every process. */
 typedef struct work {
@@ -503,10 +497,10 @@ static rad_status job_run(const mpi_job *job, const rad_mesh *m, rad_result *r, 
                         : rad_fail(err, RAD_ERR_NOMEM, "out of memory for this process's "
                                    "blocks of the %d x %d matrix", w.n, w.n);
     st = mpi_agree(st, err);
-    double t1 = seconds();
+    double t1 = rad_seconds();
     if (st == RAD_OK)
         st = fill(&w, &ff, &fst, err);
-    double t2 = seconds();
+    double t2 = rad_seconds();
     if (r) {
         r->t_formfactor = t2 - t1;
         r->ff = fst;
@@ -526,7 +520,7 @@ static rad_status job_run(const mpi_job *job, const rad_mesh *m, rad_result *r, 
     if (st == RAD_OK)
         st = balance(&w, &rep, err);
     if (r) {
-        r->t_solve = seconds() - t2;
+        r->t_solve = rad_seconds() - t2;
         r->solve = rep;
         r->solve_done = w.F != NULL && r->ff_done;
         if (st == RAD_OK) {
@@ -572,10 +566,10 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
 {
     memset(r, 0, sizeof *r);
     rad_status st = check_size(scene, &opt->solve, r, opt->keep_form_factors, err);
-    double t0 = seconds();
+    double t0 = rad_seconds();
     if (st == RAD_OK)
         st = rad_mesh_build(&r->mesh, scene, err);
-    r->t_mesh = seconds() - t0;
+    r->t_mesh = rad_seconds() - t0;
     if (st != RAD_OK)
         return st;
     const size_t n = (size_t)r->mesh.nelements, nv = (size_t)r->mesh.nvertices;
@@ -592,11 +586,11 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
         return rad_fail(err, RAD_ERR_NOMEM, "the mesh could not be sent to every process");
     st = job_run(&job, &r->mesh, r, err);
     if (st == RAD_OK) {
-        double t3 = seconds();
+        double t3 = rad_seconds();
         for (size_t k = 0; k < n * RAD_BANDS; k++)
             r->b_negative += r->B[k] < 0;
         rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-        r->t_smooth = seconds() - t3;
+        r->t_smooth = rad_seconds() - t3;
     }
     return st;
 }

@@ -116,7 +116,7 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     size_t p = pair_index(a, b, o->nsurf);
     if (o->cand_off[p + 1] == o->cand_off[p])
         return 0;
-    double t0 = occ_now();
+    double t0 = rad_seconds();
     if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
         return -1;
     occ_space *sp = w->space;
@@ -136,6 +136,6 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
             nb = -1;
     }
     *s = snew;
-    w->stats.seconds += occ_now() - t0;
+    w->stats.seconds += rad_seconds() - t0;
     return nb < 0 ? -1 : 0;
 }

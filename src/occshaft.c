@@ -325,7 +325,7 @@ static double scene_size(const rad_mesh *m)
 rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err)
 {
-    double t0 = occ_now(), blockable = 0;
+    double t0 = rad_seconds(), blockable = 0;
     rad_occ_stats st;
     rad_vis *vis = NULL;
     memset(&st, 0, sizeof st);
@@ -360,7 +360,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
         o = NULL;
     }
     st.needed = o != NULL;
-    st.seconds = occ_now() - t0;
+    st.seconds = rad_seconds() - t0;
     if (stats)
         *stats = st;
     *out = o;

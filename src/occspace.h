@@ -16,6 +16,7 @@
 #include "formfactor.h"
 #include "occlusion.h"
 #include "radiosity.h"
+#include "status.h"
 
 /* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
  * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
@@ -130,12 +131,6 @@ typedef struct pair_ctx {
     int events;                 /* split the domain along every event plane */
 } pair_ctx;
 
-static inline double occ_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 
 /* ---- across the files (each described where it is defined) ------------ */

@@ -23,12 +23,6 @@
 #include "solvefree.h"
 #include "status.h"
 
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 void rad_pipeline_options_init(rad_pipeline_options *opt)
 {
@@ -133,7 +127,7 @@ static void finish(rad_result *r, const rad_pipeline_options *opt, double t_solv
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
     rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-    r->t_smooth = seconds() - t_solved;
+    r->t_smooth = rad_seconds() - t_solved;
 }
 
 /* --matrix none: the form factors are computed inside the solve, shot by
@@ -147,7 +141,7 @@ static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt
         so.progress_user = opt->ff.progress_user;
     }
     rad_status st = rad_solve_matrix_free(&r->mesh, &opt->ff, &so, r->B, &r->solve, &r->ff, err);
-    double t3 = seconds();
+    double t3 = rad_seconds();
     r->t_solve = t3 - t1;
     r->ff_done = r->solve_done = 1;
     if (st == RAD_OK)
@@ -191,10 +185,10 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
 {
     memset(r, 0, sizeof *r);
     rad_status st = check_size(scene, opt, r, err);
-    double t0 = seconds();
+    double t0 = rad_seconds();
     if (st == RAD_OK)
         st = rad_mesh_build(&r->mesh, scene, err);
-    double t1 = seconds();
+    double t1 = rad_seconds();
     r->t_mesh = t1 - t0;
     if (st == RAD_OK)
         st = allocate(r, err);
@@ -202,7 +196,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
         return run_matrix_free(r, opt, t1, err);
     if (st == RAD_OK)
         st = rad_ff_matrix(&r->mesh, &opt->ff, r->F, NULL, &r->ff, err);
-    double t2 = seconds();
+    double t2 = rad_seconds();
     r->t_formfactor = t2 - t1;
     if (st != RAD_OK)
         return st;
@@ -214,7 +208,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     }
     so.ff_row_error = r->ff.max_row_error; /* NaN in classic: no bound */
     st = rad_solve(&r->mesh, r->F, &so, r->B, &r->solve, err);
-    double t3 = seconds();
+    double t3 = rad_seconds();
     r->t_solve = t3 - t2;
     r->solve_done = 1;
     if (st == RAD_OK)

@@ -6,6 +6,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <time.h>
 
 #include "radiosity.h"
 #include "status.h"
@@ -58,4 +59,11 @@ const char *rad_accuracy_name(int accuracy)
 {
     static const char *const names[] = {"classic", "default", "reference"};
     return accuracy >= 0 && accuracy < 3 ? names[accuracy] : NULL;
+}
+
+double rad_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }

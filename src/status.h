@@ -22,6 +22,10 @@ rad_status rad_fail(rad_error *err, rad_status status, const char *fmt, ...)
 rad_status rad_fail_vat(rad_error *err, const char *file, int line, const char *fmt,
                         va_list ap) __attribute__((format(printf, 4, 0)));
 
+/* Wall-clock seconds from an arbitrary origin (CLOCK_MONOTONIC): the one
+ * clock behind every time the program reports. */
+double rad_seconds(void);
+
 #ifdef __cplusplus
 }
 #endif
