@@ -341,7 +341,7 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
 
 /* 2^e with 2^(e-1) <= max |x_k| < 2^e (0 for all zeros or a non-finite
  * maximum): the exponent that scales x to a largest value in [1/2, 1). */
-static int scale_exponent(const double *x, size_t n)
+int rad_scale_exponent(const double *x, size_t n)
 {
     int e = 0;
     const double m = max_abs(x, n);
@@ -350,7 +350,7 @@ static int scale_exponent(const double *x, size_t n)
     return e;
 }
 
-static void scale_by(double *x, size_t n, int e)
+void rad_scale_by(double *x, size_t n, int e)
 {
     for (size_t k = 0; k < n; k++)
         x[k] = ldexp(x[k], e);
@@ -375,7 +375,7 @@ static rad_status unscale_b(double *B, size_t n3, int ke, rad_error *err)
                         "(%.3g); scale the emission down by a factor of %.3g at least",
                         pow(10, l - p), p, DBL_MAX, pow(10, l - log10(DBL_MAX)));
     }
-    scale_by(B, n3, ke);
+    rad_scale_by(B, n3, ke);
     return RAD_OK;
 }
 
@@ -417,11 +417,11 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     /* E and the areas to a largest value in [1/2, 1), exactly (see Range);
      * a traced progressive run shoots the user's E and scales after */
     const int progressive = opt->solver == RAD_SOLVER_PROGRESSIVE && opt->bounces < 0;
-    const int ke = scale_exponent(E, n3), ka = scale_exponent(area, (size_t)n);
+    const int ke = rad_scale_exponent(E, n3), ka = rad_scale_exponent(area, (size_t)n);
     const int late = progressive && opt->on_shot;
-    scale_by(area, (size_t)n, -ka);
+    rad_scale_by(area, (size_t)n, -ka);
     if (!late)
-        scale_by(E, n3, -ke);
+        rad_scale_by(E, n3, -ke);
     /* the solvers that weigh by area see the scaled areas (see Range):
      * a shallow copy of the mesh with its elements' areas replaced */
     rad_mesh ms = *m;
@@ -448,8 +448,8 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
         st = rad_solve_iterate(&ms, F, rho, E, B, opt, rep, err);
     free(els);
     if (late) {
-        scale_by(E, n3, -ke);
-        scale_by(B, n3, -ke);
+        rad_scale_by(E, n3, -ke);
+        rad_scale_by(B, n3, -ke);
     }
     if (st == RAD_OK || st == RAD_ERR_NOCONV) {
         rad_error derr;
@@ -462,7 +462,7 @@ rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options
     if (st == RAD_OK)
         st = unscale_b(B, n3, ke, err);
     else if (st == RAD_ERR_NOCONV) /* the last iterate, for the caller to inspect */
-        scale_by(B, n3, ke);
+        rad_scale_by(B, n3, ke);
     free(rho);
     free(E);
     free(area);

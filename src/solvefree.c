@@ -31,25 +31,8 @@
 #include "ffrow.h"
 #include "progressive.h"
 #include "solvefree.h"
+#include "solvers.h"
 #include "status.h"
-
-/* The exponent e with max |x| in [2^(e-1), 2^e), 0 for zeros (as solve.c). */
-static int scale_exponent(const double *x, size_t n)
-{
-    double m = 0;
-    int e = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    if (m > 0 && isfinite(m))
-        frexp(m, &e);
-    return e;
-}
-
-static void scale_by(double *x, size_t n, int e)
-{
-    for (size_t k = 0; k < n; k++)
-        x[k] = ldexp(x[k], e);
-}
 
 static void report_init(rad_solve_report *rep)
 {
@@ -73,7 +56,7 @@ static rad_status unscale(double *B, size_t n3, int ke, rad_error *err)
                             "the radiosity overflows: it exceeds the largest double (%.3g); "
                             "scale the emission down",
                             DBL_MAX);
-    scale_by(B, n3, ke);
+    rad_scale_by(B, n3, ke);
     return RAD_OK;
 }
 
@@ -99,9 +82,9 @@ rad_status rad_solve_matrix_free(const rad_mesh *m, const rad_ff_options *ff,
             E[(size_t)i + (size_t)b * n] = m->elements[i].emit[b];
             rep->emitted[b] += m->elements[i].area * m->elements[i].emit[b];
         }
-    const int ke = st == RAD_OK ? scale_exponent(E, n3) : 0, late = opt->on_shot != NULL;
+    const int ke = st == RAD_OK ? rad_scale_exponent(E, n3) : 0, late = opt->on_shot != NULL;
     if (st == RAD_OK && !late)
-        scale_by(E, n3, -ke);
+        rad_scale_by(E, n3, -ke);
     if (st == RAD_OK)
         st = rad_ffrow_create(&row, m, ff, RAD_OCC_AUTO, opt->patch_p, opt->patch_q, err);
     if (st == RAD_OK) {
@@ -111,11 +94,11 @@ rad_status rad_solve_matrix_free(const rad_mesh *m, const rad_ff_options *ff,
             rad_ffrow_stats(row, ffst, &rep->row_sum_min, &rep->row_sum_max);
     }
     if (late && (st == RAD_OK || st == RAD_ERR_NOCONV))
-        scale_by(B, n3, -ke);
+        rad_scale_by(B, n3, -ke);
     if (st == RAD_OK)
         st = unscale(B, n3, ke, err);
     else if (st == RAD_ERR_NOCONV)
-        scale_by(B, n3, ke);
+        rad_scale_by(B, n3, ke);
     rad_ffrow_free(row);
     free(rho);
     free(E);

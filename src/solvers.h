@@ -47,6 +47,13 @@ void rad_solve_balance(int n, const double *H, const double *rs, const double *r
                        const double *E, const double *B, const double *area, int ka, int ke,
                        rad_solve_report *rep);
 
+/* The exponent e with max |x_k| in [2^(e-1), 2^e) (0 for all zeros or a
+ * non-finite maximum), and x *= 2^e exactly: the scalings of E and the
+ * areas that keep every solver inside the double range (solve.c, Range;
+ * solvefree.c). */
+int rad_scale_exponent(const double *x, size_t n);
+void rad_scale_by(double *x, size_t n, int e);
+
 /* RAD_ERR_TOOBIG (the message names `what`) when `matrices` n x n
  * matrices of doubles would not fit in the memory available now: the
  * check before LU's or Cholesky's working matrix (solve.c). */
