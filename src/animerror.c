@@ -26,8 +26,10 @@ static double luminance(const double *B, size_t n, size_t i)
     return 0.2126 * B[i] + 0.7152 * B[i + n] + 0.0722 * B[i + 2 * n]; /* BT.709 */
 }
 
-double rad_anim_error(const rad_mesh *m, const unsigned char *mask, const double *B,
-                      const double *Bref)
+/* sum A |Y - Yref| over sum A w, the weight w = |Yref| (Bprev NULL: George
+ * et al. 1990, eq. 7) or |Yref - Yprev| (the error relative to the change). */
+static double weighted_error(const rad_mesh *m, const unsigned char *mask, const double *B,
+                             const double *Bref, const double *Bprev)
 {
     const size_t n = (size_t)m->nelements;
     double num = 0, den = 0;
@@ -36,24 +38,21 @@ double rad_anim_error(const rad_mesh *m, const unsigned char *mask, const double
             continue;
         const double a = m->elements[i].area, yr = luminance(Bref, n, i);
         num += a * fabs(luminance(B, n, i) - yr); /* George et al. 1990, eq. 7 */
-        den += a * fabs(yr);
+        den += a * fabs(Bprev ? yr - luminance(Bprev, n, i) : yr);
     }
     return den > 0 ? num / den : num > 0 ? HUGE_VAL : 0;
+}
+
+double rad_anim_error(const rad_mesh *m, const unsigned char *mask, const double *B,
+                      const double *Bref)
+{
+    return weighted_error(m, mask, B, Bref, NULL);
 }
 
 double rad_anim_error_changed(const rad_mesh *m, const unsigned char *mask, const double *B,
                               const double *Bref, const double *Bprev)
 {
-    const size_t n = (size_t)m->nelements;
-    double num = 0, den = 0;
-    for (size_t i = 0; i < n; i++) {
-        if (mask && !mask[i])
-            continue;
-        const double a = m->elements[i].area, yr = luminance(Bref, n, i);
-        num += a * fabs(luminance(B, n, i) - yr);
-        den += a * fabs(yr - luminance(Bprev, n, i));
-    }
-    return den > 0 ? num / den : num > 0 ? HUGE_VAL : 0;
+    return weighted_error(m, mask, B, Bref, Bprev);
 }
 
 typedef struct ranked {

@@ -395,12 +395,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
         stats->max_row_error = max_row_error;
         stats->promise = rad_ff_promise(opt->accuracy);
         stats->promise_unmet = 2 * unmet; /* both entries of each pair */
-        stats->vis_needed = vst.needed;
-        stats->vis_pairs_tested = vst.pairs_tested;
-        stats->vis_pairs_blockable = vst.pairs_blockable;
-        stats->vis_pairs_blocked = vst.pairs_blocked;
-        stats->vis_pairs_partial = vst.pairs_partial;
-        stats->vis_seconds = vst.seconds;
+        rad_occ_stats_to_ff(&vst, stats);
         stats->clamped_to_one = clamped;
     }
     return RAD_OK;

@@ -411,12 +411,7 @@ void rad_ffrow_stats(const rad_ffrow *r, rad_ff_stats *st, double *min_row_sum,
     st->promise = rad_ff_promise(r->opt.accuracy);
     st->promise_unmet = r->all.unmet;
     st->rows_above_one = r->rows_above_one;
-    st->vis_needed = v.needed;
-    st->vis_pairs_tested = v.pairs_tested;
-    st->vis_pairs_blockable = v.pairs_blockable;
-    st->vis_pairs_blocked = v.pairs_blocked;
-    st->vis_pairs_partial = v.pairs_partial;
-    st->vis_seconds = v.seconds;
+    rad_occ_stats_to_ff(&v, st);
     st->clamped_to_one = r->clamped;
     if (min_row_sum)
         *min_row_sum = r->row_min;

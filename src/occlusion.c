@@ -139,3 +139,13 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     w->stats.seconds += rad_seconds() - t0;
     return nb < 0 ? -1 : 0;
 }
+
+void rad_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st)
+{
+    st->vis_needed = v->needed;
+    st->vis_pairs_tested = v->pairs_tested;
+    st->vis_pairs_blockable = v->pairs_blockable;
+    st->vis_pairs_blocked = v->pairs_blocked;
+    st->vis_pairs_partial = v->pairs_partial;
+    st->vis_seconds = v->seconds;
+}

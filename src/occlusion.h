@@ -71,6 +71,9 @@ void rad_occ_work_free(rad_occ_work *w);
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
                  double *errest);
 
+/* The visibility fields of a form-factor record (vis_*) from v. */
+void rad_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st);
+
 /* into += from (counts and times add, maxima combine). */
 void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from);
 
