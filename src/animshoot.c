@@ -73,7 +73,7 @@ double rad_anim_emitted(const rad_anim *a)
 }
 
 /* Receiver i gets x (per band) of gathered radiosity. */
-static inline void receive(rad_anim *a, int i, const double x[RAD_BANDS])
+void rad_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS])
 {
     const size_t n = (size_t)a->n;
     for (int b = 0; b < RAD_BANDS; b++) {
@@ -100,7 +100,7 @@ static double propagate(rad_anim *a, int j)
         const double f = col[i];
         if (f != 0) {
             double x[RAD_BANDS] = {f * d[0], f * d[1], f * d[2]};
-            receive(a, i, x);
+            rad_anim_receive(a, i, x);
         }
     }
     return p * a->mesh.elements[j].area;
@@ -115,10 +115,10 @@ static double apply_entry(rad_anim *a, int j, size_t k)
     const int i = rd->recv[k];
     double x[RAD_BANDS], p = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
-        x[b] = rd->dF[k] * rd->T[j + b * n];
+        x[b] = rd->amt[3 * k + b]; /* dF_ij T_j, George et al. 1990, eq. 5 */
         p += a->mesh.elements[i].area * a->rho[i + b * n] * x[b];
     }
-    receive(a, i, x);
+    rad_anim_receive(a, i, x);
     rd->done[k] = 1;
     rd->npending--;
     rd->left -= rd->epow[k];

@@ -183,4 +183,39 @@ ok $? "--frames without an integer conversion is a usage error"
 # a solve of a scene with an absent object leaves it out
 n=$(awk 'END { print NR - 1 }' f0.tsv)
 ok $([ "$n" -eq 78 ]; echo $?) "solve leaves the absent shade out ($n elements: 54 walls, 24 box)"
+# the change log (George et al. 1990, Fig. 5): partial frames carry their
+# pending redistribution on; the frame that converges after them equals a
+# fresh solve of its scene
+"$RADIOSITY" animate -q --steps 3 --converge-last --elements 'l%d.tsv' --errors errs.tsv \
+  --log all.log room.scene all.changes 2> err; rc=$?
+ok $rc "--steps 3 --converge-last runs (exit $rc)"
+r=$(same l5.tsv f5.tsv 1e-9); ok $? "--steps 3, last frame converged: equals a fresh solve within 1e-9: $r"
+printf 'frame\nmove box 0.125 0 0\nframe\nmove box 0.125 0 0\nframe\nmove box 0.125 0 0\n' > moves.changes
+xform box move 0.375 0 0 < room.scene > m3.scene
+"$RADIOSITY" solve -q m3.scene --elements m3.tsv 2> /dev/null
+"$RADIOSITY" animate -q --steps 2 --converge-last --elements 'mv%d.tsv' room.scene moves.changes 2> /dev/null
+r=$(same mv3.tsv m3.tsv 1e-9); ok $? "three moves, 2 shots each, then converged: a fresh solve within 1e-9: $r"
+head -n 1 errs.tsv | grep -q '^frame	shots	seconds	pairs_recomputed	pairs_share	error	error_top1$'
+ok $? "--errors: the header"
+awk -F '\t' 'NR > 1 { n++; if ($1 != n - 1) bad = 1 } END { exit !(n == 6 && !bad) }' errs.tsv
+ok $? "--errors: one row per frame"
+awk -F '\t' 'NR == 7 { exit !($2 > 0 && $6 >= 0 && $6 <= 1e-9) } NR > 1 && NR < 7 && $2 == 3 && !($6 > 0) { exit 1 }' errs.tsv
+ok $? "--errors: partial frames have an error, the converged last frame none (<= 1e-9, as the fresh solve above)"
+
+# an interrupted animation resumes from its log: the frames after equal
+# the uninterrupted run's within 1e-10
+awk '/^frame/ { n++ } n <= 2' all.changes > first2.changes
+"$RADIOSITY" animate -q --steps 3 --log two.log room.scene first2.changes 2> /dev/null
+ok $? "the first two frames, with --log"
+"$RADIOSITY" animate -q --steps 3 --converge-last --resume two.log --elements 'z%d.tsv' \
+  room.scene all.changes 2> err; rc=$?
+ok $rc "--resume from frame 2 runs (exit $rc)"
+[ ! -e z2.tsv ] && [ -e z3.tsv ]; ok $? "--resume runs the frames after the log's only"
+for f in 3 4 5; do
+  r=$(same "z$f.tsv" "l$f.tsv" 1e-10); ok $? "resumed frame $f equals the uninterrupted run's within 1e-10: $r"
+done
+r=$(same z5.tsv f5.tsv 1e-9); ok $? "the resumed last frame equals a fresh solve within 1e-9: $r"
+"$RADIOSITY" animate -q --resume room.scene room.scene all.changes 2> err; rc=$?
+[ $rc -eq 1 ] && grep -q '^radiosity: room.scene:1: not an animation log' err
+ok $? "--resume of a file that is no log: exit $rc, $(head -c 100 err)"
 done_testing
