@@ -90,6 +90,7 @@ void rad_anim_free(rad_anim *a)
     free(a->E);
     free(a->first);
     free(a->log_obj);
+    free(a->imp);
     free(a);
 }
 
@@ -173,8 +174,9 @@ static rad_status allocate(rad_anim *a, rad_error *err)
     a->elem_object = calloc(n + 1, sizeof *a->elem_object);
     a->obj_present = calloc((size_t)a->scene.nobjects + 1, 1);
     a->log_obj = calloc((size_t)a->scene.nobjects + 1, 1);
+    a->imp = calloc(n + 1, sizeof *a->imp);
     if (!a->F || !a->B || !a->dB || !a->H || !a->rho || !a->E || !a->first || !a->present ||
-        !a->elem_object || !a->obj_present || !a->log_obj)
+        !a->elem_object || !a->obj_present || !a->log_obj || !a->imp)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %zu elements", n);
     return RAD_OK;
 }
@@ -311,6 +313,26 @@ rad_status rad_anim_resume(rad_anim **out, const rad_scene *scene, const rad_cha
 
 /* ---- later frames -------------------------------------------------------- */
 
+/* With the paper's importance: the samples of the objects the frame
+ * changed, where they were (old mesh) and where they are (new mesh);
+ * their count.  `out` holds 2 n. */
+static int collect_samples(const rad_anim *a, const rad_mesh *now, const unsigned char *dirty,
+                           const unsigned char *old_in, rad_anim_sample *out)
+{
+    int ns = 0;
+    for (int e = 0; e < a->n; e++) {
+        const int o = a->elem_object[e];
+        if (o < 0 || !dirty[o])
+            continue;
+        const rad_element *was = &a->mesh.elements[e], *is = &now->elements[e];
+        if (old_in[o])
+            out[ns++] = (rad_anim_sample){was->centroid, was->normal, was->area};
+        if (a->obj_present[o])
+            out[ns++] = (rad_anim_sample){is->centroid, is->normal, is->area};
+    }
+    return ns;
+}
+
 /* Step 7: a frame that converged after unconverged ones runs the log's
  * final pass, shoots what it found, and the log starts anew here. */
 static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
@@ -348,7 +370,10 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     unsigned char *changed = malloc((size_t)a->n + 1);
     rad_vec3 *lo = malloc(sizeof *lo * (size_t)(no + 1)), *hi = malloc(sizeof *hi * (size_t)(no + 1));
     rad_mesh mesh;
-    rad_status st = dirty && old_in && changed && lo && hi
+    const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
+    rad_anim_sample *smp = paper ? malloc(sizeof *smp * (2 * (size_t)a->n + 1)) : NULL;
+    int ns = 0;
+    rad_status st = dirty && old_in && changed && lo && hi && (smp || !paper)
                         ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     for (int o = 0; st == RAD_OK && o < no; o++) {
         old_in[o] = a->obj_present[o];
@@ -366,6 +391,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
             rad_mesh_free(&mesh);
             st = rad_fail(err, RAD_ERR_INVALID, "the mesh changed its element count");
         } else {
+            ns = paper ? collect_samples(a, &mesh, dirty, old_in, smp) : 0;
             rad_mesh_free(&a->mesh);
             a->mesh = mesh;
         }
@@ -383,6 +409,8 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     rep->t_formfactor = seconds() - t0;
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
+        if (paper)
+            rad_anim_importance(a, dirty, smp, ns);
         double t1 = seconds();
         const int partial = !(a->opt.converge_last && next == ch->nframes);
         st = rad_anim_shoot(a, partial, rep, err); /* 6 */
@@ -396,6 +424,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     free(changed);
     free(lo);
     free(hi);
+    free(smp);
     return st;
 }
 

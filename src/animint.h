@@ -38,6 +38,12 @@ typedef struct rad_redist {
     double left;                /* their power */
 } rad_redist;
 
+/* A sample point on a changed object (animimportance.c). */
+typedef struct rad_anim_sample {
+    rad_vec3 centroid, normal;
+    double area;
+} rad_anim_sample;
+
 struct rad_anim {
     rad_scene scene;            /* every surface, as moved; current materials */
     rad_anim_options opt;
@@ -54,6 +60,8 @@ struct rad_anim {
                                    tolerance when lights go */
     rad_redist rd;
     unsigned char *first;       /* n: emitters that shoot first this frame */
+    double *imp;                /* n: the paper's importance estimate (with
+                                   opt.importance, animimportance.c) */
     /* The change log (animlog.c, George et al. 1990, Fig. 5). */
     int converged_frame;        /* the last frame that converged */
     int log_open;               /* a frame since then stopped unconverged */
@@ -80,6 +88,11 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
 void rad_anim_flush(rad_anim *a);
 /* Receiver i gathers x (per band): H, B and dB grow (animshoot.c). */
 void rad_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS]);
+
+/* animimportance.c: a->imp for every shooter from the samples on the
+ * frame's changed objects (`dirty`). */
+void rad_anim_importance(rad_anim *a, const unsigned char *dirty, const rad_anim_sample *s,
+                         int ns);
 
 /* animlog.c: the log's final pass: every present row's H set to F S
  * exactly (S = B - dB), the difference propagated like any received

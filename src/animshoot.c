@@ -38,9 +38,11 @@
  * emission changed shoot first; then strategy 1 takes every
  * redistribution step (largest pending power first, shooter or receiver:
  * the exact energy toward and away from the change, which the paper's
- * importance estimates from sample points) and then propagates; strategy
- * 2 takes at each step the larger of the largest pending redistribution
- * and the largest unshot power.
+ * importance estimates from sample points; with opt.importance PAPER,
+ * shooters only, in order of that estimate, animimportance.c) and then
+ * propagates; strategy 2 takes at each step the larger of the largest
+ * pending redistribution (power or estimate) and the largest unshot
+ * power.
  */
 #include <config.h>
 
@@ -219,9 +221,10 @@ static int choose(rad_anim *a, int *kind)
         }
     const int u = largest_unshot(a, &pu);
     int r = -1, g = -1;
+    const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
     if (a->rd.npending > 0) {
-        r = largest_pending(a->rd.ncol, a->rd.power, a->n, &pr);
-        if (a->opt.gather)
+        r = largest_pending(a->rd.ncol, paper ? a->imp : a->rd.power, a->n, &pr);
+        if (a->opt.gather && !paper)
             g = largest_pending(a->rd.nrow, a->rd.rpower, a->n, &pg);
     }
     const int red = g >= 0 && pg > pr ? g : r;

@@ -42,7 +42,8 @@ enum {
     OPT_LOG,
     OPT_RESUME,
     OPT_CONVERGE_LAST,
-    OPT_ERRORS
+    OPT_ERRORS,
+    OPT_IMPORTANCE
 };
 
 static void help(void)
@@ -78,6 +79,12 @@ static void help(void)
            "                          is redistributed to it in one step)\n"
            "      --strategy 1|2      1: redistribute, then propagate (default);\n"
            "                          2: the larger shot first (the paper's Fig. 4)\n"
+           "      --importance exact|paper  the order of redistribution shots: exact\n"
+           "                          (default) by the power each has pending, known\n"
+           "                          here from the recomputed form factors; paper:\n"
+           "                          by the paper's estimate of the energy toward\n"
+           "                          the changed objects from sample points on\n"
+           "                          them (section 4), shooters only\n"
            "      --converge-last     with --steps, converge the last frame all the\n"
            "                          same: the change log's final pass sets right\n"
            "                          what the partial frames left\n"
@@ -199,6 +206,13 @@ static int parse_option(anim_args *a, int opt, const char *arg)
         return 0;
     case OPT_NO_GATHER:
         a->opt.gather = 0;
+        return 0;
+    case OPT_IMPORTANCE:
+        if (strcmp(arg, "exact") != 0 && strcmp(arg, "paper") != 0) {
+            cli_error("--importance is exact or paper, not '%s'", arg);
+            return 2;
+        }
+        a->opt.importance = arg[0] == 'p' ? RAD_ANIM_IMPORTANCE_PAPER : RAD_ANIM_IMPORTANCE_EXACT;
         return 0;
     case OPT_CONVERGE_LAST:
         a->opt.converge_last = 1;
@@ -725,6 +739,7 @@ int cmd_animate(int argc, char **argv)
         {"from-scratch", no_argument, NULL, OPT_FROM_SCRATCH},
         {"no-gather", no_argument, NULL, OPT_NO_GATHER},
         {"converge-last", no_argument, NULL, OPT_CONVERGE_LAST},
+        {"importance", required_argument, NULL, OPT_IMPORTANCE},
         {"log", required_argument, NULL, OPT_LOG},
         {"resume", required_argument, NULL, OPT_RESUME},
         {"errors", required_argument, NULL, OPT_ERRORS},

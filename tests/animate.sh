@@ -218,4 +218,14 @@ r=$(same z5.tsv f5.tsv 1e-9); ok $? "the resumed last frame equals a fresh solve
 "$RADIOSITY" animate -q --resume room.scene room.scene all.changes 2> err; rc=$?
 [ $rc -eq 1 ] && grep -q '^radiosity: room.scene:1: not an animation log' err
 ok $? "--resume of a file that is no log: exit $rc, $(head -c 100 err)"
+# the paper's importance estimate orders the shots differently; converged
+# frames are the same fresh solves
+"$RADIOSITY" animate -q --importance paper --elements 'ip%d.tsv' room.scene all.changes 2> err; rc=$?
+ok $rc "--importance paper runs (exit $rc)"
+r=$(same ip1.tsv f1.tsv 1e-9); ok $? "--importance paper: the moved frame equals a fresh solve: $r"
+r=$(same ip3.tsv f3.tsv 1e-9); ok $? "--importance paper: the frame with the shade added equals a fresh solve: $r"
+"$RADIOSITY" animate -q --importance paper --steps 2 --converge-last --elements 'iq%d.tsv' room.scene moves.changes 2> /dev/null
+r=$(same iq3.tsv m3.tsv 1e-9); ok $? "--importance paper, three partial moves then converged: a fresh solve: $r"
+"$RADIOSITY" animate --importance guess room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
+ok $? "--importance guess is a usage error"
 done_testing

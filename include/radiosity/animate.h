@@ -48,6 +48,9 @@ typedef struct rad_anim_shot {
  * "interrupted"). */
 typedef int (*rad_anim_shot_fn)(void *user, const rad_anim_shot *shot);
 
+/* The order of redistribution shots (rad_anim_options.importance). */
+enum { RAD_ANIM_IMPORTANCE_EXACT = 0, RAD_ANIM_IMPORTANCE_PAPER = 1 };
+
 typedef struct rad_anim_options {
     rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
     double tolerance;           /* a frame is converged when its unshot power
@@ -65,6 +68,11 @@ typedef struct rad_anim_options {
     int gather;                 /* 1 (default): a redistribution step may be a
                                    receiver gathering its pending terms;
                                    0: shooters only, as in the paper */
+    int importance;             /* RAD_ANIM_IMPORTANCE_EXACT (default): shooters
+                                   in order of their exact pending power;
+                                   RAD_ANIM_IMPORTANCE_PAPER: of the paper's
+                                   estimate from sample points on the changed
+                                   objects (section 4), shooters only */
     int converge_last;          /* 1: with steps, the last frame of the change
                                    file is converged all the same (the log's
                                    final pass, animlog.c) */
