@@ -84,8 +84,6 @@ rad_status rad_anim_redist_index(rad_anim *a, rad_error *err);
 
 /* animshoot.c: shoot until converged (or opt.steps shots when `partial`). */
 rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_error *err);
-/* Apply every pending redistribution shot at once. */
-void rad_anim_flush(rad_anim *a);
 /* Receiver i gathers x (per band): H, B and dB grow (animshoot.c). */
 void rad_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS]);
 

@@ -171,13 +171,6 @@ static double gather(rad_anim *a, int i)
     return p;
 }
 
-void rad_anim_flush(rad_anim *a)
-{
-    for (int j = 0; j < a->n && a->rd.npending > 0; j++)
-        if (a->rd.ncol[j] > 0)
-            redistribute(a, j);
-}
-
 /* The element with the largest unshot power, or -1 when all are 0. */
 static int largest_unshot(const rad_anim *a, double *power)
 {

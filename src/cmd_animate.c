@@ -514,9 +514,13 @@ static int w_report(FILE *out, const void *ctx)
     fprintf(out, "  \"strategy\": %d,\n  \"steps\": %ld,\n  ", r->args->opt.strategy,
             r->args->opt.steps);
     json_num(out, "tolerance", r->args->opt.tolerance, ",\n  \"frames\": [\n");
+    int sep = 0;
     for (int f = 0; f <= r->changes.nframes; f++) {
         const frame_row *w = &r->frames[f];
         const rad_anim_report *p = &w->rep;
+        if (!w->ran)
+            continue; /* before a --resume */
+        fputs(sep++ ? ",\n" : "", out);
         fprintf(out, "    {\"frame\": %d, \"shots\": %ld, \"redistribution_shots\": %ld, "
                 "\"propagation_shots\": %ld, \"converged\": %s, ", f, p->shots,
                 p->redistribution_shots, p->propagation_shots, p->converged ? "true" : "false");
@@ -532,10 +536,11 @@ static int w_report(FILE *out, const void *ctx)
         json_num(out, "t_total", p->t_total, ", ");
         json_num(out, "t_reference", w->t_reference, ", ");
         json_num(out, "error_eq7", w->error, ", ");
-        json_num(out, "error_eq7_top1", w->error_top, "}");
-        fputs(f < r->changes.nframes ? ",\n" : "\n", out);
+        json_num(out, "error_eq7_top1", w->error_top, ", ");
+        fprintf(out, "\"log_pass\": %s, ", p->log_pass ? "true" : "false");
+        json_num(out, "log_residual", p->log_residual, "}");
     }
-    fputs("  ]\n}\n", out);
+    fputs("\n  ]\n}\n", out);
     return ferror(out) ? -1 : 0;
 }
 

@@ -207,6 +207,12 @@ ok $? "--errors: partial frames have an error, the converged last frame none (<=
 awk '/^frame/ { n++ } n <= 2' all.changes > first2.changes
 "$RADIOSITY" animate -q --steps 3 --log two.log room.scene first2.changes 2> /dev/null
 ok $? "the first two frames, with --log"
+# the log after two partial frames holds pending redistribution, one
+# entry per pair (the series of changes merged), and the final pass ran
+awk '$1 == "pending" { m = $2; on = 1; next } $1 == "end" { on = 0 }
+     on { k++; if (seen[$1 " " $2]++) dup = 1 }
+     END { exit !(m > 0 && k == m && !dup) }' two.log
+ok $? "the log after partial frames: pending entries, one per pair"
 "$RADIOSITY" animate -q --steps 3 --converge-last --resume two.log --elements 'z%d.tsv' \
   room.scene all.changes 2> err; rc=$?
 ok $rc "--resume from frame 2 runs (exit $rc)"

@@ -96,6 +96,9 @@ typedef struct rad_anim_report {
     double pairs_total;         /* n (n - 1) / 2 over present elements */
     double pairs_changed;       /* ... whose F changed */
     double t_formfactor, t_shoot, t_total;  /* wall-clock seconds */
+    int log_pass;               /* 1: the frame converged after unconverged
+                                   ones and ran the change log's final pass */
+    double log_residual;        /* the largest |F S - H| / |F S| it removed */
 } rad_anim_report;
 
 typedef struct rad_anim rad_anim;
