@@ -111,12 +111,15 @@ rad_status rad_anim_log_write(FILE *out, const rad_anim *a)
 
 /* ---- reading ------------------------------------------------------------- */
 
-/* The next line into buf (without its newline); 0 at the end. */
+/* The next line into buf (without its newline); 0 at the end (the line
+ * number then names the line that is missing). */
 static int next_line(FILE *in, char *buf, size_t size, int *line)
 {
-    if (!fgets(buf, (int)size, in))
-        return 0;
     (*line)++;
+    if (!fgets(buf, (int)size, in)) {
+        buf[0] = 0;
+        return 0;
+    }
     buf[strcspn(buf, "\r\n")] = 0;
     return 1;
 }

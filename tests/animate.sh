@@ -234,4 +234,16 @@ r=$(same ip3.tsv f3.tsv 1e-9); ok $? "--importance paper: the frame with the sha
 r=$(same iq3.tsv m3.tsv 1e-9); ok $? "--importance paper, three partial moves then converged: a fresh solve: $r"
 "$RADIOSITY" animate --importance guess room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--importance guess is a usage error"
+# a damaged log is refused naming its line, before any frame is written
+badlog() { # badlog DESCRIPTION EXPECTED-MESSAGE (the log in bad.log)
+  rm -f y3.tsv
+  "$RADIOSITY" animate -q --resume bad.log --elements 'y%d.tsv' room.scene all.changes 2> err; rc=$?
+  [ $rc -eq 1 ] && grep -q "^radiosity: bad.log:$2" err && [ ! -e y3.tsv ]
+  ok $? "$1: exit $rc, $(head -c 120 err)"
+}
+head -n 50 two.log > bad.log; badlog "a log cut short" "51: the state ends early"
+sed 's/^elements	86$/elements	85/' two.log > bad.log; badlog "another element count" "3: 85 elements, the scene has 86"
+sed '12s/^\([0-9]*	[01]	\)[^	]*/\1x/' two.log > bad.log; badlog "a bad number" "12: expected"
+sed 's/^changed	box$/changed	crate/' two.log > bad.log; badlog "an unknown object" "7: unknown object"
+sed 's/^frame	2$/frame	9/' two.log > bad.log; badlog "a frame beyond the change file" "2: frame 9 is beyond"
 done_testing
