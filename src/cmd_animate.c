@@ -653,6 +653,9 @@ static int resume(anim_run *r, int *first)
     }
     const int f = rad_anim_frame(r->anim);
     *first = f + 1;
+    if (!a->common.quiet)
+        fprintf(stderr, "resumed from %s after frame %d of %d%s\n", a->resume, f,
+                r->changes.nframes, f == r->changes.nframes ? ": nothing left to do" : "");
     if (!a->reference)
         return 0;
     for (int k = 1; k < f; k++) /* the frames before the log's, unsolved */
