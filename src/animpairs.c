@@ -25,8 +25,10 @@
  * solve of the frame's scene.  Pairs with an absent element become 0.
  *
  * In place: the new values overwrite F; what the redistribution needs is
- * dF = F(t) - F(t-1) on the changed pairs only, kept in compressed columns
- * (animint.h) with T = B - dB, what each shooter had shot.  No second n x n
+ * dF T on the changed pairs only (dF = F(t) - F(t-1), T = B - dB what
+ * each shooter had shot), kept in compressed columns (animint.h) and
+ * merged with what earlier partial frames left (the change log,
+ * animlog.c).  No second n x n
  * matrix is ever made: memory is F, the pair lists and O(n).
  */
 #include <config.h>
