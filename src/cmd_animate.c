@@ -552,7 +552,7 @@ static int check_paths(const anim_run *r)
     const anim_args *a = r->args;
     char path[4096];
     cli_output o[4] = {{a->trace, w_trace, r}, {a->report, w_report, r},
-                       {a->errors, w_errors, r}, {a->log, w_log, r}};
+                       {a->errors, w_errors, r}, {a->log, w_log, NULL}};
     if (cli_outputs_check(o, 4))
         return 1;
     for (int f = 0; f <= r->changes.nframes; f++) {
