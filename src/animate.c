@@ -11,8 +11,9 @@
  * its scene would compute (animpairs.c).
  *
  * A frame (rad_anim_next):
- *   1. what the previous frame left to redistribute (with --steps) is
- *      shot at once, so the state is that of the frame's own F again;
+ *   1. what the previous frame left to redistribute (with --steps) stays
+ *      pending: the change log (animlog.c) merges it pair by pair with
+ *      what this frame's changes call for;
  *   2. the frame's changes are applied to the scene copy in file order
  *      (a move, a rotation, add, remove, a material); a series of changes
  *      to one object is recorded as one removal from where it was and one
@@ -26,7 +27,9 @@
  *      correction, propagated by the shots); removed elements drop to 0
  *      and the energy they had shot is taken back by their redistribution
  *      shots (dF_ij = -F_ij);
- *   6. shots (animshoot.c) until converged, or for --steps K shots.
+ *   6. shots (animshoot.c) until converged, or for --steps K shots;
+ *   7. a frame that converges after unconverged ones runs the log's final
+ *      pass (animlog.c) and closes the log.
  * With these rules the state obeys B = E + rho (F S - dF T) per element
  * before the redistribution and B = E + rho F S after it, S = B - dB
  * (George et al. 1990, eq. 2-6), so a converged frame solves the frame's
@@ -80,6 +83,8 @@ void rad_anim_free(rad_anim *a)
     free(a->rho);
     free(a->E);
     free(a->first);
+    free(a->log_obj);
+    free(a->imp);
     free(a);
 }
 
@@ -162,8 +167,10 @@ static rad_status allocate(rad_anim *a, rad_error *err)
     a->present = calloc(n + 1, 1);
     a->elem_object = calloc(n + 1, sizeof *a->elem_object);
     a->obj_present = calloc((size_t)a->scene.nobjects + 1, 1);
+    a->log_obj = calloc((size_t)a->scene.nobjects + 1, 1);
+    a->imp = calloc(n + 1, sizeof *a->imp);
     if (!a->F || !a->B || !a->dB || !a->H || !a->rho || !a->E || !a->first || !a->present ||
-        !a->elem_object || !a->obj_present)
+        !a->elem_object || !a->obj_present || !a->log_obj || !a->imp)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %zu elements", n);
     return RAD_OK;
 }
@@ -203,12 +210,12 @@ static rad_status fill_frame0(rad_anim *a, rad_anim_report *rep, rad_error *err)
     return st;
 }
 
-rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_anim_options *opt,
-                           rad_anim_report *rep_out, rad_error *err)
+/* The animation at `frame` of `changes` (0: the scene as given), its F
+ * filled as a fresh solve fills it; no radiosity yet. */
+static rad_status setup(rad_anim **out, const rad_scene *scene, const rad_changes *changes,
+                        int frame, const rad_anim_options *opt, rad_anim_report *rep,
+                        rad_error *err)
 {
-    rad_anim_report rep;
-    double t0 = rad_seconds();
-    memset(&rep, 0, sizeof rep);
     *out = NULL;
     rad_anim *a = calloc(1, sizeof *a);
     if (!a)
@@ -217,6 +224,9 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
     if (a->opt.max_shots <= 0)
         a->opt.max_shots = 1000L * (long)rad_scene_element_count(scene) + 100000L;
     rad_status st = copy_scene(&a->scene, scene, err);
+    for (int f = 1; st == RAD_OK && f <= frame; f++)
+        rad_changes_apply(&a->scene, changes, f, NULL);
+    a->frame = a->converged_frame = frame;
     if (st == RAD_OK)
         st = rad_mesh_build(&a->mesh, &a->scene, err);
     a->n = a->mesh.nelements;
@@ -228,8 +238,24 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         a->elem_object[e] = a->scene.surfaces[a->mesh.elements[e].surface].object;
     if (st == RAD_OK) {
         element_state(a, NULL);
-        st = fill_frame0(a, &rep, err);
+        st = fill_frame0(a, rep, err);
     }
+    if (st != RAD_OK) {
+        rad_anim_free(a);
+        return st;
+    }
+    *out = a;
+    return RAD_OK;
+}
+
+rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_anim_options *opt,
+                           rad_anim_report *rep_out, rad_error *err)
+{
+    rad_anim_report rep;
+    double t0 = rad_seconds();
+    memset(&rep, 0, sizeof rep);
+    rad_anim *a;
+    rad_status st = setup(&a, scene, NULL, 0, opt, &rep, err);
     rep.t_formfactor = rad_seconds() - t0;
     if (st == RAD_OK) { /* shooting from B = dB = E (Cohen et al. 1988) */
         memcpy(a->B, a->E, sizeof *a->B * (size_t)a->n * RAD_BANDS);
@@ -238,6 +264,7 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         double t1 = rad_seconds();
         st = rad_anim_shoot(a, a->opt.partial_start, &rep, err);
         rep.t_shoot = rad_seconds() - t1;
+        a->log_open = !rep.converged;
     }
     rep.t_total = rad_seconds() - t0;
     if (rep_out)
@@ -250,7 +277,82 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
     return RAD_OK;
 }
 
+rad_status rad_anim_resume(rad_anim **out, const rad_scene *scene, const rad_changes *changes,
+                           FILE *log, const char *logname, const rad_anim_options *opt,
+                           rad_error *err)
+{
+    rad_anim_report rep;
+    int line = 0, frame, n;
+    memset(&rep, 0, sizeof rep);
+    *out = NULL;
+    rad_status st = rad_anim_log_header(log, logname, &line, &frame, &n, err);
+    if (st == RAD_OK && frame > changes->nframes)
+        st = rad_fail(err, RAD_ERR_PARSE, "%s:2: frame %d is beyond the change file's %d",
+                      logname, frame, changes->nframes);
+    if (st == RAD_OK && (double)n != rad_scene_element_count(scene))
+        st = rad_fail(err, RAD_ERR_PARSE, "%s:3: %d elements, the scene has %.0f", logname, n,
+                      (double)rad_scene_element_count(scene));
+    rad_anim *a = NULL;
+    if (st == RAD_OK)
+        st = setup(&a, scene, changes, frame, opt, &rep, err);
+    if (st == RAD_OK)
+        st = rad_anim_log_body(a, log, logname, &line, err);
+    if (st != RAD_OK) {
+        rad_anim_free(a);
+        return st;
+    }
+    *out = a;
+    return RAD_OK;
+}
+
 /* ---- later frames -------------------------------------------------------- */
+
+/* With the paper's importance: the samples of the objects the frame
+ * changed, where they were (old mesh) and where they are (new mesh);
+ * their count.  `out` holds 2 n. */
+static int collect_samples(const rad_anim *a, const rad_mesh *now, const unsigned char *dirty,
+                           const unsigned char *old_in, rad_anim_sample *out)
+{
+    int ns = 0;
+    for (int e = 0; e < a->n; e++) {
+        const int o = a->elem_object[e];
+        if (o < 0 || !dirty[o])
+            continue;
+        const rad_element *was = &a->mesh.elements[e], *is = &now->elements[e];
+        if (old_in[o])
+            out[ns++] = (rad_anim_sample){was->centroid, was->normal, was->area};
+        if (a->obj_present[o])
+            out[ns++] = (rad_anim_sample){is->centroid, is->normal, is->area};
+    }
+    return ns;
+}
+
+/* Step 7: a frame that converged after unconverged ones runs the log's
+ * final pass, shoots what it found, and the log starts anew here. */
+static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
+{
+    if (!rep->converged) {
+        a->log_open = 1;
+        return RAD_OK;
+    }
+    if (a->log_open) {
+        rad_anim_report more;
+        memset(&more, 0, sizeof more);
+        rad_anim_log_pass(a);
+        rep->log_pass = 1;
+        rep->log_residual = a->log_residual;
+        rad_status st = rad_anim_shoot(a, 0, &more, err);
+        if (st != RAD_OK)
+            return st;
+        rep->shots += more.shots;
+        rep->propagation_shots += more.propagation_shots;
+        rep->unshot = more.unshot;
+    }
+    a->log_open = 0;
+    a->converged_frame = a->frame;
+    memset(a->log_obj, 0, (size_t)a->scene.nobjects);
+    return RAD_OK;
+}
 
 rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *rep,
                          rad_error *err)
@@ -260,12 +362,14 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     memset(rep, 0, sizeof *rep);
     if (next > ch->nframes)
         return rad_fail(err, RAD_ERR_INVALID, "there is no frame %d", next);
-    rad_anim_flush(a); /* step 1 */
     unsigned char *dirty = calloc((size_t)no + 1, 1), *old_in = malloc((size_t)no + 1);
     unsigned char *changed = malloc((size_t)a->n + 1);
     rad_vec3 *lo = malloc(sizeof *lo * (size_t)(no + 1)), *hi = malloc(sizeof *hi * (size_t)(no + 1));
     rad_mesh mesh;
-    rad_status st = dirty && old_in && changed && lo && hi
+    const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
+    rad_anim_sample *smp = paper ? malloc(sizeof *smp * (2 * (size_t)a->n + 1)) : NULL;
+    int ns = 0;
+    rad_status st = dirty && old_in && changed && lo && hi && (smp || !paper)
                         ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     for (int o = 0; st == RAD_OK && o < no; o++) {
         old_in[o] = a->obj_present[o];
@@ -273,14 +377,17 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     }
     if (st == RAD_OK) { /* step 2 */
         rad_changes_apply(&a->scene, ch, next, dirty);
-        for (int o = 0; o < no; o++)
+        for (int o = 0; o < no; o++) {
             a->obj_present[o] = !a->scene.objects[o].absent;
+            a->log_obj[o] |= dirty[o];
+        }
     }
     if (st == RAD_OK && (st = rad_mesh_build(&mesh, &a->scene, err)) == RAD_OK) { /* 3 */
         if (mesh.nelements != a->n) {
             rad_mesh_free(&mesh);
             st = rad_fail(err, RAD_ERR_INVALID, "the mesh changed its element count");
         } else {
+            ns = paper ? collect_samples(a, &mesh, dirty, old_in, smp) : 0;
             rad_mesh_free(&a->mesh);
             a->mesh = mesh;
         }
@@ -298,8 +405,13 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     rep->t_formfactor = rad_seconds() - t0;
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
+        if (paper)
+            rad_anim_importance(a, dirty, smp, ns);
         double t1 = rad_seconds();
-        st = rad_anim_shoot(a, 1, rep, err); /* 6 */
+        const int partial = !(a->opt.converge_last && next == ch->nframes);
+        st = rad_anim_shoot(a, partial, rep, err); /* 6 */
+        if (st == RAD_OK)
+            st = close_log(a, rep, err); /* 7 */
         rep->t_shoot = rad_seconds() - t1;
     }
     rep->t_total = rad_seconds() - t0;
@@ -308,6 +420,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     free(changed);
     free(lo);
     free(hi);
+    free(smp);
     return st;
 }
 

@@ -25,8 +25,10 @@
  * solve of the frame's scene.  Pairs with an absent element become 0.
  *
  * In place: the new values overwrite F; what the redistribution needs is
- * dF = F(t) - F(t-1) on the changed pairs only, kept in compressed columns
- * (animint.h) with T = B - dB, what each shooter had shot.  No second n x n
+ * dF T on the changed pairs only (dF = F(t) - F(t-1), T = B - dB what
+ * each shooter had shot), kept in compressed columns (animint.h) and
+ * merged with what earlier partial frames left (the change log,
+ * animlog.c).  No second n x n
  * matrix is ever made: memory is F, the pair lists and O(n).
  */
 #include <config.h>
@@ -48,8 +50,7 @@ void rad_redist_free(rad_redist *rd)
 {
     free(rd->start);
     free(rd->recv);
-    free(rd->dF);
-    free(rd->T);
+    free(rd->amt);
     free(rd->power);
     free(rd->epow);
     free(rd->done);
@@ -291,70 +292,131 @@ static double entry_power(const rad_anim *a, int j, size_t k)
     const size_t n = (size_t)a->n;
     const int i = rd->recv[k];
     double p = 0;
+    (void)j;
     for (int b = 0; b < RAD_BANDS; b++)
-        p += fabs(rd->dF[k] * a->rho[i + b * n] * rd->T[j + b * n]);
+        p += fabs(a->rho[i + b * n] * rd->amt[3 * k + b]);
     return a->mesh.elements[i].area * p;
 }
 
 /* Does shooter j carry anything to redistribute (T_j != 0)? */
-static int has_shot(const rad_anim *a, int j)
+static int has_shot(const double *T, size_t n, int j)
 {
-    const size_t n = (size_t)a->n;
-    return a->rd.T[j] != 0 || a->rd.T[j + n] != 0 || a->rd.T[j + 2 * n] != 0;
+    return T[j] != 0 || T[j + n] != 0 || T[j + 2 * n] != 0;
 }
 
-/* Write the new values into F and keep dF in compressed columns: entry
- * (receiver i, shooter j) when i is present now and j had shot. */
-static rad_status store(rad_anim *a, const pair_list *pl, const double *fij, const double *fji,
+/* The entries' count per column: what the old log still holds (pending
+ * entries of `old`) and the new pairs (i present, j had shot, dF != 0). */
+static void count_entries(const rad_anim *a, const rad_redist *old, const double *T,
+                          const pair_list *pl, const double *fij, const double *fji,
+                          size_t *count, rad_anim_report *rep)
+{
+    const size_t n = (size_t)a->n;
+    for (size_t j = 0; old->start && j < n; j++)
+        for (size_t k = old->start[j]; k < old->start[j + 1]; k++)
+            count[j] += !old->done[k] && a->present[old->recv[k]];
+    for (size_t k = 0; k < pl->n; k++) {
+        const int i = pl->pi[k], j = pl->pj[k];
+        const double dij = fij[k] - a->F[i + j * n], dji = fji[k] - a->F[j + i * n];
+        rep->pairs_changed += dij != 0 || dji != 0;
+        count[j] += dij != 0 && a->present[i] && has_shot(T, n, j);
+        count[i] += dji != 0 && a->present[j] && has_shot(T, n, i);
+    }
+}
+
+static void put(rad_redist *rd, size_t *at, int i, const double x[RAD_BANDS])
+{
+    rd->recv[*at] = i;
+    for (int b = 0; b < RAD_BANDS; b++)
+        rd->amt[3 * *at + b] = x[b];
+    (*at)++;
+}
+
+/* One entry per pair: the amounts a column holds twice for one receiver
+ * are summed (the log's "one remove and one add" per pair, Fig. 5). */
+static void merge_columns(rad_redist *rd, size_t n, long *pos)
+{
+    size_t out = 0;
+    for (size_t j = 0; j < n; j++) {
+        const size_t lo = rd->start[j], hi = rd->start[j + 1], first = out;
+        rd->start[j] = out;
+        for (size_t k = lo; k < hi; k++) {
+            const int i = rd->recv[k];
+            if (pos[i] >= 0) {
+                for (int b = 0; b < RAD_BANDS; b++)
+                    rd->amt[3 * (size_t)pos[i] + b] += rd->amt[3 * k + b];
+                continue;
+            }
+            pos[i] = (long)out;
+            put(rd, &out, i, &rd->amt[3 * k]);
+        }
+        for (size_t k = first; k < out; k++)
+            pos[rd->recv[k]] = -1;
+    }
+    rd->start[n] = out;
+}
+
+/* Write the new values into F and keep, in compressed columns, the old
+ * pending amounts and the new ones dF_ij T_j (receiver i present now, j
+ * had shot), merged per pair. */
+static rad_status store(rad_anim *a, const rad_redist *old, const double *T,
+                        const pair_list *pl, const double *fij, const double *fji,
                         rad_anim_report *rep, rad_error *err)
 {
     rad_redist *rd = &a->rd;
     const size_t n = (size_t)a->n;
     size_t *count = calloc(n + 1, sizeof *count), total = 0;
-    if (!count)
+    long *pos = malloc(sizeof *pos * (n + 1));
+    if (!count || !pos) {
+        free(count);
+        free(pos);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    for (size_t k = 0; k < pl->n; k++) {
-        const int i = pl->pi[k], j = pl->pj[k];
-        const double dij = fij[k] - a->F[i + j * n], dji = fji[k] - a->F[j + i * n];
-        rep->pairs_changed += dij != 0 || dji != 0;
-        count[j] += dij != 0 && a->present[i] && has_shot(a, j);
-        count[i] += dji != 0 && a->present[j] && has_shot(a, i);
     }
+    count_entries(a, old, T, pl, fij, fji, count, rep);
     for (size_t j = 0; j < n; j++) {
         rd->start[j] = total;
         total += count[j];
         count[j] = rd->start[j];
+        pos[j] = -1;
     }
     rd->start[n] = total;
     rd->recv = malloc(sizeof *rd->recv * (total + 1));
-    rd->dF = malloc(sizeof *rd->dF * (total + 1));
-    if (!rd->recv || !rd->dF) {
+    rd->amt = malloc(sizeof *rd->amt * RAD_BANDS * (total + 1));
+    if (!rd->recv || !rd->amt) {
         free(count);
+        free(pos);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the redistribution");
     }
+    for (size_t j = 0; old->start && j < n; j++)
+        for (size_t k = old->start[j]; k < old->start[j + 1]; k++)
+            if (!old->done[k] && a->present[old->recv[k]])
+                put(rd, &count[j], old->recv[k], &old->amt[3 * k]);
     for (size_t k = 0; k < pl->n; k++) {
         const int i = pl->pi[k], j = pl->pj[k];
         const double dij = fij[k] - a->F[i + j * n], dji = fji[k] - a->F[j + i * n];
-        if (dij != 0 && a->present[i] && has_shot(a, j)) {
-            rd->recv[count[j]] = i;
-            rd->dF[count[j]++] = dij;
+        if (dij != 0 && a->present[i] && has_shot(T, n, j)) { /* George et al. 1990, eq. 5 */
+            const double x[RAD_BANDS] = {dij * T[j], dij * T[j + n], dij * T[j + 2 * n]};
+            put(rd, &count[j], i, x);
         }
-        if (dji != 0 && a->present[j] && has_shot(a, i)) {
-            rd->recv[count[i]] = j;
-            rd->dF[count[i]++] = dji;
+        if (dji != 0 && a->present[j] && has_shot(T, n, i)) {
+            const double x[RAD_BANDS] = {dji * T[i], dji * T[i + n], dji * T[i + 2 * n]};
+            put(rd, &count[i], j, x);
         }
         a->F[i + j * n] = fij[k];
         a->F[j + i * n] = fji[k];
     }
+    merge_columns(rd, n, pos);
     free(count);
+    free(pos);
     return RAD_OK;
 }
 
 /* The entries by receiver, the powers and the pending counts. */
-static rad_status index_entries(rad_anim *a, rad_error *err)
+rad_status rad_anim_redist_index(rad_anim *a, rad_error *err)
 {
     rad_redist *rd = &a->rd;
     const size_t n = (size_t)a->n, total = rd->start[n];
+    if (!rd->power && !(rd->power = calloc(n + 1, sizeof *rd->power)))
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the redistribution");
     rd->epow = malloc(sizeof *rd->epow * (total + 1));
     rd->done = calloc(total + 1, 1);
     rd->rstart = calloc(n + 1, sizeof *rd->rstart);
@@ -389,22 +451,28 @@ static rad_status index_entries(rad_anim *a, rad_error *err)
     return RAD_OK;
 }
 
-/* rd: T = B - dB now, then the columns of dF, their powers. */
+/* rd: T = B - dB now, the old log's pending amounts and the new columns
+ * of dF T, their powers.  Removed elements' old entries are dropped:
+ * they hold nothing to receive (B = H = 0). */
 static rad_status start_redist(rad_anim *a, const pair_list *pl, const double *fij,
                                const double *fji, rad_anim_report *rep, rad_error *err)
 {
-    rad_redist *rd = &a->rd;
+    rad_redist old = a->rd, *rd = &a->rd;
     const size_t n = (size_t)a->n;
-    rad_redist_free(rd);
+    memset(rd, 0, sizeof *rd);
+    double *T = malloc(sizeof *T * n * RAD_BANDS);
     rd->start = malloc(sizeof *rd->start * (n + 1));
-    rd->T = malloc(sizeof *rd->T * n * RAD_BANDS);
     rd->power = calloc(n, sizeof *rd->power);
-    if (!rd->start || !rd->T || !rd->power)
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the redistribution");
-    for (size_t k = 0; k < n * RAD_BANDS; k++)
-        rd->T[k] = a->B[k] - a->dB[k];
-    rad_status st = store(a, pl, fij, fji, rep, err);
-    return st == RAD_OK ? index_entries(a, err) : st;
+    rad_status st = T && rd->start && rd->power
+                        ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory for the "
+                                            "redistribution");
+    for (size_t k = 0; st == RAD_OK && k < n * RAD_BANDS; k++)
+        T[k] = a->B[k] - a->dB[k];
+    if (st == RAD_OK)
+        st = store(a, &old, T, pl, fij, fji, rep, err);
+    free(T);
+    rad_redist_free(&old);
+    return st == RAD_OK ? rad_anim_redist_index(a, err) : st;
 }
 
 rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,

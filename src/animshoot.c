@@ -38,9 +38,11 @@
  * emission changed shoot first; then strategy 1 takes every
  * redistribution step (largest pending power first, shooter or receiver:
  * the exact energy toward and away from the change, which the paper's
- * importance estimates from sample points) and then propagates; strategy
- * 2 takes at each step the larger of the largest pending redistribution
- * and the largest unshot power.
+ * importance estimates from sample points; with opt.importance PAPER,
+ * shooters only, in order of that estimate, animimportance.c) and then
+ * propagates; strategy 2 takes at each step the larger of the largest
+ * pending redistribution (power or estimate) and the largest unshot
+ * power.
  */
 #include <config.h>
 
@@ -73,7 +75,7 @@ double rad_anim_emitted(const rad_anim *a)
 }
 
 /* Receiver i gets x (per band) of gathered radiosity. */
-static inline void receive(rad_anim *a, int i, const double x[RAD_BANDS])
+void rad_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS])
 {
     const size_t n = (size_t)a->n;
     for (int b = 0; b < RAD_BANDS; b++) {
@@ -100,7 +102,7 @@ static double propagate(rad_anim *a, int j)
         const double f = col[i];
         if (f != 0) {
             double x[RAD_BANDS] = {f * d[0], f * d[1], f * d[2]};
-            receive(a, i, x);
+            rad_anim_receive(a, i, x);
         }
     }
     return p * a->mesh.elements[j].area;
@@ -115,10 +117,10 @@ static double apply_entry(rad_anim *a, int j, size_t k)
     const int i = rd->recv[k];
     double x[RAD_BANDS], p = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
-        x[b] = rd->dF[k] * rd->T[j + b * n];
+        x[b] = rd->amt[3 * k + b]; /* dF_ij T_j, George et al. 1990, eq. 5 */
         p += a->mesh.elements[i].area * a->rho[i + b * n] * x[b];
     }
-    receive(a, i, x);
+    rad_anim_receive(a, i, x);
     rd->done[k] = 1;
     rd->npending--;
     rd->left -= rd->epow[k];
@@ -169,13 +171,6 @@ static double gather(rad_anim *a, int i)
     return p;
 }
 
-void rad_anim_flush(rad_anim *a)
-{
-    for (int j = 0; j < a->n && a->rd.npending > 0; j++)
-        if (a->rd.ncol[j] > 0)
-            redistribute(a, j);
-}
-
 /* The element with the largest unshot power, or -1 when all are 0. */
 static int largest_unshot(const rad_anim *a, double *power)
 {
@@ -219,9 +214,10 @@ static int choose(rad_anim *a, int *kind)
         }
     const int u = largest_unshot(a, &pu);
     int r = -1, g = -1;
+    const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
     if (a->rd.npending > 0) {
-        r = largest_pending(a->rd.ncol, a->rd.power, a->n, &pr);
-        if (a->opt.gather)
+        r = largest_pending(a->rd.ncol, paper ? a->imp : a->rd.power, a->n, &pr);
+        if (a->opt.gather && !paper)
             g = largest_pending(a->rd.nrow, a->rd.rpower, a->n, &pg);
     }
     const int red = g >= 0 && pg > pr ? g : r;

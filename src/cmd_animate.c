@@ -38,7 +38,12 @@ enum {
     OPT_WIDTH,
     OPT_HEIGHT,
     OPT_FROM_SCRATCH,
-    OPT_NO_GATHER
+    OPT_NO_GATHER,
+    OPT_LOG,
+    OPT_RESUME,
+    OPT_CONVERGE_LAST,
+    OPT_ERRORS,
+    OPT_IMPORTANCE
 };
 
 static void help(void)
@@ -74,6 +79,21 @@ static void help(void)
            "                          is redistributed to it in one step)\n"
            "      --strategy 1|2      1: redistribute, then propagate (default);\n"
            "                          2: the larger shot first (the paper's Fig. 4)\n"
+           "      --importance exact|paper  the order of redistribution shots: exact\n"
+           "                          (default) by the power each has pending, known\n"
+           "                          here from the recomputed form factors; paper:\n"
+           "                          by the paper's estimate of the energy toward\n"
+           "                          the changed objects from sample points on\n"
+           "                          them (section 4), shooters only\n"
+           "      --converge-last     with --steps, converge the last frame all the\n"
+           "                          same: the change log's final pass sets right\n"
+           "                          what the partial frames left\n"
+           "      --log FILE          the change log, written at the end of every\n"
+           "                          frame: the state the next frame needs\n"
+           "                          (radiosity-files(5))\n"
+           "      --resume FILE       continue an interrupted animation from its\n"
+           "                          --log FILE (same SCENE, CHANGES and options):\n"
+           "                          the frames after the log's frame are run\n"
            "      --trace FILE        one TSV row per shot: frame step shooter kind\n"
            "                          sign power unshot redistribution_left error\n"
            "                          error_top1 gather\n"
@@ -82,6 +102,9 @@ static void help(void)
            "                          per shot and per frame, overall and on the 1%%\n"
            "                          of patches the frame changes most (there\n"
            "                          relative to the change: 1 = not updated)\n"
+           "      --errors FILE       one TSV row per frame: frame shots seconds\n"
+           "                          pairs_recomputed pairs_share error error_top1\n"
+           "                          (the eq. 7 errors; implies --reference)\n"
            "      --report FILE       per-frame figures as JSON (shots, pairs\n"
            "                          recomputed and their share, times, errors;\n"
            "                          with --reference the fresh solve's time)\n"
@@ -90,6 +113,8 @@ static void help(void)
            "Examples:\n"
            "  radiosity animate --mesh 2x2 data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
            "  radiosity animate --steps 50 --strategy 2 --reference data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --steps 3 --converge-last --log anim.log --errors anim-errors.tsv data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --resume anim.log --steps 3 --converge-last data/cube-on-table.scene data/cube-on-table.changes\n"
            "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv --frames frame%%02d.png data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
@@ -100,7 +125,7 @@ static void help(void)
 typedef struct anim_args {
     cli_common common;
     rad_anim_options opt;
-    const char *frames, *elements, *trace, *report;
+    const char *frames, *elements, *trace, *report, *log, *resume, *errors;
     int reference, width, height;
 } anim_args;
 
@@ -182,6 +207,26 @@ static int parse_option(anim_args *a, int opt, const char *arg)
     case OPT_NO_GATHER:
         a->opt.gather = 0;
         return 0;
+    case OPT_IMPORTANCE:
+        if (strcmp(arg, "exact") != 0 && strcmp(arg, "paper") != 0) {
+            cli_error("--importance is exact or paper, not '%s'", arg);
+            return 2;
+        }
+        a->opt.importance = arg[0] == 'p' ? RAD_ANIM_IMPORTANCE_PAPER : RAD_ANIM_IMPORTANCE_EXACT;
+        return 0;
+    case OPT_CONVERGE_LAST:
+        a->opt.converge_last = 1;
+        return 0;
+    case OPT_LOG:
+        a->log = arg;
+        return 0;
+    case OPT_RESUME:
+        a->resume = arg;
+        return 0;
+    case OPT_ERRORS:
+        a->errors = arg;
+        a->reference = 1;
+        return 0;
     }
     return cli_common_option(&a->common, opt, arg) == 0 ? 0 : 2;
 }
@@ -191,6 +236,7 @@ static int parse_option(anim_args *a, int opt, const char *arg)
 /* One frame's figures for the summary and the report. */
 typedef struct frame_row {
     rad_anim_report rep;
+    int ran;                    /* run here (not before a --resume) */
     double error, error_top;    /* eq. 7 at the end of the frame, NaN without --reference */
     double t_reference;         /* seconds of the frame's fresh solve (--reference) */
 } frame_row;
@@ -346,6 +392,11 @@ static int picture(anim_run *r, const char *path)
     return rc;
 }
 
+static int w_log(FILE *out, const void *ctx)
+{
+    return rad_anim_log_write(out, ctx) == RAD_OK ? 0 : -1;
+}
+
 static void pattern_path(char *buf, size_t size, const char *pattern, int frame)
 {
 #pragma GCC diagnostic push
@@ -361,6 +412,7 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
     char path[4096];
     frame_row *row = &r->frames[f];
     row->rep = *rep;
+    row->ran = 1;
     row->error = row->error_top = row->t_reference = NAN;
     if (r->Bref) {
         row->t_reference = r->t_reference;
@@ -380,6 +432,8 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
         if (picture(r, path))
             return 1;
     }
+    if (r->args->log && cli_write_atomic(r->args->log, w_log, r->anim))
+        return 1;
     if (!r->args->common.quiet) {
         fprintf(stderr, "frame %d: %ld shots (%ld redistribution), %s, %.0f of %.0f pairs "
                 "recomputed (%.1f%%), %.3f s", f, rep->shots, rep->redistribution_shots,
@@ -422,6 +476,27 @@ static int w_trace(FILE *out, const void *ctx)
     return ferror(out) ? -1 : 0;
 }
 
+/* --errors: one row per frame run (radiosity-files(5), "Animation errors"). */
+static int w_errors(FILE *out, const void *ctx)
+{
+    const anim_run *r = ctx;
+    fputs("frame\tshots\tseconds\tpairs_recomputed\tpairs_share\terror\terror_top1\n", out);
+    for (int f = 0; f <= r->changes.nframes; f++) {
+        const frame_row *w = &r->frames[f];
+        if (!w->ran)
+            continue;
+        fprintf(out, "%d\t%ld\t%.17g\t%.17g\t", f, w->rep.shots, w->rep.t_total,
+                w->rep.pairs_recomputed);
+        tsv_num(out, w->rep.pairs_total > 0 ? w->rep.pairs_recomputed / w->rep.pairs_total : 0);
+        fputc('\t', out);
+        tsv_num(out, w->error);
+        fputc('\t', out);
+        tsv_num(out, w->error_top);
+        fputc('\n', out);
+    }
+    return ferror(out) ? -1 : 0;
+}
+
 static void json_num(FILE *out, const char *key, double v, const char *sep)
 {
     if (isfinite(v))
@@ -439,9 +514,13 @@ static int w_report(FILE *out, const void *ctx)
     fprintf(out, "  \"strategy\": %d,\n  \"steps\": %ld,\n  ", r->args->opt.strategy,
             r->args->opt.steps);
     json_num(out, "tolerance", r->args->opt.tolerance, ",\n  \"frames\": [\n");
+    int sep = 0;
     for (int f = 0; f <= r->changes.nframes; f++) {
         const frame_row *w = &r->frames[f];
         const rad_anim_report *p = &w->rep;
+        if (!w->ran)
+            continue; /* before a --resume */
+        fputs(sep++ ? ",\n" : "", out);
         fprintf(out, "    {\"frame\": %d, \"shots\": %ld, \"redistribution_shots\": %ld, "
                 "\"propagation_shots\": %ld, \"converged\": %s, ", f, p->shots,
                 p->redistribution_shots, p->propagation_shots, p->converged ? "true" : "false");
@@ -457,10 +536,11 @@ static int w_report(FILE *out, const void *ctx)
         json_num(out, "t_total", p->t_total, ", ");
         json_num(out, "t_reference", w->t_reference, ", ");
         json_num(out, "error_eq7", w->error, ", ");
-        json_num(out, "error_eq7_top1", w->error_top, "}");
-        fputs(f < r->changes.nframes ? ",\n" : "\n", out);
+        json_num(out, "error_eq7_top1", w->error_top, ", ");
+        fprintf(out, "\"log_pass\": %s, ", p->log_pass ? "true" : "false");
+        json_num(out, "log_residual", p->log_residual, "}");
     }
-    fputs("  ]\n}\n", out);
+    fputs("\n  ]\n}\n", out);
     return ferror(out) ? -1 : 0;
 }
 
@@ -471,8 +551,9 @@ static int check_paths(const anim_run *r)
 {
     const anim_args *a = r->args;
     char path[4096];
-    cli_output o[2] = {{a->trace, w_trace, r}, {a->report, w_report, r}};
-    if (cli_outputs_check(o, 2))
+    cli_output o[4] = {{a->trace, w_trace, r}, {a->report, w_report, r},
+                       {a->errors, w_errors, r}, {a->log, w_log, NULL}};
+    if (cli_outputs_check(o, 4))
         return 1;
     for (int f = 0; f <= r->changes.nframes; f++) {
         const char *pat[2] = {a->elements, a->frames};
@@ -553,23 +634,60 @@ static int reference_frame(anim_run *r, int f)
     return rc;
 }
 
+/* --resume: the animation from its log; *first is the next frame. */
+static int resume(anim_run *r, int *first)
+{
+    rad_error err;
+    anim_args *a = r->args;
+    FILE *in = fopen(a->resume, "r");
+    if (!in) {
+        cli_error("%s: cannot read the log", a->resume);
+        return 1;
+    }
+    rad_status st = rad_anim_resume(&r->anim, &r->scene, &r->changes, in, a->resume, &a->opt,
+                                    &err);
+    fclose(in);
+    if (st != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    const int f = rad_anim_frame(r->anim);
+    *first = f + 1;
+    if (!a->common.quiet)
+        fprintf(stderr, "resumed from %s after frame %d of %d%s\n", a->resume, f,
+                r->changes.nframes, f == r->changes.nframes ? ": nothing left to do" : "");
+    if (!a->reference)
+        return 0;
+    for (int k = 1; k < f; k++) /* the frames before the log's, unsolved */
+        rad_changes_apply(&r->fscene, &r->changes, k, NULL);
+    return reference_frame(r, f);
+}
+
 static int animate(anim_run *r)
 {
     rad_error err;
     rad_anim_report rep;
     anim_args *a = r->args;
+    int first = 1;
     a->opt.ff = a->common.ff;
     a->opt.on_shot = record_shot;
     a->opt.shot_user = r;
-    if (a->reference && (reference_setup(r) || reference_frame(r, 0)))
+    if (a->reference && reference_setup(r))
         return 1;
-    if (rad_anim_create(&r->anim, &r->scene, &a->opt, &rep, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return 1;
+    if (a->resume) {
+        if (resume(r, &first))
+            return 1;
+    } else {
+        if (a->reference && reference_frame(r, 0))
+            return 1;
+        if (rad_anim_create(&r->anim, &r->scene, &a->opt, &rep, &err) != RAD_OK) {
+            cli_error_rec(&err);
+            return 1;
+        }
+        if (frame_done(r, &rep))
+            return 1;
     }
-    if (frame_done(r, &rep))
-        return 1;
-    for (int f = 1; f <= r->changes.nframes; f++) {
+    for (int f = first; f <= r->changes.nframes; f++) {
         if (a->reference && reference_frame(r, f))
             return 1;
         if (rad_anim_next(r->anim, &r->changes, &rep, &err) != RAD_OK) {
@@ -607,8 +725,9 @@ static int run(anim_args *a, const char *scene, const char *changes)
     r.args = a;
     int status = 1;
     if (!load(&r, scene, changes) && !check_paths(&r) && !animate(&r)) {
-        cli_output o[2] = {{a->trace, w_trace, &r}, {a->report, w_report, &r}};
-        status = cli_outputs_write(o, 2) ? 1 : 0;
+        cli_output o[3] = {{a->trace, w_trace, &r}, {a->report, w_report, &r},
+                           {a->errors, w_errors, &r}};
+        status = cli_outputs_write(o, 3) ? 1 : 0;
     }
     run_free(&r);
     return status;
@@ -627,6 +746,11 @@ int cmd_animate(int argc, char **argv)
         {"reference", no_argument, NULL, OPT_REFERENCE},
         {"from-scratch", no_argument, NULL, OPT_FROM_SCRATCH},
         {"no-gather", no_argument, NULL, OPT_NO_GATHER},
+        {"converge-last", no_argument, NULL, OPT_CONVERGE_LAST},
+        {"importance", required_argument, NULL, OPT_IMPORTANCE},
+        {"log", required_argument, NULL, OPT_LOG},
+        {"resume", required_argument, NULL, OPT_RESUME},
+        {"errors", required_argument, NULL, OPT_ERRORS},
         {"width", required_argument, NULL, OPT_WIDTH},
         {"height", required_argument, NULL, OPT_HEIGHT},
         CLI_COMMON_LONGOPTS,

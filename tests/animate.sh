@@ -183,4 +183,67 @@ ok $? "--frames without an integer conversion is a usage error"
 # a solve of a scene with an absent object leaves it out
 n=$(awk 'END { print NR - 1 }' f0.tsv)
 ok $([ "$n" -eq 78 ]; echo $?) "solve leaves the absent shade out ($n elements: 54 walls, 24 box)"
+# the change log (George et al. 1990, Fig. 5): partial frames carry their
+# pending redistribution on; the frame that converges after them equals a
+# fresh solve of its scene
+"$RADIOSITY" animate -q --steps 3 --converge-last --elements 'l%d.tsv' --errors errs.tsv \
+  --log all.log room.scene all.changes 2> err; rc=$?
+ok $rc "--steps 3 --converge-last runs (exit $rc)"
+r=$(same l5.tsv f5.tsv 1e-9); ok $? "--steps 3, last frame converged: equals a fresh solve within 1e-9: $r"
+printf 'frame\nmove box 0.125 0 0\nframe\nmove box 0.125 0 0\nframe\nmove box 0.125 0 0\n' > moves.changes
+xform box move 0.375 0 0 < room.scene > m3.scene
+"$RADIOSITY" solve -q m3.scene --elements m3.tsv 2> /dev/null
+"$RADIOSITY" animate -q --steps 2 --converge-last --elements 'mv%d.tsv' room.scene moves.changes 2> /dev/null
+r=$(same mv3.tsv m3.tsv 1e-9); ok $? "three moves, 2 shots each, then converged: a fresh solve within 1e-9: $r"
+head -n 1 errs.tsv | grep -q '^frame	shots	seconds	pairs_recomputed	pairs_share	error	error_top1$'
+ok $? "--errors: the header"
+awk -F '\t' 'NR > 1 { n++; if ($1 != n - 1) bad = 1 } END { exit !(n == 6 && !bad) }' errs.tsv
+ok $? "--errors: one row per frame"
+awk -F '\t' 'NR == 7 { exit !($2 > 0 && $6 >= 0 && $6 <= 1e-9) } NR > 1 && NR < 7 && $2 == 3 && !($6 > 0) { exit 1 }' errs.tsv
+ok $? "--errors: partial frames have an error, the converged last frame none (<= 1e-9, as the fresh solve above)"
+
+# an interrupted animation resumes from its log: the frames after equal
+# the uninterrupted run's within 1e-10
+awk '/^frame/ { n++ } n <= 2' all.changes > first2.changes
+"$RADIOSITY" animate -q --steps 3 --log two.log room.scene first2.changes 2> /dev/null
+ok $? "the first two frames, with --log"
+# the log after two partial frames holds pending redistribution, one
+# entry per pair (the series of changes merged), and the final pass ran
+awk '$1 == "pending" { m = $2; on = 1; next } $1 == "end" { on = 0 }
+     on { k++; if (seen[$1 " " $2]++) dup = 1 }
+     END { exit !(m > 0 && k == m && !dup) }' two.log
+ok $? "the log after partial frames: pending entries, one per pair"
+"$RADIOSITY" animate -q --steps 3 --converge-last --resume two.log --elements 'z%d.tsv' \
+  room.scene all.changes 2> err; rc=$?
+ok $rc "--resume from frame 2 runs (exit $rc)"
+[ ! -e z2.tsv ] && [ -e z3.tsv ]; ok $? "--resume runs the frames after the log's only"
+for f in 3 4 5; do
+  r=$(same "z$f.tsv" "l$f.tsv" 1e-10); ok $? "resumed frame $f equals the uninterrupted run's within 1e-10: $r"
+done
+r=$(same z5.tsv f5.tsv 1e-9); ok $? "the resumed last frame equals a fresh solve within 1e-9: $r"
+"$RADIOSITY" animate -q --resume room.scene room.scene all.changes 2> err; rc=$?
+[ $rc -eq 1 ] && grep -q '^radiosity: room.scene:1: not an animation log' err
+ok $? "--resume of a file that is no log: exit $rc, $(head -c 100 err)"
+# the paper's importance estimate orders the shots differently; converged
+# frames are the same fresh solves
+"$RADIOSITY" animate -q --importance paper --elements 'ip%d.tsv' room.scene all.changes 2> err; rc=$?
+ok $rc "--importance paper runs (exit $rc)"
+r=$(same ip1.tsv f1.tsv 1e-9); ok $? "--importance paper: the moved frame equals a fresh solve: $r"
+r=$(same ip3.tsv f3.tsv 1e-9); ok $? "--importance paper: the frame with the shade added equals a fresh solve: $r"
+"$RADIOSITY" animate -q --importance paper --steps 2 --converge-last --elements 'iq%d.tsv' room.scene moves.changes 2> /dev/null
+r=$(same iq3.tsv m3.tsv 1e-9); ok $? "--importance paper, three partial moves then converged: a fresh solve: $r"
+"$RADIOSITY" animate --importance guess room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
+ok $? "--importance guess is a usage error"
+# a damaged log is refused naming its line, before any frame is written
+badlog() { # badlog DESCRIPTION EXPECTED-MESSAGE (the log in bad.log)
+  rm -f y3.tsv
+  "$RADIOSITY" animate -q --resume bad.log --elements 'y%d.tsv' room.scene all.changes 2> err; rc=$?
+  [ $rc -eq 1 ] && grep -q "^radiosity: bad.log:$2" err && [ ! -e y3.tsv ]
+  ok $? "$1: exit $rc, $(head -c 120 err)"
+}
+head -n 50 two.log > bad.log; badlog "a log cut short" "51: the state ends early"
+sed 's/^elements	86$/elements	85/' two.log > bad.log; badlog "another element count" "3: 85 elements, the scene has 86"
+sed '12s/^\([0-9]*	[01]	\)[^	]*/\1x/' two.log > bad.log; badlog "a bad number" "12: expected"
+sed 's/^changed	box$/changed	crate/' two.log > bad.log; badlog "an unknown object" "7: unknown object"
+sed 's/^frame	2$/frame	9/' two.log > bad.log; badlog "a frame beyond the change file" "2: frame 9 is beyond"
 done_testing

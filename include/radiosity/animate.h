@@ -23,6 +23,8 @@
 #include "../radiosity.h"
 #include "changes.h"
 
+#include <stdio.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -46,6 +48,9 @@ typedef struct rad_anim_shot {
  * "interrupted"). */
 typedef int (*rad_anim_shot_fn)(void *user, const rad_anim_shot *shot);
 
+/* The order of redistribution shots (rad_anim_options.importance). */
+enum { RAD_ANIM_IMPORTANCE_EXACT = 0, RAD_ANIM_IMPORTANCE_PAPER = 1 };
+
 typedef struct rad_anim_options {
     rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
     double tolerance;           /* a frame is converged when its unshot power
@@ -63,6 +68,14 @@ typedef struct rad_anim_options {
     int gather;                 /* 1 (default): a redistribution step may be a
                                    receiver gathering its pending terms;
                                    0: shooters only, as in the paper */
+    int importance;             /* RAD_ANIM_IMPORTANCE_EXACT (default): shooters
+                                   in order of their exact pending power;
+                                   RAD_ANIM_IMPORTANCE_PAPER: of the paper's
+                                   estimate from sample points on the changed
+                                   objects (section 4), shooters only */
+    int converge_last;          /* 1: with steps, the last frame of the change
+                                   file is converged all the same (the log's
+                                   final pass, animlog.c) */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
                                    1000 n + 100000) */
     rad_anim_shot_fn on_shot;   /* may be NULL */
@@ -83,6 +96,9 @@ typedef struct rad_anim_report {
     double pairs_total;         /* n (n - 1) / 2 over present elements */
     double pairs_changed;       /* ... whose F changed */
     double t_formfactor, t_shoot, t_total;  /* wall-clock seconds */
+    int log_pass;               /* 1: the frame converged after unconverged
+                                   ones and ran the change log's final pass */
+    double log_residual;        /* the largest |F S - H| / |F S| it removed */
 } rad_anim_report;
 
 typedef struct rad_anim rad_anim;
@@ -98,6 +114,21 @@ RAD_API rad_status rad_anim_create(rad_anim **anim, const rad_scene *scene,
 RAD_API rad_status rad_anim_next(rad_anim *anim, const rad_changes *changes,
                                  rad_anim_report *rep, rad_error *err);
 RAD_API void rad_anim_free(rad_anim *anim);
+
+/* The change log (animlog.c, George et al. 1990, Fig. 5): the state the
+ * next frame needs, written as text to `out` (RAD_ERR_IO on a write
+ * error).  rad_anim_resume reads it back from `log` (`logname` for
+ * messages, RAD_ERR_PARSE naming its line) for the same scene and change
+ * file, rebuilds the log's frame from them, F afresh, and continues: the
+ * next rad_anim_next brings it to the following frame as the
+ * uninterrupted animation would. */
+RAD_API rad_status rad_anim_log_write(FILE *out, const rad_anim *anim);
+RAD_API rad_status rad_anim_resume(rad_anim **anim, const rad_scene *scene,
+                                   const rad_changes *changes, FILE *log, const char *logname,
+                                   const rad_anim_options *opt, rad_error *err);
+/* The largest relative difference |F S - H| / |F S| the last final pass
+ * of the log removed (0 before any). */
+RAD_API double rad_anim_log_residual(const rad_anim *anim);
 
 /* The current frame number, scene (moved, materials changed), mesh of
  * every surface, presence per element (1 in the scene), and B
