@@ -16,7 +16,7 @@
 # logs) goes to a temporary directory, which it keeps and names at the end;
 # the source tree is only read.
 # Environment: CC (default clang), FUZZ_WORKDIR (default: mktemp -d),
-# FUZZ_HARNESSES (default "scene ply obj vs3 changes"; run one with
+# FUZZ_HARNESSES (default "scene ply obj vs3 changes matrix"; run one with
 # FUZZ_HARNESSES=ply).
 # Exit status: 0 no finding, 1 a finding (crash, sanitizer report, timeout,
 # broken contract), 2 usage or no fuzzing compiler (it says how to get one).
@@ -31,7 +31,7 @@ esac
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 cc=${CC:-clang}
-harnesses=${FUZZ_HARNESSES:-scene ply obj vs3 changes}
+harnesses=${FUZZ_HARNESSES:-scene ply obj vs3 changes matrix}
 work=${FUZZ_WORKDIR:-$(mktemp -d "${TMPDIR:-/tmp}/radiosity-fuzz.XXXXXX")}
 flags="-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined"
 
@@ -54,6 +54,7 @@ sources() {
         ply) echo plyread.c readfile.c scene.c scenebuild.c objread.c vs3read.c readnum.c status.c render.c plot.c atomicfile.c mesh.c ;;
         obj|vs3) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
         changes) echo changeread.c scene.c scenebuild.c scenepresent.c objread.c vs3read.c readnum.c status.c readfile.c ;;
+        matrix) echo ffread.c npyread.c vfread.c readfile.c readnum.c status.c ;;
     esac
 }
 libs() {
@@ -71,8 +72,8 @@ corpus() { case $1 in scene) echo corpus ;; *) echo "corpus-$1" ;; esac; }
 status=0
 for h in $harnesses; do
     case $h in
-        scene|ply|obj|vs3|changes) ;;
-        *) echo "run-fuzz.sh: unknown harness '$h' (scene, ply, obj, vs3 or changes)" >&2; exit 2 ;;
+        scene|ply|obj|vs3|changes|matrix) ;;
+        *) echo "run-fuzz.sh: unknown harness '$h' (scene, ply, obj, vs3, changes or matrix)" >&2; exit 2 ;;
     esac
     mkdir -p "$work/$h/corpus" "$work/$h/artifacts"
     cp "$here/$(corpus "$h")"/* "$work/$h/corpus/"
