@@ -118,8 +118,11 @@ static int pattern_ok(const char *p)
         p++;
         while (*p == '0' || *p == '-' || *p == '+' || *p == ' ')
             p++;
-        while (*p >= '0' && *p <= '9')
-            p++;
+        /* a width of at most 2 digits: %2147483648d overflows printf's int
+         * and names some other file, %4000d outgrows any path */
+        for (int digits = 0; *p >= '0' && *p <= '9'; p++)
+            if (++digits > 2)
+                return 0;
         if (*p != 'd' && *p != 'i')
             return 0;
         conv++;
@@ -346,12 +349,20 @@ static int picture(anim_run *r, const char *path)
     return rc;
 }
 
-static void pattern_path(char *buf, size_t size, const char *pattern, int frame)
+/* The path of one frame: 0, or 1 (printed) when it does not fit, rather
+ * than a truncated name that is not what the user asked for. */
+static int pattern_path(char *buf, size_t size, const char *pattern, int frame)
 {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wformat-nonliteral"
-    snprintf(buf, size, pattern, frame);
+    const int len = snprintf(buf, size, pattern, frame);
 #pragma GCC diagnostic pop
+    if (len < 0 || (size_t)len >= size) {
+        cli_error("the pattern '%.60s...' makes a path of more than %zu bytes for frame %d",
+                  pattern, size - 1, frame);
+        return 1;
+    }
+    return 0;
 }
 
 /* The frame's files, its errors and its summary line. */
@@ -371,13 +382,12 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
                                                 r->Bprev);
     }
     if (r->args->elements) {
-        pattern_path(path, sizeof path, r->args->elements, f);
-        if (cli_write_atomic(path, w_elements, r))
+        if (pattern_path(path, sizeof path, r->args->elements, f) ||
+            cli_write_atomic(path, w_elements, r))
             return 1;
     }
     if (r->args->frames) {
-        pattern_path(path, sizeof path, r->args->frames, f);
-        if (picture(r, path))
+        if (pattern_path(path, sizeof path, r->args->frames, f) || picture(r, path))
             return 1;
     }
     if (!r->args->common.quiet) {
@@ -479,7 +489,8 @@ static int check_paths(const anim_run *r)
         for (int k = 0; k < 2; k++) {
             if (!pat[k])
                 continue;
-            pattern_path(path, sizeof path, pat[k], f);
+            if (pattern_path(path, sizeof path, pat[k], f))
+                return 1;
             cli_output one = {path, w_trace, r};
             if (cli_outputs_check(&one, 1))
                 return 1;

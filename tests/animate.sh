@@ -179,6 +179,16 @@ ok $? "animate without a change file is a usage error"
 ok $? "--strategy 3 is a usage error"
 "$RADIOSITY" animate --frames 'x.png' room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--frames without an integer conversion is a usage error"
+for p in 'x%d%d.png' 'x%s.png' 'x%n.png' 'x%ld.png' 'x%*d.png' 'x%' 'x%%d.png' 'x%2147483648d.png' 'x%100d.png'; do
+  "$RADIOSITY" animate --elements "$p" room.scene all.changes > /dev/null 2> err; rc=$?
+  [ $rc -eq 2 ] && [ -z "$(ls | grep '^x')" ]
+  ok $? "--elements '$p' is a usage error (exit $rc) and writes nothing"
+done
+# a path that does not fit is refused before any work, never truncated
+long=$(awk 'BEGIN { for (k = 0; k < 1400; k++) printf "d/."; }')
+mkdir d && "$RADIOSITY" animate -q --elements "$long/x%d.tsv" room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "makes a path of more than" err && [ -z "$(ls d)" ]
+ok $? "an --elements path longer than 4095 bytes: exit $rc, $(head -c 100 err)"
 
 # a solve of a scene with an absent object leaves it out
 n=$(awk 'END { print NR - 1 }' f0.tsv)
