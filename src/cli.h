@@ -254,6 +254,7 @@ typedef struct cli_solve_variant {
     void (*help)(void);
     int (*check)(const cli_solve *s);
     rad_pipeline_fn pipeline;
+    const char *program; /* for "Try 'PROGRAM solve --help'": NULL is radiosity */
 } cli_solve_variant;
 int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v);
 
