@@ -10,8 +10,8 @@
  * (--elements PATTERN, the format of `solve --elements`, numbered as a
  * fresh solve of the frame's scene numbers it: absent objects' elements
  * are left out).  --trace and --report are written at the end.  Every
- * path is checked before the work; each file is written through a
- * temporary and a rename.  --reference solves each frame afresh (LU,
+ * path is checked before the work; each file is written to a temporary
+ * as its frame is done, and all are renamed at the end (cli_staged).  --reference solves each frame afresh (LU,
  * the pipeline) to measure the error of eq. 7 per shot and per frame.
  */
 #include <config.h>
@@ -213,6 +213,7 @@ typedef struct anim_run {
     double exposure;
     double t_reference;         /* of the last reference solve */
     int failed_shot;
+    cli_staged stage;           /* every file of the run, renamed together at its end */
 } anim_run;
 
 static int record_shot(void *user, const rad_anim_shot *s)
@@ -333,7 +334,7 @@ static int picture(anim_run *r, const char *path)
         rad_smooth_vertices(&m, B, Bv);
         if (rad_render_model_from_mesh(&model, &m, B, Bv, &err) == RAD_OK) {
             if (rad_render(&model, &ro, &img, &err) == RAD_OK) {
-                rc = cli_write_atomic(path, w_png, &img);
+                rc = cli_staged_write(&r->stage, path, w_png, &img);
                 rad_image_free(&img);
             } else {
                 cli_error_rec(&err);
@@ -383,7 +384,7 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
     }
     if (r->args->elements) {
         if (pattern_path(path, sizeof path, r->args->elements, f) ||
-            cli_write_atomic(path, w_elements, r))
+            cli_staged_write(&r->stage, path, w_elements, r))
             return 1;
     }
     if (r->args->frames) {
@@ -617,10 +618,15 @@ static int run(anim_args *a, const char *scene, const char *changes)
     memset(&r, 0, sizeof r);
     r.args = a;
     int status = 1;
-    if (!load(&r, scene, changes) && !check_paths(&r) && !animate(&r)) {
-        cli_output o[2] = {{a->trace, w_trace, &r}, {a->report, w_report, &r}};
-        status = cli_outputs_write(o, 2) ? 1 : 0;
-    }
+    /* Frames are written as they are computed, each to a temporary, and
+     * all renamed with the trace and report at the end: a run that fails at
+     * frame 7 replaces none of the files of frames 0-6. */
+    if (!load(&r, scene, changes) && !check_paths(&r) &&
+        !cli_staged_begin(&r.stage, 2 * (r.changes.nframes + 1) + 2) && !animate(&r) &&
+        !(a->trace && cli_staged_write(&r.stage, a->trace, w_trace, &r)) &&
+        !(a->report && cli_staged_write(&r.stage, a->report, w_report, &r)))
+        status = cli_staged_commit(&r.stage) ? 1 : 0;
+    cli_staged_abort(&r.stage); /* after a failure: every temporary removed */
     run_free(&r);
     return status;
 }

@@ -190,7 +190,15 @@ mkdir d && "$RADIOSITY" animate -q --elements "$long/x%d.tsv" room.scene all.cha
 rc=$?; [ $rc -eq 1 ] && grep -q "makes a path of more than" err && [ -z "$(ls d)" ]
 ok $? "an --elements path longer than 4095 bytes: exit $rc, $(head -c 100 err)"
 
-# a solve of a scene with an absent object leaves it out
+# a run that fails at frame 2 replaces no file of frames 0 and 1 and
+# leaves no temporary behind: the frames are renamed together at the end
+mkdir keep && echo precious > keep/f0.tsv && echo precious > keep/f1.tsv
+printf 'frame\nmove box 0.125 0 0\nframe\nmove box 1e300 0 0\n' > fail2.changes
+"$RADIOSITY" animate -q --elements keep/f%d.tsv --trace keep/trace.tsv room.scene fail2.changes 2> err
+rc=$?; [ $rc -eq 1 ] && [ "$(cat keep/f0.tsv keep/f1.tsv)" = "$(printf 'precious\nprecious')" ] &&
+  [ "$(ls keep | tr '\n' ' ')" = "f0.tsv f1.tsv " ]
+ok $? "a failure at frame 2: exit $rc, frames 0 and 1 kept, no temporary ($(ls keep | tr '\n' ' '))"
+
 n=$(awk 'END { print NR - 1 }' f0.tsv)
 ok $([ "$n" -eq 78 ]; echo $?) "solve leaves the absent shade out ($n elements: 54 walls, 24 box)"
 done_testing
