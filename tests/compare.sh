@@ -36,12 +36,14 @@ ok $? "reference matrices as .npy, TSV and Matrix Market"
 # ---- the exact matrix: nothing beyond reference's own estimate ------------
 # Reference mode promises 1e-9 relative error per entry; the files carry
 # the doubles exactly (%.17g, float64), so our fill and theirs agree to
-# that promise at worst, and no difference exceeds our own error bound.
+# that promise at worst, and no difference exceeds our own error estimate.
 for f in F.npy F.tsv F.mtx; do
   cmp_ --tolerance 1e-9 --report "$work/r.json" "$cube" "$work/$f"
   ok $? "$f: the exact matrix is within 1e-9"
   [ "$(json entries_beyond_estimate "$work/r.json")" = 0 ]
   ok $? "$f: no entry differs by more than our own error estimate"
+  ! grep -q "bound" "$work/out"
+  ok $? "$f: our error estimates are not called bounds (rad_ff_pair estimates)"
 done
 # The coordinate form of Matrix Market, 1-based, zeros left out.
 { echo '%%MatrixMarket matrix coordinate real general'
