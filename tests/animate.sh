@@ -198,6 +198,8 @@ printf 'frame\nmove box 0.125 0 0\nframe\nmove box 1e300 0 0\n' > fail2.changes
 rc=$?; [ $rc -eq 1 ] && [ "$(cat keep/f0.tsv keep/f1.tsv)" = "$(printf 'precious\nprecious')" ] &&
   [ "$(ls keep | tr '\n' ' ')" = "f0.tsv f1.tsv " ]
 ok $? "a failure at frame 2: exit $rc, frames 0 and 1 kept, no temporary ($(ls keep | tr '\n' ' '))"
+grep -q "^radiosity: fail2.changes:4: frame 2: " err
+ok $? "the failure is the change file's, at its line: $(head -c 120 err)"
 
 n=$(awk 'END { print NR - 1 }' f0.tsv)
 ok $([ "$n" -eq 78 ]; echo $?) "solve leaves the absent shade out ($n elements: 54 walls, 24 box)"
