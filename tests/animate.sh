@@ -171,6 +171,11 @@ bad "add of a present object" 'frame\nadd box\n' "2: cannot add object 'box'"
 bad "remove of an absent object" 'frame\nremove shade\n' "2: cannot remove object 'shade'"
 bad "presence followed through frames" 'frame\nadd shade\nframe\nremove shade\nframe\nremove shade\n' "6: cannot remove"
 bad "zero rotation axis" 'frame\nrotate box 0 0 0 45\n' "2: the rotation axis must not be zero"
+for axis in '0 0 1e300' '1e300 1e300 1e300' '0 0 1e-300'; do
+  printf 'frame\nrotate box %s 90\n' "$axis" > axis.changes
+  "$RADIOSITY" animate -q room.scene axis.changes > /dev/null 2> err
+  ok $? "rotation axis $axis is an axis, not zero ($(head -c 80 err))"
+done
 bad "bad number" 'frame\nmove box 1 O 0\n' "2: 'O' is not a number"
 bad "missing argument" 'frame\nrotate box 0 0 1\n' "2: missing number"
 "$RADIOSITY" animate room.scene > /dev/null 2> err; [ $? -eq 2 ]
