@@ -110,8 +110,8 @@ static int parse_steps(progress_args *a, const char *arg)
 {
     char buf[4096], *save = NULL;
     int n = 0;
-    if (strlen(arg) >= sizeof buf || !*arg)
-        goto bad;
+    if (strlen(arg) >= sizeof buf || !*arg || arg[0] == ',' || strstr(arg, ",,"))
+        goto bad; /* strtok_r would skip the empty item */
     strcpy(buf, arg);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         int k;
@@ -547,6 +547,12 @@ int cmd_progress(int argc, char **argv)
     }
     if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
         cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
+        return cli_usage_hint("progress");
+    }
+    if (a.steps_given && a.race.nsnapshot_at > 0 &&
+        a.race.snapshot_at[a.race.nsnapshot_at - 1] > a.race.steps) {
+        cli_error("--snapshots-at %d is beyond --steps %d: that image would never be made",
+                  a.race.snapshot_at[a.race.nsnapshot_at - 1], a.race.steps);
         return cli_usage_hint("progress");
     }
     if (optind != argc - 1) {
