@@ -11,8 +11,9 @@
  * fresh solve of the frame's scene numbers it: absent objects' elements
  * are left out).  --trace and --report are written at the end.  Every
  * path is checked before the work; each file is written to a temporary
- * as its frame is done, and all are renamed at the end (cli_staged).  --reference solves each frame afresh (LU,
- * the pipeline) to measure the error of eq. 7 per shot and per frame.
+ * as its frame is done, and all are renamed at the end (cli_staged).
+ * --reference solves each frame afresh (LU, the pipeline) to measure the
+ * error of eq. 7 per shot and per frame.
  */
 #include <config.h>
 
@@ -56,8 +57,9 @@ static void help(void)
            "\n"
            "Options:\n"
            "      --frames PATTERN    one PNG per frame, PATTERN a printf pattern with\n"
-           "                          one integer conversion (frame%%03d.png); the\n"
-           "                          scene's camera, frame 0's exposure\n"
+           "                          one integer conversion (frame%%03d.png, a width\n"
+           "                          below 100); the scene's camera, frame 0's\n"
+           "                          exposure\n"
            "      --width W, --height H  picture size (default 384 x 384)\n"
            "      --elements PATTERN  one element table per frame (the format of\n"
            "                          'solve --elements'; absent objects' elements\n"
@@ -92,7 +94,11 @@ static void help(void)
            "  radiosity animate --steps 50 --strategy 2 --reference data/cube-on-table.scene data/cube-on-table.changes\n"
            "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv --frames frame%%02d.png data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
            "\n"
-           "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
+           "Every path is checked before the work.  Each regular file is written to a\n"
+           "temporary beside it as its frame is done, and all are renamed together\n"
+           "at the end: a failed or interrupted run replaces none; a device or FIFO\n"
+           "is written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"
+           "usage error; 128 + signal when interrupted.\n");
 }
 
 /* ---- arguments --------------------------------------------------------- */
