@@ -483,6 +483,26 @@ static int w_report(FILE *out, const void *ctx)
 
 /* ---- the steps of a run -------------------------------------------------- */
 
+static int path_cmp(const void *x, const void *y)
+{
+    return strcmp(*(char *const *)x, *(char *const *)y);
+}
+
+/* No two outputs of the run may name one file (--elements f%d.x with
+ * --frames f%d.x, or --trace f1.x): the later would silently replace the
+ * earlier.  Paths are compared as written; "-" may repeat.  0, or 1. */
+static int check_distinct(char **paths, size_t n)
+{
+    qsort(paths, n, sizeof *paths, path_cmp);
+    for (size_t k = 1; k < n; k++)
+        if (strcmp(paths[k], paths[k - 1]) == 0 && strcmp(paths[k], "-") != 0) {
+            cli_error("%s: named by two outputs of the run (--frames, --elements, --trace, "
+                      "--report)", paths[k]);
+            return 1;
+        }
+    return 0;
+}
+
 /* Every path the run will write, checked before any work: 0 or 1. */
 static int check_paths(const anim_run *r)
 {
@@ -491,19 +511,39 @@ static int check_paths(const anim_run *r)
     cli_output o[2] = {{a->trace, w_trace, r}, {a->report, w_report, r}};
     if (cli_outputs_check(o, 2))
         return 1;
-    for (int f = 0; f <= r->changes.nframes; f++) {
+    const size_t cap = 2 * ((size_t)r->changes.nframes + 1) + 2;
+    char **paths = calloc(cap, sizeof *paths);
+    size_t n = 0;
+    int rc = 0;
+    if (!paths) {
+        cli_error("out of memory");
+        return 1;
+    }
+    for (int k = 0; k < 2; k++)
+        if (o[k].path && !(paths[n++] = strdup(o[k].path)))
+            rc = 1;
+    for (int f = 0; f <= r->changes.nframes && !rc; f++) {
         const char *pat[2] = {a->elements, a->frames};
-        for (int k = 0; k < 2; k++) {
+        for (int k = 0; k < 2 && !rc; k++) {
             if (!pat[k])
                 continue;
             if (pattern_path(path, sizeof path, pat[k], f))
-                return 1;
+                rc = 1;
             cli_output one = {path, w_trace, r};
-            if (cli_outputs_check(&one, 1))
-                return 1;
+            if (!rc && cli_outputs_check(&one, 1))
+                rc = 1;
+            if (!rc && !(paths[n++] = strdup(path))) {
+                cli_error("out of memory");
+                rc = 1;
+            }
         }
     }
-    return 0;
+    if (!rc)
+        rc = check_distinct(paths, n);
+    for (size_t k = 0; k < n; k++)
+        free(paths[k]);
+    free(paths);
+    return rc;
 }
 
 static int load(anim_run *r, const char *scene, const char *changes)

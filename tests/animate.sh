@@ -189,6 +189,13 @@ for p in 'x%d%d.png' 'x%s.png' 'x%n.png' 'x%ld.png' 'x%*d.png' 'x%' 'x%%d.png' '
   [ $rc -eq 2 ] && [ -z "$(ls | grep '^x')" ]
   ok $? "--elements '$p' is a usage error (exit $rc) and writes nothing"
 done
+# two outputs naming one file: refused before the work, nothing written
+"$RADIOSITY" animate -q --elements 'same%d.x' --frames 'same%d.x' room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "same0.x: named by two outputs" err && [ -z "$(ls | grep '^same')" ]
+ok $? "--elements and --frames naming the same files: exit $rc, $(head -c 80 err)"
+"$RADIOSITY" animate -q --elements 'same%d.x' --trace same1.x room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "same1.x: named by two outputs" err
+ok $? "--trace naming a frame's table: exit $rc"
 # a path that does not fit is refused before any work, never truncated
 long=$(awk 'BEGIN { for (k = 0; k < 1400; k++) printf "d/."; }')
 mkdir d && "$RADIOSITY" animate -q --elements "$long/x%d.tsv" room.scene all.changes > /dev/null 2> err
