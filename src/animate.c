@@ -354,6 +354,27 @@ static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
     return RAD_OK;
 }
 
+/* A frame whose changes make a mesh the scene's checks refuse (a move by
+ * 1e300 gives an element area NaN): the error is the change file's, at the
+ * frame's last move or rotate (or its first change), the scene's message
+ * after it, since the moved surface's line says which one failed. */
+static void blame_changes(const rad_changes *ch, int frame, rad_error *err)
+{
+    int line = 0;
+    for (int k = 0; k < ch->nchanges; k++) {
+        const rad_change *c = &ch->changes[k];
+        if (c->frame != frame)
+            continue;
+        if (!line || c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE)
+            line = c->line;
+    }
+    char was[RAD_ERRMSG_MAX];
+    memcpy(was, err->message, sizeof was);
+    was[sizeof was - 1] = '\0';
+    rad_fail(err, err->status, "%s:%d: frame %d: after its changes, %s", ch->filename, line,
+             frame, was);
+}
+
 rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *rep,
                          rad_error *err)
 {
@@ -382,7 +403,10 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
             a->log_obj[o] |= dirty[o];
         }
     }
-    if (st == RAD_OK && (st = rad_mesh_build(&mesh, &a->scene, err)) == RAD_OK) { /* 3 */
+    if (st == RAD_OK && (st = rad_mesh_build(&mesh, &a->scene, err)) != RAD_OK)
+        if (st != RAD_ERR_NOMEM)
+            blame_changes(ch, next, err);
+    if (st == RAD_OK) { /* 3 */
         if (mesh.nelements != a->n) {
             rad_mesh_free(&mesh);
             st = rad_fail(err, RAD_ERR_INVALID, "the mesh changed its element count");

@@ -213,10 +213,11 @@ rad_status rad_afile_check(const char *path, rad_error *err)
     return rs;
 }
 
-rad_status rad_afile_commit(rad_afile *f, rad_error *err)
+/* Flush, sync (a temporary) and close f->fp: 0, or the errno. */
+static int finish(rad_afile *f)
 {
     int bad = fflush(f->fp) != 0 || ferror(f->fp);
-    int e = errno;
+    int e = bad ? (errno ? errno : EIO) : 0;
     if (!bad && f->tmp && fsync(fileno(f->fp)) != 0) {
         bad = 1;
         e = errno;
@@ -226,6 +227,24 @@ rad_status rad_afile_commit(rad_afile *f, rad_error *err)
         e = errno;
     }
     f->fp = NULL;
+    return bad ? e : 0;
+}
+
+rad_status rad_afile_close(rad_afile *f, rad_error *err)
+{
+    const int e = f->fp ? finish(f) : 0;
+    if (e) {
+        rad_status st = rad_fail(err, RAD_ERR_IO, "%s: %s", f->user_path, strerror(e));
+        rad_afile_abort(f);
+        return st;
+    }
+    return RAD_OK;
+}
+
+rad_status rad_afile_commit(rad_afile *f, rad_error *err)
+{
+    int e = f->fp ? finish(f) : 0; /* closed already by rad_afile_close */
+    int bad = e != 0;
     if (!bad && f->tmp && rename(f->tmp, f->path) != 0) {
         bad = 1;
         e = errno;

@@ -27,6 +27,11 @@ typedef struct rad_afile {
 
 rad_status rad_afile_open(rad_afile *f, const char *path, rad_error *err);
 rad_status rad_afile_commit(rad_afile *f, rad_error *err);
+/* Flush, sync and close the temporary without renaming it: a later
+ * rad_afile_commit renames it, rad_afile_abort removes it.  A direct
+ * output is finished here.  (For many outputs committed together, without
+ * holding a descriptor each.) */
+rad_status rad_afile_close(rad_afile *f, rad_error *err);
 void rad_afile_abort(rad_afile *f);
 
 /* Could path be written?  Checks, without creating anything, what can be

@@ -10,9 +10,10 @@
  * an object is present is followed through the file, frame by frame,
  * starting from the scene's `absent` flags: `add` of a present object and
  * `remove` of an absent one are errors at their line.  Numbers use strtod
- * syntax and must be finite; a rotation axis must not be zero (its length
- * is compared with the smallest normal double, so any axis whose
- * normalisation is exact in floating point passes).  Nothing here changes
+ * syntax and must be finite; a rotation axis must not be zero (nor made of
+ * subnormal numbers only; any other finite axis is one: it is scaled by its
+ * largest component before it is normalised, so neither the overflow of
+ * 1e300 1e300 1e300 nor the underflow of 1e-300's square calls it zero).  Nothing here changes
  * the scene: the animation (animate.c) applies the changes.
  */
 #include <config.h>
@@ -109,9 +110,15 @@ static rad_status parse_rotate(const change_state *p, rad_change *c)
     if ((st = object_ref(p, &c->object)) || (st = vector(p, 2, "rotation axis", &c->v)) ||
         (st = number(p, 5, "angle in degrees", &c->degrees)))
         return st;
-    double len = sqrt(c->v.x * c->v.x + c->v.y * c->v.y + c->v.z * c->v.z);
-    if (!(len >= 0x1p-1022) || !isfinite(len))
+    /* scaled by its largest component first: 1e300 1e300 1e300 (whose
+     * length overflows) and 1e-200 0 0 (whose square underflows) are axes */
+    const double big = fmax(fabs(c->v.x), fmax(fabs(c->v.y), fabs(c->v.z)));
+    if (!(big >= 0x1p-1022)) /* zero, or subnormal components only */
         return fail(p, "the rotation axis must not be zero");
+    c->v.x /= big;
+    c->v.y /= big;
+    c->v.z /= big;
+    const double len = sqrt(c->v.x * c->v.x + c->v.y * c->v.y + c->v.z * c->v.z);
     c->v.x /= len;
     c->v.y /= len;
     c->v.z /= len;

@@ -112,6 +112,20 @@ int cli_outputs_write(const cli_output *o, int n);
 /* One output alone. */
 int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx);
 
+/* Outputs written one by one during a run (animate's frames) and renamed
+ * together at its end: each is written to its temporary and closed at
+ * once (no descriptor held); cli_staged_commit renames them all with the
+ * signals held; cli_staged_abort, a failure or a signal removes them all,
+ * so a failed run replaces none.  One staged set at a time. */
+typedef struct cli_staged {
+    struct rad_afile *f;
+    int n, cap;
+} cli_staged;
+int cli_staged_begin(cli_staged *s, int capacity);                   /* 0, or 1 (printed) */
+int cli_staged_write(cli_staged *s, const char *path, cli_writer_fn fn, const void *ctx);
+int cli_staged_commit(cli_staged *s);                                /* 0, or 1 (printed) */
+void cli_staged_abort(cli_staged *s);
+
 /* Load the scene and apply --mesh; prints the error and returns 1 on
  * failure. */
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene);
@@ -254,6 +268,7 @@ typedef struct cli_solve_variant {
     void (*help)(void);
     int (*check)(const cli_solve *s);
     rad_pipeline_fn pipeline;
+    const char *program; /* for "Try 'PROGRAM solve --help'": NULL is radiosity */
 } cli_solve_variant;
 int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v);
 

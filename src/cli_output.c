@@ -30,12 +30,19 @@
 
 static const char *volatile pending[CLI_MAX_OUTPUTS];
 static volatile sig_atomic_t npending;
+/* cli_staged's temporaries: the array is allocated before any is counted */
+static const char *volatile *volatile staged;
+static volatile sig_atomic_t nstaged;
+static const char **staged_alloc; /* the same array, to free */
 
 static void on_signal(int sig)
 {
     for (sig_atomic_t k = 0; k < npending; k++)
         if (pending[k])
             unlink(pending[k]);
+    for (sig_atomic_t k = 0; k < nstaged; k++)
+        if (staged[k])
+            unlink(staged[k]);
     _exit(128 + sig);
 }
 
@@ -150,4 +157,109 @@ int cli_write_atomic(const char *path, cli_writer_fn fn, const void *ctx)
 {
     cli_output o = {path, fn, ctx};
     return cli_outputs_write(&o, 1);
+}
+
+/* ---- staged outputs ------------------------------------------------------ */
+
+int cli_staged_begin(cli_staged *s, int capacity)
+{
+    memset(s, 0, sizeof *s);
+    if (capacity < 1)
+        capacity = 1;
+    s->f = calloc((size_t)capacity, sizeof *s->f);
+    const char **names = calloc((size_t)capacity, sizeof *names);
+    if (!s->f || !names || staged) { /* staged: one set at a time */
+        free(s->f);
+        free(names);
+        s->f = NULL;
+        cli_error("out of memory for %d outputs", capacity);
+        return 1;
+    }
+    s->cap = capacity;
+    nstaged = 0;
+    staged_alloc = names;
+    staged = names;
+    return 0;
+}
+
+int cli_staged_write(cli_staged *s, const char *path, cli_writer_fn fn, const void *ctx)
+{
+    rad_error err;
+    if (s->n == s->cap)
+        abort(); /* a programming error: the capacity counts every output */
+    rad_afile *f = &s->f[s->n];
+    sigset_t old;
+    hold_signals(1, &old); /* created and registered as one step */
+    rad_status st = rad_afile_open(f, path, &err);
+    if (st == RAD_OK) {
+        staged[s->n] = f->tmp; /* NULL for a direct output */
+        nstaged = ++s->n;
+    }
+    hold_signals(0, &old);
+    if (st != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    errno = 0;
+    if (fn(f->fp, ctx) != 0 || fflush(f->fp) != 0 || ferror(f->fp)) {
+        cli_error("%s: %s", path, errno ? strerror(errno) : "write error");
+        return 1;
+    }
+    hold_signals(1, &old); /* a failed close removes the temporary it names */
+    st = rad_afile_close(f, &err);
+    if (st != RAD_OK)
+        staged[s->n - 1] = NULL;
+    hold_signals(0, &old);
+    if (st != RAD_OK) {
+        cli_error_rec(&err);
+        return 1;
+    }
+    return 0;
+}
+
+static void staged_end(cli_staged *s)
+{
+    sigset_t old;
+    hold_signals(1, &old);
+    nstaged = 0;
+    staged = NULL;
+    free(staged_alloc);
+    staged_alloc = NULL;
+    hold_signals(0, &old);
+    free(s->f);
+    memset(s, 0, sizeof *s);
+}
+
+int cli_staged_commit(cli_staged *s)
+{
+    rad_error err;
+    int status = 0;
+    sigset_t old;
+    hold_signals(1, &old); /* all renamed, or a signal waits until they are */
+    for (int k = 0; k < s->n; k++) {
+        if (status) {
+            rad_afile_abort(&s->f[k]);
+        } else if (rad_afile_commit(&s->f[k], &err) != RAD_OK) {
+            cli_error_rec(&err);
+            status = 1;
+        }
+        staged[k] = NULL;
+    }
+    hold_signals(0, &old);
+    staged_end(s);
+    return status;
+}
+
+void cli_staged_abort(cli_staged *s)
+{
+    if (!s->f)
+        return;
+    sigset_t old;
+    hold_signals(1, &old);
+    for (int k = 0; k < s->n; k++) {
+        staged[k] = NULL;
+        rad_afile_abort(&s->f[k]);
+    }
+    hold_signals(0, &old);
+    staged_end(s);
 }

@@ -10,9 +10,10 @@
  * (--elements PATTERN, the format of `solve --elements`, numbered as a
  * fresh solve of the frame's scene numbers it: absent objects' elements
  * are left out).  --trace and --report are written at the end.  Every
- * path is checked before the work; each file is written through a
- * temporary and a rename.  --reference solves each frame afresh (LU,
- * the pipeline) to measure the error of eq. 7 per shot and per frame.
+ * path is checked before the work; each file is written to a temporary
+ * as its frame is done, and all are renamed at the end (cli_staged).
+ * --reference solves each frame afresh (LU, the pipeline) to measure the
+ * error of eq. 7 per shot and per frame.
  */
 #include <config.h>
 
@@ -61,8 +62,9 @@ static void help(void)
            "\n"
            "Options:\n"
            "      --frames PATTERN    one PNG per frame, PATTERN a printf pattern with\n"
-           "                          one integer conversion (frame%%03d.png); the\n"
-           "                          scene's camera, frame 0's exposure\n"
+           "                          one integer conversion (frame%%03d.png, a width\n"
+           "                          below 100); the scene's camera, frame 0's\n"
+           "                          exposure\n"
            "      --width W, --height H  picture size (default 384 x 384)\n"
            "      --elements PATTERN  one element table per frame (the format of\n"
            "                          'solve --elements'; absent objects' elements\n"
@@ -117,7 +119,11 @@ static void help(void)
            "  radiosity animate --resume anim.log --steps 3 --converge-last data/cube-on-table.scene data/cube-on-table.changes\n"
            "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv --frames frame%%02d.png data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
            "\n"
-           "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
+           "Every path is checked before the work.  Each regular file is written to a\n"
+           "temporary beside it as its frame is done, and all are renamed together\n"
+           "at the end: a failed or interrupted run replaces none; a device or FIFO\n"
+           "is written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"
+           "usage error; 128 + signal when interrupted.\n");
 }
 
 /* ---- arguments --------------------------------------------------------- */
@@ -143,8 +149,11 @@ static int pattern_ok(const char *p)
         p++;
         while (*p == '0' || *p == '-' || *p == '+' || *p == ' ')
             p++;
-        while (*p >= '0' && *p <= '9')
-            p++;
+        /* a width of at most 2 digits: %2147483648d overflows printf's int
+         * and names some other file, %4000d outgrows any path */
+        for (int digits = 0; *p >= '0' && *p <= '9'; p++)
+            if (++digits > 2)
+                return 0;
         if (*p != 'd' && *p != 'i')
             return 0;
         conv++;
@@ -256,6 +265,7 @@ typedef struct anim_run {
     double exposure;
     double t_reference;         /* of the last reference solve */
     int failed_shot;
+    cli_staged stage;           /* every file of the run, renamed together at its end */
 } anim_run;
 
 static int record_shot(void *user, const rad_anim_shot *s)
@@ -376,7 +386,7 @@ static int picture(anim_run *r, const char *path)
         rad_smooth_vertices(&m, B, Bv);
         if (rad_render_model_from_mesh(&model, &m, B, Bv, &err) == RAD_OK) {
             if (rad_render(&model, &ro, &img, &err) == RAD_OK) {
-                rc = cli_write_atomic(path, w_png, &img);
+                rc = cli_staged_write(&r->stage, path, w_png, &img);
                 rad_image_free(&img);
             } else {
                 cli_error_rec(&err);
@@ -397,12 +407,20 @@ static int w_log(FILE *out, const void *ctx)
     return rad_anim_log_write(out, ctx) == RAD_OK ? 0 : -1;
 }
 
-static void pattern_path(char *buf, size_t size, const char *pattern, int frame)
+/* The path of one frame: 0, or 1 (printed) when it does not fit, rather
+ * than a truncated name that is not what the user asked for. */
+static int pattern_path(char *buf, size_t size, const char *pattern, int frame)
 {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wformat-nonliteral"
-    snprintf(buf, size, pattern, frame);
+    const int len = snprintf(buf, size, pattern, frame);
 #pragma GCC diagnostic pop
+    if (len < 0 || (size_t)len >= size) {
+        cli_error("the pattern '%.60s...' makes a path of more than %zu bytes for frame %d",
+                  pattern, size - 1, frame);
+        return 1;
+    }
+    return 0;
 }
 
 /* The frame's files, its errors and its summary line. */
@@ -423,13 +441,12 @@ static int frame_done(anim_run *r, const rad_anim_report *rep)
                                                 r->Bprev);
     }
     if (r->args->elements) {
-        pattern_path(path, sizeof path, r->args->elements, f);
-        if (cli_write_atomic(path, w_elements, r))
+        if (pattern_path(path, sizeof path, r->args->elements, f) ||
+            cli_staged_write(&r->stage, path, w_elements, r))
             return 1;
     }
     if (r->args->frames) {
-        pattern_path(path, sizeof path, r->args->frames, f);
-        if (picture(r, path))
+        if (pattern_path(path, sizeof path, r->args->frames, f) || picture(r, path))
             return 1;
     }
     if (r->args->log && cli_write_atomic(r->args->log, w_log, r->anim))
@@ -546,6 +563,26 @@ static int w_report(FILE *out, const void *ctx)
 
 /* ---- the steps of a run -------------------------------------------------- */
 
+static int path_cmp(const void *x, const void *y)
+{
+    return strcmp(*(char *const *)x, *(char *const *)y);
+}
+
+/* No two outputs of the run may name one file (--elements f%d.x with
+ * --frames f%d.x, or --trace f1.x): the later would silently replace the
+ * earlier.  Paths are compared as written; "-" may repeat.  0, or 1. */
+static int check_distinct(char **paths, size_t n)
+{
+    qsort(paths, n, sizeof *paths, path_cmp);
+    for (size_t k = 1; k < n; k++)
+        if (strcmp(paths[k], paths[k - 1]) == 0 && strcmp(paths[k], "-") != 0) {
+            cli_error("%s: named by two outputs of the run (--frames, --elements, --trace, "
+                      "--report)", paths[k]);
+            return 1;
+        }
+    return 0;
+}
+
 /* Every path the run will write, checked before any work: 0 or 1. */
 static int check_paths(const anim_run *r)
 {
@@ -555,18 +592,39 @@ static int check_paths(const anim_run *r)
                        {a->errors, w_errors, r}, {a->log, w_log, NULL}};
     if (cli_outputs_check(o, 4))
         return 1;
-    for (int f = 0; f <= r->changes.nframes; f++) {
+    const size_t cap = 2 * ((size_t)r->changes.nframes + 1) + 2;
+    char **paths = calloc(cap, sizeof *paths);
+    size_t n = 0;
+    int rc = 0;
+    if (!paths) {
+        cli_error("out of memory");
+        return 1;
+    }
+    for (int k = 0; k < 2; k++)
+        if (o[k].path && !(paths[n++] = strdup(o[k].path)))
+            rc = 1;
+    for (int f = 0; f <= r->changes.nframes && !rc; f++) {
         const char *pat[2] = {a->elements, a->frames};
-        for (int k = 0; k < 2; k++) {
+        for (int k = 0; k < 2 && !rc; k++) {
             if (!pat[k])
                 continue;
-            pattern_path(path, sizeof path, pat[k], f);
+            if (pattern_path(path, sizeof path, pat[k], f))
+                rc = 1;
             cli_output one = {path, w_trace, r};
-            if (cli_outputs_check(&one, 1))
-                return 1;
+            if (!rc && cli_outputs_check(&one, 1))
+                rc = 1;
+            if (!rc && !(paths[n++] = strdup(path))) {
+                cli_error("out of memory");
+                rc = 1;
+            }
         }
     }
-    return 0;
+    if (!rc)
+        rc = check_distinct(paths, n);
+    for (size_t k = 0; k < n; k++)
+        free(paths[k]);
+    free(paths);
+    return rc;
 }
 
 static int load(anim_run *r, const char *scene, const char *changes)
@@ -724,11 +782,16 @@ static int run(anim_args *a, const char *scene, const char *changes)
     memset(&r, 0, sizeof r);
     r.args = a;
     int status = 1;
-    if (!load(&r, scene, changes) && !check_paths(&r) && !animate(&r)) {
-        cli_output o[3] = {{a->trace, w_trace, &r}, {a->report, w_report, &r},
-                           {a->errors, w_errors, &r}};
-        status = cli_outputs_write(o, 3) ? 1 : 0;
-    }
+    /* Frames are written as they are computed, each to a temporary, and
+     * all renamed with the trace and report at the end: a run that fails at
+     * frame 7 replaces none of the files of frames 0-6. */
+    if (!load(&r, scene, changes) && !check_paths(&r) &&
+        !cli_staged_begin(&r.stage, 2 * (r.changes.nframes + 1) + 3) && !animate(&r) &&
+        !(a->trace && cli_staged_write(&r.stage, a->trace, w_trace, &r)) &&
+        !(a->report && cli_staged_write(&r.stage, a->report, w_report, &r)) &&
+        !(a->errors && cli_staged_write(&r.stage, a->errors, w_errors, &r)))
+        status = cli_staged_commit(&r.stage) ? 1 : 0;
+    cli_staged_abort(&r.stage); /* after a failure: every temporary removed */
     run_free(&r);
     return status;
 }

@@ -110,8 +110,8 @@ static int parse_steps(progress_args *a, const char *arg)
 {
     char buf[4096], *save = NULL;
     int n = 0;
-    if (strlen(arg) >= sizeof buf || !*arg)
-        goto bad;
+    if (strlen(arg) >= sizeof buf || !*arg || arg[0] == ',' || strstr(arg, ",,"))
+        goto bad; /* strtok_r would skip the empty item */
     strcpy(buf, arg);
     for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
         int k;
@@ -202,13 +202,47 @@ static int write_png(FILE *out, const void *img)
     return 0;
 }
 
+/* PREFIX-METHOD-STEP.png into path[4096]: 0, or 1 when it does not fit. */
+static int snapshot_path(char *path, const char *prefix, int method, int step)
+{
+    const int len = snprintf(path, 4096, "%s-%s-%06d.png", prefix, rad_race_name(method), step);
+    return len < 0 || len >= 4096;
+}
+
+/* Every snapshot goes beside the first: the directory checked, for each
+ * method, before the work (as every other output is), so a missing one is
+ * not found after the dense fill.  0, or 1 (printed). */
+static int snapshots_check(const progress_args *a)
+{
+    char path[4096];
+    if (a->race.snapshot_every <= 0 && a->race.nsnapshot_at <= 0)
+        return 0;
+    const char *prefix = a->prefix ? a->prefix : "progress";
+    for (int m = 0; m < RAD_RACE_METHODS; m++) {
+        if (snapshot_path(path, prefix, m, MAX_STEPS)) {
+            cli_error("--snapshot-prefix '%.60s...' makes paths of more than 4095 bytes",
+                      prefix);
+            return 1;
+        }
+        snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0);
+        const cli_output o = {path, write_png, NULL};
+        if (cli_outputs_check(&o, 1))
+            return 1;
+    }
+    return 0;
+}
+
 static int snapshot(void *user, int method, int step, const double *B)
 {
     snap_ctx *c = user;
     rad_render_model model;
     rad_image img;
     char path[4096];
-    snprintf(path, sizeof path, "%s-%s-%06d.png", c->prefix, rad_race_name(method), step);
+    if (snapshot_path(path, c->prefix, method, step)) { /* snapshots_check saw to it */
+        c->failed = 1;
+        snprintf(c->err.message, sizeof c->err.message, "a snapshot path is too long");
+        return 1;
+    }
     rad_smooth_vertices(c->mesh, B, c->Bv);
     if (rad_render_model_from_mesh(&model, c->mesh, B, c->Bv, &c->err) != RAD_OK) {
         c->failed = 1;
@@ -475,7 +509,7 @@ static int run(progress_args *a, const char *path)
     }
     const cli_output out[2] = {{a->output, write_table_to, NULL},
                                {a->plot, write_plot_to, NULL}};
-    if (cli_outputs_check(out, 2) || prepare(a, &p) || race(a, &p) || outputs(a, &p))
+    if (cli_outputs_check(out, 2) || snapshots_check(a) || prepare(a, &p) || race(a, &p) || outputs(a, &p))
         goto done;
     status = 0;
 done:
@@ -513,6 +547,12 @@ int cmd_progress(int argc, char **argv)
     }
     if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
         cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
+        return cli_usage_hint("progress");
+    }
+    if (a.steps_given && a.race.nsnapshot_at > 0 &&
+        a.race.snapshot_at[a.race.nsnapshot_at - 1] > a.race.steps) {
+        cli_error("--snapshots-at %d is beyond --steps %d: that image would never be made",
+                  a.race.snapshot_at[a.race.nsnapshot_at - 1], a.race.steps);
         return cli_usage_hint("progress");
     }
     if (optind != argc - 1) {

@@ -447,8 +447,18 @@ static int w_ply(FILE *out, const void *c)
 
 int cmd_solve(int argc, char **argv)
 {
-    const cli_solve_variant serial = {help, NULL, NULL};
+    const cli_solve_variant serial = {help, NULL, NULL, NULL};
     return cmd_solve_variant(argc, argv, &serial);
+}
+
+/* The hint names the program that was run: radiosity-mpi's usage errors
+ * point to its own --help, which lists what it accepts. */
+static int solve_usage_hint(const cli_solve_variant *v)
+{
+    if (!v->program)
+        return cli_usage_hint("solve");
+    fprintf(stderr, "Try '%s solve --help' for more information.\n", v->program);
+    return EXIT_USAGE;
 }
 
 int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v)
@@ -471,14 +481,14 @@ int cmd_solve_variant(int argc, char **argv, const cli_solve_variant *v)
             continue;
         }
         if (cli_solve_option(&s, opt, optarg) != 0)
-            return cli_usage_hint("solve");
+            return solve_usage_hint(v);
     }
     if (optind != argc - 1) {
         cli_error(optind >= argc ? "solve needs a SCENE" : "solve takes one SCENE");
-        return cli_usage_hint("solve");
+        return solve_usage_hint(v);
     }
     if (cli_solve_check(&s) || (v->check && v->check(&s)))
-        return cli_usage_hint("solve");
+        return solve_usage_hint(v);
     s.pipeline = v->pipeline;
     if (cli_run_load(&run, &s, argv[optind]))
         return 1;

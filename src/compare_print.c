@@ -46,9 +46,11 @@ static void head(FILE *out, const compare_ctx *c)
     fprintf(out, "entries:                    %.0f\n", nn);
     fprintf(out, "  equal bit for bit:        %ld\n", k->exact);
     if (k->beyond_estimate >= 0) {
-        fprintf(out, "  beyond our own estimate:  %ld  (|G_ij - F_ij| > our error bound)\n",
+        /* rad_ff_pair's errest is an estimate (formfactor.h), not a bound */
+        fprintf(out, "  beyond our own estimate:  %ld  (|G_ij - F_ij| > our error estimate)\n",
                 k->beyond_estimate);
-        fprintf(out, "our own error, as e:        %.3g at most\n", k->max_own_err);
+        fprintf(out, "our error estimate as e:    %.3g at most over the entries\n",
+                k->max_own_err);
     } else
         fprintf(out, "our own error:              not estimated (classic mode)\n");
     if (k->nworst_found > 0 && k->max_err > 0)

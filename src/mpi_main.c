@@ -86,7 +86,8 @@ static int usage(FILE *out)
 /* Rank 0: the command line. */
 static int run(int argc, char **argv)
 {
-    static const cli_solve_variant variant = {help, check, mpi_pipeline_run};
+    static const cli_solve_variant variant = {help, check, mpi_pipeline_run,
+                                                "radiosity-mpi"};
     if (argc < 2)
         return usage(stderr);
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {

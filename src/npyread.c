@@ -22,6 +22,7 @@
 #include <config.h>
 
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -148,7 +149,9 @@ static void transpose(double *F, size_t n)
 static rad_status read_header(FILE *f, const char *path, char **h, rad_error *err)
 {
     unsigned char pre[12];
-    if (fread(pre, 1, 8, f) != 8 || pre[6] < 1 || pre[6] > 3)
+    if (fread(pre, 1, 8, f) != 8)
+        return rad_fail(err, RAD_ERR_PARSE, "%s: .npy file ends in its preamble", path);
+    if (pre[6] < 1 || pre[6] > 3)
         return rad_fail(err, RAD_ERR_PARSE, "%s: .npy version %d.%d; this reader knows "
                         "1.0, 2.0 and 3.0", path, pre[6], pre[7]);
     const int lenbytes = pre[6] == 1 ? 2 : 4;
@@ -186,9 +189,16 @@ rad_status rad_npy_read_square(const char *path, int n, double *F, rad_error *er
                       n, n);
     if (st == RAD_OK) {
         from_le(F, nn);
-        if (!fortran)
-            transpose(F, (size_t)n);
+        /* as the text readers: a NaN or infinity is no form factor */
+        for (size_t k = 0; k < nn && st == RAD_OK; k++)
+            if (!isfinite(F[k]))
+                st = rad_fail(err, RAD_ERR_PARSE, "%s: .npy entry %zu (of row %zu, column "
+                              "%zu) is %g; a form factor must be finite", path, k,
+                              fortran ? k % (size_t)n : k / (size_t)n,
+                              fortran ? k / (size_t)n : k % (size_t)n, F[k]);
     }
+    if (st == RAD_OK && !fortran)
+        transpose(F, (size_t)n);
     free(h);
     fclose(f);
     return st;

@@ -171,6 +171,11 @@ bad "add of a present object" 'frame\nadd box\n' "2: cannot add object 'box'"
 bad "remove of an absent object" 'frame\nremove shade\n' "2: cannot remove object 'shade'"
 bad "presence followed through frames" 'frame\nadd shade\nframe\nremove shade\nframe\nremove shade\n' "6: cannot remove"
 bad "zero rotation axis" 'frame\nrotate box 0 0 0 45\n' "2: the rotation axis must not be zero"
+for axis in '0 0 1e300' '1e300 1e300 1e300' '0 0 1e-300'; do
+  printf 'frame\nrotate box %s 90\n' "$axis" > axis.changes
+  "$RADIOSITY" animate -q room.scene axis.changes > /dev/null 2> err
+  ok $? "rotation axis $axis is an axis, not zero ($(head -c 80 err))"
+done
 bad "bad number" 'frame\nmove box 1 O 0\n' "2: 'O' is not a number"
 bad "missing argument" 'frame\nrotate box 0 0 1\n' "2: missing number"
 "$RADIOSITY" animate room.scene > /dev/null 2> err; [ $? -eq 2 ]
@@ -179,8 +184,35 @@ ok $? "animate without a change file is a usage error"
 ok $? "--strategy 3 is a usage error"
 "$RADIOSITY" animate --frames 'x.png' room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--frames without an integer conversion is a usage error"
+for p in 'x%d%d.png' 'x%s.png' 'x%n.png' 'x%ld.png' 'x%*d.png' 'x%' 'x%%d.png' 'x%2147483648d.png' 'x%100d.png'; do
+  "$RADIOSITY" animate --elements "$p" room.scene all.changes > /dev/null 2> err; rc=$?
+  [ $rc -eq 2 ] && [ -z "$(ls | grep '^x')" ]
+  ok $? "--elements '$p' is a usage error (exit $rc) and writes nothing"
+done
+# two outputs naming one file: refused before the work, nothing written
+"$RADIOSITY" animate -q --elements 'same%d.x' --frames 'same%d.x' room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "same0.x: named by two outputs" err && [ -z "$(ls | grep '^same')" ]
+ok $? "--elements and --frames naming the same files: exit $rc, $(head -c 80 err)"
+"$RADIOSITY" animate -q --elements 'same%d.x' --trace same1.x room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "same1.x: named by two outputs" err
+ok $? "--trace naming a frame's table: exit $rc"
+# a path that does not fit is refused before any work, never truncated
+long=$(awk 'BEGIN { for (k = 0; k < 1400; k++) printf "d/."; }')
+mkdir d && "$RADIOSITY" animate -q --elements "$long/x%d.tsv" room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "makes a path of more than" err && [ -z "$(ls d)" ]
+ok $? "an --elements path longer than 4095 bytes: exit $rc, $(head -c 100 err)"
 
-# a solve of a scene with an absent object leaves it out
+# a run that fails at frame 2 replaces no file of frames 0 and 1 and
+# leaves no temporary behind: the frames are renamed together at the end
+mkdir keep && echo precious > keep/f0.tsv && echo precious > keep/f1.tsv
+printf 'frame\nmove box 0.125 0 0\nframe\nmove box 1e300 0 0\n' > fail2.changes
+"$RADIOSITY" animate -q --elements keep/f%d.tsv --trace keep/trace.tsv room.scene fail2.changes 2> err
+rc=$?; [ $rc -eq 1 ] && [ "$(cat keep/f0.tsv keep/f1.tsv)" = "$(printf 'precious\nprecious')" ] &&
+  [ "$(ls keep | tr '\n' ' ')" = "f0.tsv f1.tsv " ]
+ok $? "a failure at frame 2: exit $rc, frames 0 and 1 kept, no temporary ($(ls keep | tr '\n' ' '))"
+grep -q "^radiosity: fail2.changes:4: frame 2: " err
+ok $? "the failure is the change file's, at its line: $(head -c 120 err)"
+
 n=$(awk 'END { print NR - 1 }' f0.tsv)
 ok $([ "$n" -eq 78 ]; echo $?) "solve leaves the absent shade out ($n elements: 54 walls, 24 box)"
 # the change log (George et al. 1990, Fig. 5): partial frames carry their

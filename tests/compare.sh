@@ -36,12 +36,14 @@ ok $? "reference matrices as .npy, TSV and Matrix Market"
 # ---- the exact matrix: nothing beyond reference's own estimate ------------
 # Reference mode promises 1e-9 relative error per entry; the files carry
 # the doubles exactly (%.17g, float64), so our fill and theirs agree to
-# that promise at worst, and no difference exceeds our own error bound.
+# that promise at worst, and no difference exceeds our own error estimate.
 for f in F.npy F.tsv F.mtx; do
   cmp_ --tolerance 1e-9 --report "$work/r.json" "$cube" "$work/$f"
   ok $? "$f: the exact matrix is within 1e-9"
   [ "$(json entries_beyond_estimate "$work/r.json")" = 0 ]
   ok $? "$f: no entry differs by more than our own error estimate"
+  ! grep -q "bound" "$work/out"
+  ok $? "$f: our error estimates are not called bounds (rad_ff_pair estimates)"
 done
 # The coordinate form of Matrix Market, 1-based, zeros left out.
 { echo '%%MatrixMarket matrix coordinate real general'
@@ -185,19 +187,25 @@ npy(w + "/rect.npy", "<f8", "False", "(3, 4)", struct.pack("<12d", *([0.0] * 12)
 npy(w + "/f4.npy", "<f4", "False", "(18, 18)", struct.pack("<%df" % (n * n), *C))
 npy(w + "/cube.npy", "<f8", "False", "(18, 18, 1)", struct.pack("<%dd" % (n * n), *C))
 npy(w + "/short.npy", "<f8", "False", "(18, 18)", struct.pack("<%dd" % (n * n - 1), *C[1:]))
+N = list(C); N[5] = float("nan")
+npy(w + "/nan.npy", "<f8", "False", "(18, 18)", struct.pack("<%dd" % (n * n), *N))
+N = list(C); N[7] = float("inf")
+npy(w + "/inf.npy", "<f8", "False", "(18, 18)", struct.pack("<%dd" % (n * n), *N))
+open(w + "/stub.npy", "wb").write(b"\x93NUMPY")
 PY
   cmp_ --tolerance 1e-7 "$cube" "$work/P.npy"; ok $(($? != 1)) "C-order .npy perturbed: exit 1"
   [ "$(largest)" = "3 8" ]; ok $? "C-order .npy: the worst pair is i = 3, j = 8 ($(largest))"
   cmp_ --tolerance 1e-5 "$cube" "$work/P.npy"; ok $? "C-order .npy perturbed: exit 0 with 1e-5"
-  for bad in rect f4 cube short; do
+  for bad in rect f4 cube short nan inf stub; do
     cmp_ "$cube" "$work/$bad.npy"; rc=$?
     [ $rc -eq 1 ] && grep -q "$bad.npy" "$work/err"
     ok $? "$bad.npy refused with the file named ($(cat "$work/err"))"
   done
+  grep -q "ends in its preamble" "$work/err"; ok $? "a .npy cut in its preamble is called so"
   grep -q "not square" "$work/err" || cmp_ "$cube" "$work/rect.npy"
   grep -q "not square" "$work/err"; ok $? "a 3 x 4 array is called not square"
 else
-  for k in 1 2 3 4 5 6 7 8 9 10 11; do skip "python3 not found"; done
+  for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15; do skip "python3 not found"; done
 fi
 
 # ---- refused inputs ------------------------------------------------------------

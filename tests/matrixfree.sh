@@ -18,12 +18,18 @@
 cube="$top_srcdir/data/goral1984-cube.scene"
 blocker="$top_srcdir/data/blocker.scene"
 
-# max over elements and bands of |B1 - B2| / |B2| (0 where both are 0)
+# max over elements and bands of |B1 - B2| / |B2| (0 where both are 0);
+# "bad" (which close_to refuses) when a file is missing or empty, the row
+# counts differ, or a value is not a number (awk would read nan or an empty
+# field as 0, and the comparison could not fail)
 relerr() {
+  [ -s "$1" ] && [ -s "$2" ] && [ "$(wc -l < "$1")" -eq "$(wc -l < "$2")" ] || { echo bad; return; }
   paste "$1" "$2" | awk -F'\t' 'NR==1 { for (k=1;k<=NF/2;k++) c[$k]=k; h=NF/2; next }
-    { split("r g b", t, " "); for (i=1;i<=3;i++) { k=c[t[i]]; d=$k-$(k+h); if (d<0) d=-d
+    { split("r g b", t, " "); for (i=1;i<=3;i++) { k=c[t[i]]
+        if ($k !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ || $(k+h) !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/) bad = 1
+        d=$k-$(k+h); if (d<0) d=-d
         s=$(k+h); if (s<0) s=-s; if (s > 0) { d /= s } else if (d > 0) { d = 1e300 }
-        if (d>m) m=d } } END { printf "%.3g\n", m }'
+        if (d>m) m=d } } END { if (bad || NR < 2) print "bad"; else printf "%.3g\n", m }'
 }
 # the JSON report's value of KEY (a number or a string)
 key() { sed -n 's/^ *"'"$2"'": *"\{0,1\}\([^",]*\)"\{0,1\},\{0,1\}$/\1/p' "$1"; }

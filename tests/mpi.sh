@@ -110,6 +110,8 @@ ok $r "closed Cornell box on 2 processes: energy balance ${bal:-missing} within 
 mpi 2 solve --solver gauss-seidel "$top_srcdir/data/grey-cube.scene" 2>"$work/err"
 [ $? -eq 2 ] && grep -q 'radiosity-mpi solves with --solver gauss, cholesky (ScaLAPACK) or jacobi' "$work/err"
 ok $? "gauss-seidel is a usage error (exit 2) naming the solvers"
+grep -q "Try 'radiosity-mpi solve --help'" "$work/err"
+ok $? "the usage hint names radiosity-mpi's own --help"
 printf 'material m reflect 0.5\nquad m 0 0 0 1 0 0 1 1\n' >"$work/bad.scene"
 mpi 2 solve "$work/bad.scene" 2>"$work/err"
 [ $? -eq 1 ] && grep -q "bad.scene:2:" "$work/err"

@@ -42,6 +42,16 @@ ok $? "--snapshots-at 1,3: images at steps 1 and 3 of each of the 4 methods, no 
 ok $? "--snapshots-at 60 beyond the default 48 steps: the race runs to step 60"
 
 # errors
+for l in '1,,3' ',1' '1,' '3,1' '1,1' '-1' '1e1'; do
+  "$RADIOSITY" progress -q --mesh 2x2 --steps 4 --snapshots-at "$l" --snapshot-prefix "$work/bad" -o "$work/bad.tsv" "$cube" 2> "$work/err"
+  rc=$?; [ $rc -eq 2 ] && [ ! -e "$work/bad.tsv" ]; ok $? "--snapshots-at '$l' is a usage error (exit $rc)"
+done
+"$RADIOSITY" progress -q --mesh 2x2 --steps 4 --snapshots-at 2,10 --snapshot-prefix "$work/beyond" -o "$work/beyond.tsv" "$cube" 2> "$work/err"
+rc=$?; [ $rc -eq 2 ] && grep -q "beyond --steps 4" "$work/err"
+ok $? "--snapshots-at 10 with --steps 4: usage error, not a silently missing image (exit $rc)"
+"$RADIOSITY" progress -q --mesh 2x2 --snapshots-at 1,3 --snapshot-prefix "$work/nodir/s" -o "$work/nodir.tsv" "$cube" 2> "$work/err"; rc=$?
+[ $rc -eq 1 ] && grep -q "nodir/s-" "$work/err" && [ "$(wc -l < "$work/err")" -eq 1 ] && [ ! -e "$work/nodir.tsv" ]
+ok $? "a missing snapshot directory is found before the race: exit $rc, $(head -c 100 "$work/err")"
 "$RADIOSITY" progress -q --snapshots 2 "$top_srcdir/data/furnace.scene" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q camera "$work/err"; ok $? "snapshots need a camera: exit 1"
 "$RADIOSITY" progress -q --mesh 2x2 -o "$work/missing/dir.tsv" "$cube" 2> /dev/null; [ $? -eq 1 ]
