@@ -207,6 +207,44 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
     return RAD_OK;
 }
 
+/* Is surface c surface t reversed: opposite normals, the same vertices
+ * within tol, in the opposite order (the back face of a two-sided panel
+ * or disk)?  Then c hides from any pair exactly what t hides, and one of
+ * them suffices as a blocker: a doubled K-gon blocker otherwise costs a
+ * K^2 cone cut per point where the last blocker costs K (occpoint.c). */
+static int reversed_twin(const rad_occ *o, int t, int c, double tol)
+{
+    const int n = o->sfirst[t + 1] - o->sfirst[t];
+    if (n < 3 || n != o->sfirst[c + 1] - o->sfirst[c] ||
+        v3_dot(o->snormal[t], o->snormal[c]) > -1 + 1e-12 ||
+        v3_norm(v3_sub(o->slo[t], o->slo[c])) > tol || v3_norm(v3_sub(o->shi[t], o->shi[c])) > tol)
+        return 0;
+    const rad_vec3 *p = o->sv + o->sfirst[t], *q = o->sv + o->sfirst[c];
+    for (int r = 0; r < n; r++) { /* q[k] against p[r - k] */
+        int same = 1;
+        for (int k = 0; k < n && same; k++)
+            same = v3_norm(v3_sub(q[k], p[((r - k) % n + n) % n])) <= tol;
+        if (same)
+            return 1;
+    }
+    return 0;
+}
+
+/* o->twin: for each surface the first earlier surface it reverses, or -1. */
+static rad_status find_twins(rad_occ *o)
+{
+    o->twin = malloc(sizeof *o->twin * (size_t)(o->nsurf > 0 ? o->nsurf : 1));
+    if (!o->twin)
+        return RAD_ERR_NOMEM;
+    for (int c = 0; c < o->nsurf; c++) {
+        o->twin[c] = -1;
+        for (int t = 0; t < c && o->twin[c] < 0; t++)
+            if (o->twin[t] < 0 && reversed_twin(o, t, c, o->snap))
+                o->twin[c] = t;
+    }
+    return RAD_OK;
+}
+
 /* Append to the candidate list the surfaces that may block surfaces a and
  * b.  Returns the number appended, or -1. */
 static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp, int a, int b,
@@ -243,6 +281,10 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     for (int k = 0; k < nc; k++) {
         int c = owners[k], n = o->sfirst[c + 1] - o->sfirst[c];
         if (c == a || c == b || n < 3)
+            continue;
+        /* a twin hides what its original hides, unless the original is one
+         * of the pair (then the twin lies in that surface's plane) */
+        if (o->twin[c] >= 0 && o->twin[c] != a && o->twin[c] != b)
             continue;
         if (o->mode != RAD_OCC_ALL &&
             clear_of_shaft(sp, nh, all, nall, o->sv + o->sfirst[c], n, o->snormal[c],
@@ -298,6 +340,7 @@ void rad_occ_free(rad_occ *o)
     free(o->shi);
     free(o->stwist);
     free(o->esurf);
+    free(o->twin);
     free(o->cand_off);
     free(o->cand);
     free(o);
@@ -342,6 +385,8 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
     o->accuracy = accuracy;
     o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m);
     rad_status s = load_surfaces(o, m);
+    if (s == RAD_OK)
+        s = find_twins(o);
     if (s == RAD_OK)
         s = rad_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
     else

@@ -48,6 +48,8 @@ struct rad_occ {
     double *stwist;             /* each surface's largest vertex distance from
                                    its plane through the vertex mean */
     int *esurf;                 /* surface of each element */
+    int *twin;                  /* an earlier surface that is this one reversed
+                                   (a two-sided panel's other face), or -1 */
     size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
     int *cand;
     double snap;                /* absolute tolerance (see OCC_SNAP) */

@@ -65,4 +65,24 @@ ok $? "blocker scene, one bounce: the top square is darker behind the blocker th
 "$RADIOSITY" render -q --mesh 2x2 --width 64 --height 64 "$open" -o "$work/box.png"
 ok $? "render the open Cornell box"
 [ "$(head -c 4 "$work/box.png" | tail -c 3)" = PNG ]; ok $? "the picture is a PNG"
+
+# A two-sided blocker (a disk and its reverse, the same 24-gon) hides
+# exactly what the one-sided disk hides: the reversed twin adds nothing
+# (occshaft.c), so every form factor between the plates is the same double
+# in both scenes, in default and reference mode.
+plates='material m reflect 0.5 emit 1
+quad m 0 0 0 1 0 0 1 1 0 0 1 0 mesh 2x2
+quad m 0 0 1 0 1 1 1 1 1 1 0 1 mesh 2x2
+disk m 0.5 0.5 0.5 0 0 1 0.2 24'
+printf '%s\n' "$plates" > "$work/one.scene"
+printf '%s\ndisk m 0.5 0.5 0.5 0 0 -1 0.2 24\n' "$plates" > "$work/two.scene"
+for mode in default reference; do
+  "$RADIOSITY" formfactor -q --accuracy $mode "$work/one.scene" 2> /dev/null |
+    awk -F'\t' 'NR > 1 && $1 < 8 && $2 < 8' > "$work/one.tsv"
+  "$RADIOSITY" formfactor -q --accuracy $mode "$work/two.scene" 2> /dev/null |
+    awk -F'\t' 'NR > 1 && $1 < 8 && $2 < 8' > "$work/two.tsv"
+  [ -s "$work/one.tsv" ] && cmp -s "$work/one.tsv" "$work/two.tsv" &&
+    awk -F'\t' '$3 > 0 && $3 < 0.2 { n++ } END { exit !(n > 0) }' "$work/one.tsv"
+  ok $? "$mode: a two-sided disk blocker gives the one-sided disk's plate-to-plate factors, bit for bit"
+done
 done_testing
