@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_common.h"
 #include "radiosity.h"
 #include "radiosity/changes.h"
 
@@ -30,19 +31,6 @@ static const char SCENE[] = "material w reflect 0.5\n"
                             "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
                             "object box\n quad w 0 0 1  1 0 1  1 1 1  0 1 1\nend\n"
                             "object shade absent\n polygon lamp 3 0 0 2 1 0 2 0 1 2\nend\n";
-
-static int message_ok(const char *msg)
-{
-    size_t plen = strlen(FUZZ_NAME ":");
-    if (strncmp(msg, FUZZ_NAME ":", plen) != 0)
-        return 0;
-    const char *p = msg + plen;
-    if (!(*p >= '1' && *p <= '9'))
-        return 0;
-    while (*p >= '0' && *p <= '9')
-        p++;
-    return p[0] == ':' && p[1] == ' ' && p[2] != '\0';
-}
 
 static int bands_ok(const double *v, double hi)
 {
@@ -91,7 +79,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&err, 0, sizeof err);
     rad_status st = rad_changes_parse(&ch, &scene, (const char *)data, size, FUZZ_NAME, &err);
     if (st != RAD_OK) {
-        if (err.status != st || !message_ok(err.message) || ch.changes || ch.nchanges)
+        if (err.status != st || !fuzz_message_at(err.message, FUZZ_NAME) ||
+            ch.changes || ch.nchanges)
             abort();
     } else {
         unsigned char present[2] = {1, 0};

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_common.h"
 #include "radiosity.h"
 #include "objread.h"
 #include "readfile.h"
@@ -40,13 +41,6 @@ static int message_ok(const char *msg)
             return 1;
     }
     return 0;
-}
-
-static int scene_empty(const rad_scene *s)
-{
-    return s->filename == NULL && s->materials == NULL && s->nmaterials == 0 &&
-           s->surfaces == NULL && s->nsurfaces == 0 && s->objects == NULL &&
-           s->nobjects == 0 && !s->camera.defined;
 }
 
 /* Where the MTL part starts, or size when there is none. */
@@ -101,7 +95,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rad_status st = rad_obj_read(&scene, &r, (const char *)data + mtl_at, size - mtl_at);
     rad_lines_close(&r);
     if (st != RAD_OK) {
-        if (err.status != st || !message_ok(err.message) || !scene_empty(&scene))
+        if (err.status != st || !message_ok(err.message) || !fuzz_scene_empty(&scene))
             abort();
         return 0;
     }

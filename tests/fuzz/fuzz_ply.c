@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "radiosity/plyread.h"
+#include "fuzz_common.h"
 #include "radiosity.h"
 #include "radiosity/render.h"
 
@@ -31,17 +32,9 @@
 /* "fuzz.ply:" then a line number >= 1, then ": " and some reason. */
 static int message_ok(const char *msg, rad_status st)
 {
-    size_t plen = strlen(FUZZ_NAME ":");
     if (st == RAD_ERR_NOMEM)
         return strncmp(msg, FUZZ_NAME, strlen(FUZZ_NAME)) == 0;
-    if (strncmp(msg, FUZZ_NAME ":", plen) != 0)
-        return 0;
-    const char *p = msg + plen;
-    if (!(*p >= '1' && *p <= '9'))
-        return 0;
-    while (*p >= '0' && *p <= '9')
-        p++;
-    return p[0] == ':' && p[1] == ' ' && p[2] != '\0';
+    return fuzz_message_at(msg, FUZZ_NAME);
 }
 
 static int model_empty(const rad_render_model *m)

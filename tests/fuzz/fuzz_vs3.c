@@ -19,31 +19,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_common.h"
 #include "radiosity.h"
 
 #define FUZZ_MAX_ELEMENTS 20000
 #define FUZZ_NAME "fuzz.vs3"
-
-/* "fuzz.vs3:" then a line number >= 1, then ": " and some reason. */
-static int message_ok(const char *msg)
-{
-    size_t plen = strlen(FUZZ_NAME ":");
-    if (strncmp(msg, FUZZ_NAME ":", plen) != 0)
-        return 0;
-    const char *p = msg + plen;
-    if (!(*p >= '1' && *p <= '9'))
-        return 0;
-    while (*p >= '0' && *p <= '9')
-        p++;
-    return p[0] == ':' && p[1] == ' ' && p[2] != '\0';
-}
-
-static int scene_empty(const rad_scene *s)
-{
-    return s->filename == NULL && s->materials == NULL && s->nmaterials == 0 &&
-           s->surfaces == NULL && s->nsurfaces == 0 && s->objects == NULL &&
-           s->nobjects == 0 && !s->camera.defined;
-}
 
 static void check_scene(const rad_scene *s)
 {
@@ -82,7 +62,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&err, 0, sizeof err);
     rad_status st = rad_scene_parse(&scene, (const char *)data, size, FUZZ_NAME, &err);
     if (st != RAD_OK) {
-        if (err.status != st || !message_ok(err.message) || !scene_empty(&scene))
+        if (err.status != st || !fuzz_message_at(err.message, FUZZ_NAME) ||
+            !fuzz_scene_empty(&scene))
             abort();
         return 0;
     }

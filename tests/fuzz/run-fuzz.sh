@@ -81,7 +81,7 @@ for h in $harnesses; do
     for f in $(sources "$h"); do srcs="$srcs $top/src/$f"; done
     echo "run-fuzz.sh: building $work/fuzz_$h"
     # shellcheck disable=SC2046,SC2086
-    "$cc" $flags -I"$work" -I"$top/include" -I"$top/src" $(cflags "$h") "$here/fuzz_$h.c" $srcs \
+    "$cc" $flags -I"$work" -I"$here" -I"$top/include" -I"$top/src" $(cflags "$h") "$here/fuzz_$h.c" $srcs \
         $(libs "$h") -lm -o "$work/fuzz_$h"
     echo "run-fuzz.sh: fuzzing $h for $secs s; log in $work/$h/fuzz.log"
     rc=0
