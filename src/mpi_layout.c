@@ -19,8 +19,7 @@
 #include "scalapack.h"
 #include "status.h"
 
-/* pr x pc = size with pr <= pc and pr as large as possible. */
-static void grid_shape(int size, int *pr, int *pc)
+void mpi_grid_shape(int size, int *pr, int *pc)
 {
     int r = (int)sqrt((double)size);
     while (r > 1 && size % r != 0)
@@ -29,8 +28,7 @@ static void grid_shape(int size, int *pr, int *pc)
     *pc = size / *pr;
 }
 
-/* Global index of local index l on process p of np, blocks of nb. */
-static int global_index(int l, int p, int np, int nb)
+int mpi_global_index(int l, int p, int np, int nb)
 {
     return ((l / nb) * np + p) * nb + l % nb;
 }
@@ -42,7 +40,7 @@ int mpi_grid_open(mpi_grid *g, int n)
     memset(g, 0, sizeof *g);
     MPI_Comm_rank(MPI_COMM_WORLD, &g->rank);
     MPI_Comm_size(MPI_COMM_WORLD, &g->size);
-    grid_shape(g->size, &g->pr, &g->pc);
+    mpi_grid_shape(g->size, &g->pr, &g->pc);
     Cblacs_get(-1, 0, &g->ctxt);
     Cblacs_gridinit(&g->ctxt, "R", g->pr, g->pc);
     Cblacs_gridinfo(g->ctxt, &g->pr, &g->pc, &g->myrow, &g->mycol);
@@ -57,9 +55,9 @@ int mpi_grid_open(mpi_grid *g, int n)
     if (!g->grow || !g->gcol)
         return -1;
     for (int l = 0; l < g->mloc; l++)
-        g->grow[l] = global_index(l, g->myrow, g->pr, g->nb);
+        g->grow[l] = mpi_global_index(l, g->myrow, g->pr, g->nb);
     for (int l = 0; l < g->nloc; l++)
-        g->gcol[l] = global_index(l, g->mycol, g->pc, g->nb);
+        g->gcol[l] = mpi_global_index(l, g->mycol, g->pc, g->nb);
     return 0;
 }
 

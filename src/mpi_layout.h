@@ -32,6 +32,13 @@ typedef struct mpi_grid {
     int desc[9];                /* the n x n matrix */
 } mpi_grid;
 
+/* The global index of local row (or column) l of process row (column) p
+ * of np, blocks of nb (the layout above). */
+int mpi_global_index(int l, int p, int np, int nb);
+
+/* pr x pc = size with pr <= pc and pr as large as possible. */
+void mpi_grid_shape(int size, int *pr, int *pc);
+
 /* The grid for an n x n matrix (collective).  0, or -1 when memory ran
  * out (on this process; the caller agrees with the others). */
 int mpi_grid_open(mpi_grid *g, int n);

@@ -38,6 +38,7 @@
  */
 #include <config.h>
 
+#include <limits.h>
 #include <math.h>
 #include <mpi.h>
 #include <stdio.h>
@@ -333,12 +334,10 @@ static rad_status solve_set(work *w, int solver, const int *bands, int nb, doubl
                             rad_solve_report *rep, rad_error *err)
 {
     const double *rho = w->rho + (size_t)bands[0] * w->n;
-    const int zero = 0, rloc = w->g.mloc, nbr = nb;
-    int descb[9], info, lldb = w->g.lld;
-    int ncl = mpi_grid_local_cols(&w->g, nb);
+    const int zero = 0, ncl = mpi_grid_local_cols(&w->g, nb);
+    int descb[9], info;
     double *R = calloc((size_t)w->g.lld * (size_t)(ncl > 0 ? ncl : 1), sizeof *R);
-    (void)rloc;
-    descinit_(descb, &w->n, &nbr, &w->g.nb, &w->g.nb, &zero, &zero, &w->g.ctxt, &lldb, &info);
+    descinit_(descb, &w->n, &nb, &w->g.nb, &w->g.nb, &zero, &zero, &w->g.ctxt, &w->g.lld, &info);
     rad_status st = R ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     if (mpi_agree(st, err) != RAD_OK) {
         free(R);
@@ -464,13 +463,13 @@ static void gather_f(const work *w, double *F)
         if (!col) /* the others are sending: no way back */
             MPI_Abort(MPI_COMM_WORLD, 1);
         for (int c = 0; c < nloc; c++) {
-            const int j = ((c / w->g.nb) * w->g.pc + pg.mycol) * w->g.nb + c % w->g.nb;
+            const int j = mpi_global_index(c, pg.mycol, w->g.pc, w->g.nb);
             if (p == 0)
                 memcpy(col, w->F + (size_t)c * w->g.lld, sizeof *col * (size_t)mloc);
             else
                 MPI_Recv(col, mloc, MPI_DOUBLE, p, c, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             for (int r = 0; r < mloc; r++) {
-                const int i = ((r / w->g.nb) * w->g.pr + pg.myrow) * w->g.nb + r % w->g.nb;
+                const int i = mpi_global_index(r, pg.myrow, w->g.pr, w->g.nb);
                 F[(size_t)i + (size_t)j * w->n] = col[r];
             }
         }
@@ -544,15 +543,13 @@ static rad_status check_size(const rad_scene *scene, const rad_solve_options *so
     int size;
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     const double n = rad_scene_element_count(scene);
-    if (n > 46340.0 * 46340.0)
-        return rad_fail(err, RAD_ERR_TOOBIG, "the scene's meshes make %.0f elements; use a "
-                        "coarser --mesh", n);
-    int pr = 1;
-    while ((pr + 1) * (pr + 1) <= size)
-        pr++;
-    while (size % pr != 0)
-        pr--;
-    const double nb = RAD_MPI_NB, rows = ceil(n / nb / pr) * nb, cols = ceil(n / nb / (size / pr)) * nb;
+    if (n > INT_MAX)
+        return rad_fail(err, RAD_ERR_TOOBIG, "the scene's meshes make %.0f elements, more "
+                        "than %d; use a coarser --mesh", n, INT_MAX);
+    int pr, pc;
+    mpi_grid_shape(size, &pr, &pc);
+    /* rank 0's blocks: the most rows and columns any process holds */
+    const double nb = RAD_MPI_NB, rows = ceil(n / nb / pr) * nb, cols = ceil(n / nb / pc) * nb;
     r->memory_bytes = matrices * 8 * fmin(rows, n) * fmin(cols, n) + (keep ? 8 * n * n : 0);
     char what[160];
     snprintf(what, sizeof what, "%.0f elements on %d processes (%d x 8 N^2 / P bytes of "
