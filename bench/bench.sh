@@ -12,6 +12,24 @@ echo "== form-factor fill, cube 20x20 (2400 elements, 2,878,800 unordered pairs)
 echo "   (rad_ff_matrix only, ${BENCH_FF_REPEATS:-5} runs each, modes in turn: median and best)"
 "$ff" "$cube" 20x20 ${BENCH_FF_REPEATS:-5}
 echo
+# The fill rate of each instruction-set clone of the kernels (issue 18):
+# ff_rate linked with ffgauss.c and ffcontour.c compiled for one -march
+# (RAD_ONE_ISA, src/vecmath.h); the program above runs the clone the CPU's
+# resolver picks.  Each runs only where the CPU has its instructions.
+has_flags() { for f in "$@"; do grep -q -w "$f" /proc/cpuinfo 2> /dev/null || return 1; done; }
+if [ -x "${ff}_base" ]; then
+  echo "== form-factor fill per instruction-set clone, cube 20x20, default accuracy,"
+  echo "   ${BENCH_ISA_REPEATS:-5} runs each (base: x86-64; v3: AVX2/FMA, the shipped clone; v4: AVX-512)"
+  for isa in base v3 v4; do
+    case $isa in
+      v3) has_flags avx2 fma || { echo "-- $isa: this CPU lacks AVX2/FMA, skipped"; continue; } ;;
+      v4) has_flags avx512f avx512bw avx512dq avx512vl || { echo "-- $isa: this CPU lacks AVX-512, skipped"; continue; } ;;
+    esac
+    echo "-- $isa"
+    "${ff}_$isa" "$cube" 20x20 ${BENCH_ISA_REPEATS:-5} default | grep -v '^#'
+  done
+  echo
+fi
 echo "== form-factor fill, cube 7x7 (294 elements, as shipped): the cost of default's error control"
 "$ff" "$cube" 7x7 ${BENCH_FF_SMALL_REPEATS:-51}
 echo

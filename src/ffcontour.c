@@ -73,9 +73,7 @@ static const double gk_wg[4] = {
      fabs((u)[0]) + fabs((u)[1]) + fabs((u)[2]) + fabs((u)[3]) < 1e150 * (d))
 #define PAR_FLUSH par_flush
 
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+RAD_KERNEL_CLONES
 static void par_flush(const double *u, const double *d, const double *dot, int m, double *s,
                       double *mag)
 {

@@ -371,9 +371,7 @@ static inline __attribute__((always_inline)) double nine_eval(const pair_batch *
     return hsum4(acc);
 }
 
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+RAD_KERNEL_CLONES
 double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, int touch)
 {
     const rad_vec3 shift = v3_sub(b->centroid, a->centroid);
@@ -481,9 +479,7 @@ static inline __attribute__((always_inline)) double quad_eval_k(const pair_batch
 }
 
 /* quad_eval_k for the general paths, in its own AVX2 clone */
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+RAD_KERNEL_CLONES
 static double quad_eval_any(const pair_batch *bt, int m, double inv_s2, int k)
 {
     return quad_eval_k(bt, m, inv_s2, k, 0);
@@ -672,18 +668,14 @@ tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, do
     return tiers_general(a, b, one_batch ? &bt : NULL, m, pp, scale2, dmin, rel, s, e);
 }
 
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+RAD_KERNEL_CLONES
 static int tiers_short(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
                        double dplane, double tol, double rel, double *s, double *e)
 {
     return tiers(a, b, scale2, gap2, dplane, tol, rel, s, e, 1);
 }
 
-#if defined(HAVE_ATTRIBUTE_TARGET_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+RAD_KERNEL_CLONES
 static int tiers_full(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2,
                       double dplane, double tol, double rel, double *s, double *e)
 {

@@ -48,6 +48,19 @@
 
 /* sqrt(1/2) as bits: subtracting it shifts the exponent boundary so that
  * the reduced argument lands in [sqrt(1/2), sqrt(2)). */
+/* The instruction-set clones of the form-factor kernels (ffgauss.c,
+ * ffcontour.c): an AVX2/FMA (x86-64-v3) clone beside the baseline, picked
+ * at load time by the compiler's resolver from what the CPU supports.  The
+ * resolver cannot be overruled at run time, so a build that defines
+ * RAD_ONE_ISA compiles the kernels for its -march alone: make bench links
+ * bench/ff_rate_base and bench/ff_rate_v3 (and _v4, AVX-512) that way to
+ * measure each clone's fill rate. */
+#if defined(HAVE_ATTRIBUTE_TARGET_CLONES) && !defined(RAD_ONE_ISA)
+#define RAD_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define RAD_KERNEL_CLONES
+#endif
+
 #define RAD_LOG_SQRT_HALF_BITS 0x3fe6a09e667f3bcdULL
 #define RAD_LOG_EXP_MASK 0xfff0000000000000ULL
 
