@@ -213,6 +213,17 @@ rad_status rad_afile_check(const char *path, rad_error *err)
     return rs;
 }
 
+int rad_afile_is_direct(const char *path)
+{
+    if (held_descriptor(path) >= 0)
+        return 1;
+    char *target = follow_links(path);
+    struct stat st;
+    int direct = target && stat(target, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+    free(target);
+    return direct;
+}
+
 /* Flush, sync (a temporary) and close f->fp: 0, or the errno. */
 static int finish(rad_afile *f)
 {

@@ -40,4 +40,9 @@ void rad_afile_abort(rad_afile *f);
  * a directory or a broken link chain. */
 rad_status rad_afile_check(const char *path, rad_error *err);
 
+/* Would path be written in place: a held descriptor ("-", /dev/fd/N, ...),
+ * or (links followed) a device, FIFO or socket?  A pattern that makes one
+ * file per frame must name files, not these. */
+int rad_afile_is_direct(const char *path);
+
 #endif /* RAD_ATOMICFILE_H */

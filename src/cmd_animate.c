@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atomicfile.h"
 #include "cli.h"
 #include "radiosity/animate.h"
 #include "radiosity/export.h"
@@ -122,7 +123,9 @@ static void help(void)
            "Every path is checked before the work.  Each regular file is written to a\n"
            "temporary beside it as its frame is done, and all are renamed together\n"
            "at the end: a failed or interrupted run replaces none; a device or FIFO\n"
-           "is written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"
+           "given to --trace, --report, --errors or --log is written in place, but a\n"
+           "frame pattern must make files (a frame path naming a device, FIFO or\n"
+           "descriptor is an error).  Exit status: 0 on success, 1 on an error, 2 on a\n"
            "usage error; 128 + signal when interrupted.\n");
 }
 
@@ -610,6 +613,14 @@ static int check_paths(const anim_run *r)
                 continue;
             if (pattern_path(path, sizeof path, pat[k], f))
                 rc = 1;
+            else if (rad_afile_is_direct(path)) {
+                /* /dev/fd/%d would write frame 0 to standard input, frame
+                 * 1 over the summary... */
+                cli_error("--%s: frame %d's path '%s' names a descriptor, device or FIFO; "
+                          "a per-frame pattern must name files",
+                          k ? "frames" : "elements", f, path);
+                rc = 1;
+            }
             cli_output one = {path, w_trace, r};
             if (!rc && cli_outputs_check(&one, 1))
                 rc = 1;

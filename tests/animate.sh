@@ -266,6 +266,14 @@ r=$(same ip3.tsv f3.tsv 1e-9); ok $? "--importance paper: the frame with the sha
 r=$(same iq3.tsv m3.tsv 1e-9); ok $? "--importance paper, three partial moves then converged: a fresh solve: $r"
 "$RADIOSITY" animate --importance guess room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--importance guess is a usage error"
+# a per-frame pattern must make files: frame 1's path here is a FIFO (were
+# it opened, the run would block with no reader: timeout ends it)
+mkfifo fifo1.tsv
+timeout 60 "$RADIOSITY" animate -q --elements 'fifo%d.tsv' room.scene all.changes 2> err; rc=$?
+[ $rc -eq 1 ] && grep -q "frame 1's path 'fifo1.tsv' names a descriptor, device or FIFO" err &&
+  [ ! -e fifo0.tsv ] && [ -p fifo1.tsv ]
+ok $? "--elements whose frame 1 is a FIFO: refused before any frame (exit $rc), $(head -c 100 err)"
+rm -f fifo1.tsv
 # a damaged log is refused naming its line, before any frame is written
 badlog() { # badlog DESCRIPTION EXPECTED-MESSAGE (the log in bad.log)
   rm -f y3.tsv
