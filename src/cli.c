@@ -90,16 +90,26 @@ int cli_parse_mesh(const char *arg, int *n, int *m)
     return cli_parse_int(buf, 1, 100000, n) || cli_parse_int(x + 1, 1, 100000, m) ? -1 : 0;
 }
 
+/* Shaped like a grid "PxQ", valid or not ("4x4", "0x2", "-1x3"): digits
+ * and signs on both sides of one 'x'. */
+static int grid_shaped(const char *w)
+{
+    const char *const num = "0123456789+-";
+    size_t a = strspn(w, num);
+    return a > 0 && w[a] == 'x' && strspn(w + a + 1, num) > 0 &&
+           w[a + 1 + strspn(w + a + 1, num)] == '\0';
+}
+
 /* getopt_long takes an optional argument only as "--patches=PxQ"; the
- * documented "--patches PxQ" is joined here when the next word is a grid
- * (a scene file named like "4x4" would need "./4x4"). */
+ * documented "--patches PxQ" is joined here when the next word is shaped
+ * like a grid, so that a bad one ("0x2") gets the --patches message (a
+ * scene file named like "4x4" would need "./4x4"). */
 void cli_join_optional(int *argc, char **argv)
 {
     for (int k = 1; k + 1 < *argc; k++) {
-        int p, q;
         if (strcmp(argv[k], "--") == 0)
             return;
-        if (strcmp(argv[k], "--patches") != 0 || cli_parse_mesh(argv[k + 1], &p, &q) != 0)
+        if (strcmp(argv[k], "--patches") != 0 || !grid_shaped(argv[k + 1]))
             continue;
         /* lives as long as argv, the process: never freed */
         char *joined = malloc(strlen(argv[k + 1]) + sizeof "--patches=");

@@ -142,6 +142,9 @@ usage --solver progressive --matrix none --form-factors "$work/F.mtx"
 ok $? "--matrix none --form-factors: exit 2"
 usage --solver progressive --patches 0x2; ok $? "--patches 0x2: exit 2"
 usage --solver progressive --patches=4; ok $? "--patches=4: exit 2"
+"$RADIOSITY" solve --solver progressive --patches 0x2 "$cube" 2>&1 > /dev/null |
+  grep -q -- "--patches takes PxQ"
+ok $? "--patches 0x2 (two words) gets the --patches message"
 usage --solver gauss --patches 2x2; ok $? "--patches 2x2 with gauss: exit 2"
 "$RADIOSITY" solve --help > "$work/help"
 for o in "--matrix MODE" "--patches\[=PxQ\]"; do
