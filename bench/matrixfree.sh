@@ -76,3 +76,25 @@ awk -v mesh="$mesh" -v shots="$shots" '
     printf "element shooting, %s (%d elements), %d shots: %.3g pairs/s, %.3g pairs per CPU second, %.3g s per shot\n",
       mesh, n, shots, (t > 0 ? p / t : 0), (cpu > 0 ? p / cpu : 0), (shots > 0 ? t / shots : 0) }' \
   "$tmp/el.json" "$tmp/el.log"
+
+# the same pair integrals in the dense fill and in matrix-free shots, on
+# one core, back to back (user CPU seconds: the dense run's output and
+# the page faults of its matrix are system time): the issue's target is
+# the dense path's rate
+mesh=${BENCH_MFREE_PAIR_MESH:-30x30} shots=${BENCH_MFREE_PAIR_SHOTS:-2000}
+for round in 1 2 3; do
+  /usr/bin/time -f 'dense_user %U' "$rad" formfactor -q --threads 1 --mesh "$mesh" \
+    -o "$tmp/F.npy" "$cube" 2>> "$tmp/pair.log" || true
+  rm -f "$tmp/F.npy"
+  /usr/bin/time -f 'free_user %U' "$rad" solve -q --threads 1 --mesh "$mesh" --solver progressive \
+    --matrix none --max-iterations "$shots" --report "$tmp/pr.json" "$cube" 2>> "$tmp/pair.log" || true
+done
+n=$(sed -n 's/.*"elements": *\([0-9]*\).*/\1/p' "$tmp/pr.json" | head -n 1)
+awk -v n="$n" -v shots="$shots" -v mesh="$mesh" '
+  function med(x, m,   i, j, t) { for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
+    return m % 2 ? x[(m + 1) / 2] : (x[m / 2] + x[m / 2 + 1]) / 2 }
+  /^dense_user/ { d[++nd] = $2 } /^free_user/ { f[++nf] = $2 }
+  END { if (nd == 0 || nf == 0 || n == "") { print "(pair rates: a run failed)"; exit }
+    dr = n * (n - 1) / 2 / med(d, nd); fr = shots * (n - 1) / med(f, nf)
+    printf "pair rate on one core, cube %s (%d elements), medians of %d: dense fill %.3g pairs per CPU second, matrix-free shots %.3g (ratio %.2f)\n",
+      mesh, n, nd, dr, fr, fr / dr }' "$tmp/pair.log"
