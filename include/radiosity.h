@@ -197,13 +197,30 @@ typedef enum rad_accuracy {
  * RAD_ERR_INVALID with the message "interrupted"). */
 typedef int (*rad_progress_fn)(void *user, const char *stage, double done, double total);
 
+/* How the form factors are computed. */
+typedef enum rad_ff_method {
+    RAD_FF_CONTOUR = 0,         /* the contour integral, element to element
+                                   (Goral et al. 1984, eq. 13; the default) */
+    RAD_FF_HEMICUBE             /* the hemicube at each element's centre
+                                   (Cohen & Greenberg 1985): row i of F from
+                                   i's centre, visibility by a z-buffer */
+} rad_ff_method;
+
 typedef struct rad_ff_options {
     int quadrature;             /* Gauss points per edge, 1..RAD_GAUSS_MAX (3) */
     rad_accuracy accuracy;
     int threads;                /* 0: OpenMP default */
     rad_progress_fn progress;   /* may be NULL */
     void *progress_user;
+    rad_ff_method method;       /* contour (default) or hemicube */
+    int resolution;             /* hemicube: pixels along the top face, even,
+                                   2..RAD_HEMICUBE_MAX (RAD_HEMICUBE_DEFAULT) */
 } rad_ff_options;
+
+#define RAD_HEMICUBE_DEFAULT 64
+#define RAD_HEMICUBE_MAX 4096
+/* "contour", "hemicube", or NULL for a value out of range. */
+RAD_API const char *rad_ff_method_name(int method);
 
 #define RAD_GAUSS_MAX 20
 /* A row of F may exceed 1 by this much before the fill calls it wrong:

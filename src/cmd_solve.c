@@ -126,7 +126,13 @@ int cli_solve_check(const cli_solve *s)
     const rad_solver v = s->solve.solver;
     const char *name = rad_solver_name(v);
     const char *bad = NULL;
-    if (s->given_bounces && s->given_solver)
+    if (cli_common_check(&s->common))
+        return 2;
+    if (s->common.ff.method == RAD_FF_HEMICUBE && s->solve.patch_p > 0 &&
+        s->matrix == RAD_MATRIX_NONE)
+        bad = "--patches PxQ with --matrix none needs the contour integral: the hemicube "
+              "shoots from elements";
+    else if (s->given_bounces && s->given_solver)
         bad = "--bounces K is its own solver (Jacobi from B = E, exactly K reflections): "
               "give it without --solver";
     else if (s->given_bounces && (s->given_tolerance || s->given_max_iterations))
