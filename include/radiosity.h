@@ -233,7 +233,8 @@ RAD_API const char *rad_accuracy_name(int accuracy);
 
 /* Form factor from polygon a (na vertices, area computed) to polygon b, both
  * planar and convex, counter-clockwise about their fronts.  If errest is not
- * NULL it receives an estimate of the absolute error of the result. */
+ * NULL it receives an estimate of the absolute error of the result.  Always
+ * the contour integral (opt->method is not read: the hemicube gives rows). */
 RAD_API double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
                        const rad_ff_options *opt, double *errest);
 
@@ -266,7 +267,8 @@ typedef struct rad_ff_stats {
  * F_ii = 0.  Each unordered pair is computed once; the other entry follows
  * by reciprocity A_i F_ij = A_j F_ji.  errest (n x n, may be NULL) receives
  * the estimated absolute error of each entry; stats (may be NULL) what the
- * fill found. */
+ * fill found.  With opt->method RAD_FF_HEMICUBE each row i is a hemicube
+ * on element i's centre instead (no reciprocity; errest NaN). */
 RAD_API rad_status rad_ff_matrix(const rad_mesh *mesh, const rad_ff_options *opt, double *F,
                          double *errest, rad_ff_stats *stats, rad_error *err);
 
