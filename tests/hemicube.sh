@@ -81,4 +81,26 @@ awk -F'\t' -v d="$d" 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
 ok $? "... and every B lies within the bounds that its rows' sums (d = $d) allow"
 "$RADIOSITY" progress -q $hc --resolution 16 --steps 20 --matrix none -o "$work/race.tsv" "$furnace"
 ok $? "progress --matrix none with the hemicube runs"
+# ---- sweep: the resolution as an axis ------------------------------------------------
+"$RADIOSITY" sweep -q --meshes 2,4 --accuracies default --resolutions 16,32 -o "$work/sw.tsv" \
+  "$furnace"
+ok $? "sweep --resolutions 16,32 exits 0"
+awk -F'\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+  $c["method"] == "hemicube" { if (!(($c["mesh"] " " $c["resolution"]) in h)) nh++
+    h[$c["mesh"] " " $c["resolution"]] = 1
+    for (k = 0; k < 2; k++) { v = (k ? $c["row_sum_max"] : $c["row_sum_min"]) - 1
+      if (v < 0) v = -v; if (v > 1e-12) bad++ }
+    if ($c["accuracy"] != "-" || !($c["rms_error"] + 0 <= 1e-12)) bad++
+    if (!($c["ff_error"] + 0 > 0)) bad++ }
+  $c["method"] == "contour" { if ($c["resolution"] != "-") bad++; nc++ }
+  END { exit !(nh == 4 && nc == 2 && !bad) }' "$work/sw.tsv"
+ok $? "sweep: a hemicube row per mesh and resolution, rows of F summing to 1 within 1e-12, the furnace's B exact (rms_error <= 1e-12), ff_error measured"
+fails=0
+for bad in 15 0 16,abc 8192; do
+  "$RADIOSITY" sweep -q --meshes 1 --resolutions "$bad" "$furnace" > "$work/out" 2> "$work/err"
+  [ $? -eq 2 ] && grep -q -- "--resolutions" "$work/err" || { diag "$bad"; fails=1; }
+done
+ok $fails "sweep --resolutions 15, 0, 16,abc, 8192: usage errors"
+"$RADIOSITY" sweep --help | grep -q -- "--resolutions LIST"
+ok $? "sweep --help describes --resolutions"
 done_testing
