@@ -66,6 +66,12 @@ if [ "${BENCH_MFREE:-1}" = 1 ]; then
   sh "$(dirname "$0")/matrixfree.sh" "$rad" "$data"
 fi
 
+echo
+echo "== the hemicube (Cohen & Greenberg 1985) against resolution (BENCH_HC=0 skips; ~2-5 min)"
+if [ "${BENCH_HC:-1}" = 1 ]; then
+  sh "$(dirname "$0")/hemicube.sh" "$rad" "$data"
+fi
+
 # The solve phase of every solver on the 15,000-element cube (issue 18).
 # Long (form factors ~9 s per run, gauss ~80 s, 3.6 GB): only with
 # BENCH_CUBE50=1; BENCH_CUBE50_SOLVERS and BENCH_CUBE50_MESH choose.

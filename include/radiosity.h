@@ -197,13 +197,30 @@ typedef enum rad_accuracy {
  * RAD_ERR_INVALID with the message "interrupted"). */
 typedef int (*rad_progress_fn)(void *user, const char *stage, double done, double total);
 
+/* How the form factors are computed. */
+typedef enum rad_ff_method {
+    RAD_FF_CONTOUR = 0,         /* the contour integral, element to element
+                                   (Goral et al. 1984, eq. 13; the default) */
+    RAD_FF_HEMICUBE             /* the hemicube at each element's centre
+                                   (Cohen & Greenberg 1985): row i of F from
+                                   i's centre, visibility by a z-buffer */
+} rad_ff_method;
+
 typedef struct rad_ff_options {
     int quadrature;             /* Gauss points per edge, 1..RAD_GAUSS_MAX (3) */
     rad_accuracy accuracy;
     int threads;                /* 0: OpenMP default */
     rad_progress_fn progress;   /* may be NULL */
     void *progress_user;
+    rad_ff_method method;       /* contour (default) or hemicube */
+    int resolution;             /* hemicube: pixels along the top face, even,
+                                   2..RAD_HEMICUBE_MAX (RAD_HEMICUBE_DEFAULT) */
 } rad_ff_options;
+
+#define RAD_HEMICUBE_DEFAULT 64
+#define RAD_HEMICUBE_MAX 4096
+/* "contour", "hemicube", or NULL for a value out of range. */
+RAD_API const char *rad_ff_method_name(int method);
 
 #define RAD_GAUSS_MAX 20
 /* A row of F may exceed 1 by this much before the fill calls it wrong:
@@ -216,7 +233,8 @@ RAD_API const char *rad_accuracy_name(int accuracy);
 
 /* Form factor from polygon a (na vertices, area computed) to polygon b, both
  * planar and convex, counter-clockwise about their fronts.  If errest is not
- * NULL it receives an estimate of the absolute error of the result. */
+ * NULL it receives an estimate of the absolute error of the result.  Always
+ * the contour integral (opt->method is not read: the hemicube gives rows). */
 RAD_API double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
                        const rad_ff_options *opt, double *errest);
 
@@ -249,7 +267,8 @@ typedef struct rad_ff_stats {
  * F_ii = 0.  Each unordered pair is computed once; the other entry follows
  * by reciprocity A_i F_ij = A_j F_ji.  errest (n x n, may be NULL) receives
  * the estimated absolute error of each entry; stats (may be NULL) what the
- * fill found. */
+ * fill found.  With opt->method RAD_FF_HEMICUBE each row i is a hemicube
+ * on element i's centre instead (no reciprocity; errest NaN). */
 RAD_API rad_status rad_ff_matrix(const rad_mesh *mesh, const rad_ff_options *opt, double *F,
                          double *errest, rad_ff_stats *stats, rad_error *err);
 

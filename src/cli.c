@@ -163,6 +163,23 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_FF_METHOD:
+        for (int m = RAD_FF_CONTOUR; m <= RAD_FF_HEMICUBE; m++)
+            if (strcmp(arg, rad_ff_method_name(m)) == 0) {
+                c->ff.method = (rad_ff_method)m;
+                return 0;
+            }
+        cli_error("--form-factors-method takes contour or hemicube, not '%s'", arg);
+        return 2;
+    case OPT_RESOLUTION:
+        c->given_resolution = 1;
+        if (cli_parse_int(arg, 2, RAD_HEMICUBE_MAX, &c->ff.resolution) ||
+            c->ff.resolution % 2 != 0) {
+            cli_error("--resolution takes an even whole number from 2 to %d, not '%s'",
+                      RAD_HEMICUBE_MAX, arg);
+            return 2;
+        }
+        return 0;
     case 'q':
     case OPT_QUIET:
         c->quiet = 1;
@@ -173,6 +190,16 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
     default:
         return 1;
     }
+}
+
+int cli_common_check(const cli_common *c)
+{
+    if (c->given_resolution && c->ff.method != RAD_FF_HEMICUBE) {
+        cli_error("--resolution is the hemicube's: give it with --form-factors-method "
+                  "hemicube");
+        return 2;
+    }
+    return 0;
 }
 
 int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)

@@ -22,6 +22,7 @@ typedef struct cli_common {
     rad_ff_options ff;
     int quiet;
     int strict;                 /* --strict: an unmet accuracy promise is an error */
+    int given_resolution;       /* --resolution was given */
 } cli_common;
 
 /* Long-option ids for the common options (above any short option). */
@@ -32,6 +33,8 @@ enum {
     OPT_THREADS,
     OPT_QUIET,
     OPT_STRICT,
+    OPT_FF_METHOD,
+    OPT_RESOLUTION,
     OPT_HELP,
     OPT_COMMON_END
 };
@@ -58,7 +61,25 @@ enum {
     "  -q, --quiet             no progress bar or summary\n"                     \
     "  -h, --help              show this help and exit\n"
 
+/* The form-factor method, for the commands that can use either
+ * (formfactor, solve, render, progress): cli_common_option parses them. */
+#define CLI_METHOD_LONGOPTS                                               \
+    {"form-factors-method", required_argument, NULL, OPT_FF_METHOD},      \
+    {"resolution", required_argument, NULL, OPT_RESOLUTION}
+
+#define CLI_METHOD_HELP                                                             \
+    "      --form-factors-method M  contour (the contour integral between\n"        \
+    "                          elements, the default) or hemicube (Cohen &\n"       \
+    "                          Greenberg 1985: a z-buffer on each element's centre;\n"\
+    "                          faster for large scenes, less accurate: its pixels\n"\
+    "                          alias and its centre stands for the element)\n"    \
+    "      --resolution R      hemicube: R x R pixels on the top face, R x R/2 on\n"\
+    "                          each side (even, 2-4096; default 64)\n"
+
 void cli_common_init(cli_common *c);
+/* After the options: --resolution without --form-factors-method hemicube
+ * is a usage error.  0, or 2 (printed). */
+int cli_common_check(const cli_common *c);
 /* Handle a common option: 0 handled, 1 not a common option, 2 usage error
  * (message printed). */
 int cli_common_option(cli_common *c, int opt, const char *arg);
@@ -182,6 +203,7 @@ typedef struct cli_solve {
     {"patches", optional_argument, NULL, OPT_PATCHES},                    \
     {"matrix", required_argument, NULL, OPT_MATRIX},                      \
     {"vertex-rule", required_argument, NULL, OPT_VERTEX_RULE},            \
+    CLI_METHOD_LONGOPTS,                                                  \
     CLI_COMMON_LONGOPTS
 
 #define CLI_SOLVE_HELP                                                             \
@@ -224,6 +246,7 @@ typedef struct cli_solve {
     "                          extrapolate (linear, Goral et al. 1984; default)\n"\
     "                          or corner ((vertex + nearest interior vertex)/2\n"\
     "                          = mean of the elements at the vertex)\n"       \
+    CLI_METHOD_HELP                                                                \
     CLI_COMMON_HELP
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */

@@ -22,7 +22,7 @@ static void help(void)
            "distinct elements as a tab-separated table with the header\n"
            "'i j F error': F is the form factor from element i to element j\n"
            "(0-based, in mesh order), error its estimated absolute error (NaN\n"
-           "where the accuracy mode gives no estimate: classic).\n"
+           "where the accuracy mode gives no estimate: classic, and the hemicube).\n"
            "\n"
            "With --per-surface, the factors between whole surfaces instead:\n"
            "F_SK = (1/A_S) sum over elements i of S and j of K of A_i F_ij, one\n"
@@ -38,12 +38,14 @@ static void help(void)
            "Options:\n"
            "  -o, --output FILE       write the table to FILE (default: standard output)\n"
            "      --per-surface       surface-to-surface factors instead of elements'\n"
+           CLI_METHOD_HELP
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
            "  radiosity formfactor --mesh 3x3 data/grey-cube.scene -o F.tsv\n"
            "  radiosity formfactor --mesh 20x20 data/goral1984-cube.scene -o F.npy\n"
            "  radiosity formfactor --per-surface --accuracy reference data/grey-cube.scene\n"
+           "  radiosity formfactor --per-surface --form-factors-method hemicube --resolution 256 data/grey-cube.scene\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
@@ -106,6 +108,7 @@ int cmd_formfactor(int argc, char **argv)
     enum { OPT_PER_SURFACE = OPT_COMMON_END };
     static const struct option longopts[] = {{"output", required_argument, NULL, 'o'},
                                               {"per-surface", no_argument, NULL, OPT_PER_SURFACE},
+                                              CLI_METHOD_LONGOPTS,
                                               CLI_COMMON_LONGOPTS,
                                               {NULL, 0, NULL, 0}};
     cli_common c;
@@ -135,6 +138,8 @@ int cmd_formfactor(int argc, char **argv)
         cli_error(optind >= argc ? "formfactor needs a SCENE" : "formfactor takes one SCENE");
         return cli_usage_hint("formfactor");
     }
+    if (cli_common_check(&c))
+        return cli_usage_hint("formfactor");
     rad_scene scene;
     rad_mesh mesh;
     rad_error err;

@@ -89,6 +89,7 @@ static void help(void)
            "                          2-5; the sorted_ambient images show the ambient\n"
            "                          term); --steps grows to the last one if not given\n"
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
+           CLI_METHOD_HELP
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
@@ -529,6 +530,7 @@ int cmd_progress(int argc, char **argv)
         {"snapshots", required_argument, NULL, OPT_SNAPSHOTS},
         {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
         {"snapshots-at", required_argument, NULL, OPT_SNAPSHOTS_AT},
+        CLI_METHOD_LONGOPTS,
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
@@ -545,6 +547,8 @@ int cmd_progress(int argc, char **argv)
         if (parse_option(&a, opt, optarg) != 0)
             return cli_usage_hint("progress");
     }
+    if (cli_common_check(&a.common))
+        return cli_usage_hint("progress");
     if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
         cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
         return cli_usage_hint("progress");

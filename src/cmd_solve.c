@@ -126,7 +126,13 @@ int cli_solve_check(const cli_solve *s)
     const rad_solver v = s->solve.solver;
     const char *name = rad_solver_name(v);
     const char *bad = NULL;
-    if (s->given_bounces && s->given_solver)
+    if (cli_common_check(&s->common))
+        return 2;
+    if (s->common.ff.method == RAD_FF_HEMICUBE && s->solve.patch_p > 0 &&
+        s->matrix == RAD_MATRIX_NONE)
+        bad = "--patches PxQ with --matrix none needs the contour integral: the hemicube "
+              "shoots from elements";
+    else if (s->given_bounces && s->given_solver)
         bad = "--bounces K is its own solver (Jacobi from B = E, exactly K reflections): "
               "give it without --solver";
     else if (s->given_bounces && (s->given_tolerance || s->given_max_iterations))
@@ -210,6 +216,8 @@ static void run_info(const cli_run *r, rad_run_info *in)
     in->scene = r->scene.filename;
     in->accuracy = rad_accuracy_name(r->s->common.ff.accuracy);
     in->quadrature = r->s->common.ff.quadrature;
+    in->method = rad_ff_method_name(r->s->common.ff.method);
+    in->resolution = r->s->common.ff.resolution;
     in->nelements = res->mesh.nelements;
     in->memory_bytes = res->memory_bytes;
     in->memory_available = res->memory_available;
@@ -296,7 +304,12 @@ static int keep_shot(void *user, const rad_shot *row)
 static void summary(const cli_run *r)
 {
     rad_run_info in;
+    char hc[32];
     run_info(r, &in);
+    if (r->s->common.ff.method == RAD_FF_HEMICUBE) { /* its "accuracy" is the resolution */
+        snprintf(hc, sizeof hc, "hemicube %d", in.resolution);
+        in.accuracy = hc;
+    }
     const rad_solve_report *s = in.solve;
     if (r->res.matrix == RAD_MATRIX_NONE)
         fprintf(stderr, "radiosity: %d elements, matrix none (form factors per shot, %.1f MiB "
@@ -308,7 +321,9 @@ static void summary(const cli_run *r)
                         "factors %.3g s (%.3g pairs/s, %s), solve %.3g s\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
                 in.ff_pairs_per_second, in.accuracy, in.t_solve);
-    if (in.ff && in.ff->vis_needed)
+    if (in.ff && r->s->common.ff.method == RAD_FF_HEMICUBE)
+        fprintf(stderr, "radiosity: visibility: the hemicubes' z-buffers\n");
+    else if (in.ff && in.ff->vis_needed)
         fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
                         "%.0f partly; %.3g s\n",
                 in.ff->vis_pairs_blockable, in.ff->vis_pairs_tested, in.ff->vis_pairs_blocked,

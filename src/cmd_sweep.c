@@ -1,5 +1,5 @@
 /* cmd_sweep.c -- `radiosity sweep`: time against error over meshes, accuracy
- * modes and solvers.
+ * modes, hemicube resolutions and solvers.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -14,6 +14,16 @@
  *     rms = sqrt( sum_f A_f (B_c(f) - B_f)^2 / sum_f A_f ),
  * averaged over the colour bands (Cohen et al. 1988, eq. 14), and
  * max = the largest |B_c(f) - B_f|.
+ *
+ * With --resolutions, each mesh is also solved with the hemicube's form
+ * factors (hemicube.h) at each resolution R, and every row gets the error
+ * of its F against the contour integral in reference mode on the same
+ * mesh: ff_error = max_i sum_j |F_ij - F_ij(reference)|, the infinity
+ * norm of dF, which bounds what F's error does to B (the relative change
+ * of B is at most k / (1 - k), k = ||(I - rho F)^-1|| ||rho dF||: Higham,
+ * Accuracy and Stability of Numerical Algorithms, 2002, theorem 7.2).
+ * What the 1988 paper traded for speed is then one table: the time and
+ * both errors against R.
  */
 #include <config.h>
 
@@ -28,7 +38,8 @@
 #include "lapack.h"
 #include "plotxy.h"
 
-enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT };
+enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT,
+       OPT_RESOLUTIONS };
 
 #define MAX_LIST 32
 
@@ -38,6 +49,7 @@ typedef struct sweep_args {
     int meshes[MAX_LIST], nmeshes;
     int acc[3], nacc;
     int solvers[6], nsolvers;
+    int res[MAX_LIST], nres;    /* --resolutions: hemicube rows */
     int truth_mesh;
     const char *output, *plot;
 } sweep_args;
@@ -75,6 +87,10 @@ static void help(void)
            "      --accuracies LIST   classic,default,reference (default: all)\n"
            "      --solvers LIST      gauss,cholesky,jacobi,gauss-seidel,cg,progressive\n"
            "                          (default gauss)\n"
+           "      --resolutions LIST  also solve each mesh with the hemicube's form\n"
+           "                          factors at these resolutions (even, 2-4096, e.g.\n"
+           "                          16,32,64,128,256), and give every row the error of\n"
+           "                          its F against the reference contour integral\n"
            "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
            "  -o, --output FILE       the table (TSV; default standard output)\n"
            "      --plot FILE.png     error against time, log-log, a curve per mode\n"
@@ -85,12 +101,16 @@ static void help(void)
            "      --help              show this help and exit\n"
            "\n"
            "Columns: mesh elements accuracy solver seconds_formfactor seconds_solve\n"
-           "seconds_total rms_error max_error truth.\n"
+           "seconds_total rms_error max_error truth row_sum_min row_sum_max method\n"
+           "resolution ff_error: method is contour or hemicube (accuracy '-' for the\n"
+           "hemicube, resolution '-' for the contour), ff_error max_i sum_j |F_ij -\n"
+           "F_ij(reference contour)| on the same mesh (with --resolutions; else nan).\n"
            "\n"
            "Examples:\n"
            "  radiosity sweep --meshes 1,2,4,8 data/furnace.scene\n"
            "  radiosity sweep --meshes 2,5,10 --accuracies classic,default data/goral1984-cube.scene\n"
            "  radiosity sweep --meshes 1,2,3,5 --solvers gauss,jacobi --plot sweep.png data/grey-cube.scene\n"
+           "  radiosity sweep --meshes 8 --accuracies default --resolutions 16,64,256 data/grey-cube.scene\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
@@ -118,6 +138,23 @@ static int parse_list(const char *arg, const char *(*name)(int), int nnames, int
     return n > 0 ? n : -1;
 }
 
+/* "16,32,..." into out[MAX_LIST]: even resolutions; their number or -1. */
+static int parse_resolutions(const char *arg, int *out)
+{
+    char buf[256];
+    int n = 0;
+    if (strlen(arg) >= sizeof buf)
+        return -1;
+    strcpy(buf, arg);
+    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        int v;
+        if (n >= MAX_LIST || cli_parse_int(t, 2, RAD_HEMICUBE_MAX, &v) || v % 2 != 0)
+            return -1;
+        out[n++] = v;
+    }
+    return n > 0 ? n : -1;
+}
+
 static int parse_args(sweep_args *a, int argc, char **argv)
 {
     static const struct option longopts[] = {
@@ -125,6 +162,7 @@ static int parse_args(sweep_args *a, int argc, char **argv)
         {"accuracies", required_argument, NULL, OPT_ACCURACIES},
         {"solvers", required_argument, NULL, OPT_SOLVERS},
         {"truth-mesh", required_argument, NULL, OPT_TRUTH_MESH},
+        {"resolutions", required_argument, NULL, OPT_RESOLUTIONS},
         {"plot", required_argument, NULL, OPT_PLOT},
         {"output", required_argument, NULL, 'o'},
         CLI_COMMON_LONGOPTS,
@@ -174,6 +212,13 @@ static int parse_args(sweep_args *a, int argc, char **argv)
         case OPT_PLOT:
             a->plot = optarg;
             break;
+        case OPT_RESOLUTIONS:
+            if ((a->nres = parse_resolutions(optarg, a->res)) < 0) {
+                cli_error("--resolutions takes even whole numbers from 2 to %d separated by "
+                          "commas, not '%s'", RAD_HEMICUBE_MAX, optarg);
+                return 2;
+            }
+            break;
         case 'o':
             a->output = optarg;
             break;
@@ -198,7 +243,7 @@ static int parse_args(sweep_args *a, int argc, char **argv)
  * TIME_RUNS runs, repeated while the runs so far took less than TIME_SPAN
  * s in all: a small mesh takes milliseconds, and one run of it is noise.
  * out keeps the last run's mesh and B. */
-static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver,
+static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver, int keep,
                    rad_result *out, double *t_ff, double *t_solve)
 {
     rad_error err;
@@ -211,6 +256,7 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
     po.ff = *ff;
     po.solve.solver = (rad_solver)solver;
     po.solve.tolerance = 1e-13;
+    po.keep_form_factors = keep; /* for ff_error */
     memset(out, 0, sizeof *out);
     while (st == RAD_OK && runs < TIME_RUNS && spent < TIME_SPAN) {
         rad_result_free(out);
@@ -224,8 +270,9 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
         runs++;
     }
     if (st != RAD_OK) {
-        cli_error("mesh %dx%d, %s, %s: %s", n, n, rad_accuracy_name(ff->accuracy), rad_solver_name(solver),
-                  err.message);
+        cli_error("mesh %dx%d, %s, %s: %s", n, n,
+                  ff->method == RAD_FF_HEMICUBE ? "hemicube" : rad_accuracy_name(ff->accuracy),
+                  rad_solver_name(solver), err.message);
         rad_result_free(out);
         return 1;
     }
@@ -236,8 +283,10 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
 
 typedef struct row {
     int mesh, elements, acc, solver;
+    int res;                    /* 0: the contour; R: the hemicube at R */
     double t_ff, t_solve, rms, max;
     double row_min, row_max;    /* closure: sum_j F_ij, least and largest */
+    double ff_error;            /* ||F - F(reference contour)||_inf, or NaN */
 } row;
 
 typedef struct table_out {
@@ -257,12 +306,20 @@ static int write_table_to(FILE *out, const void *ctx)
 static int write_table(FILE *out, const row *r, int nr, const char *truth)
 {
     fprintf(out, "mesh\telements\taccuracy\tsolver\tseconds_formfactor\tseconds_solve\t"
-                 "seconds_total\trms_error\tmax_error\ttruth\trow_sum_min\trow_sum_max\n");
-    for (int k = 0; k < nr; k++)
-        fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\t%.17g\t%.17g\n",
-                r[k].mesh, r[k].mesh, r[k].elements, rad_accuracy_name(r[k].acc),
-                rad_solver_name(r[k].solver), r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve,
-                r[k].rms, r[k].max, truth, r[k].row_min, r[k].row_max);
+                 "seconds_total\trms_error\tmax_error\ttruth\trow_sum_min\trow_sum_max\t"
+                 "method\tresolution\tff_error\n");
+    for (int k = 0; k < nr; k++) {
+        char res[16];
+        snprintf(res, sizeof res, r[k].res ? "%d" : "-", r[k].res);
+        fprintf(out, "%dx%d\t%d\t%s\t%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\t%.17g\t%.17g\t"
+                     "%s\t%s\t%.6g\n",
+                r[k].mesh, r[k].mesh, r[k].elements,
+                r[k].res ? "-" : rad_accuracy_name(r[k].acc), rad_solver_name(r[k].solver),
+                r[k].t_ff, r[k].t_solve, r[k].t_ff + r[k].t_solve, r[k].rms, r[k].max, truth,
+                r[k].row_min, r[k].row_max, rad_ff_method_name(r[k].res ? RAD_FF_HEMICUBE
+                                                                       : RAD_FF_CONTOUR),
+                res, r[k].ff_error);
+    }
     return ferror(out) ? -1 : 0;
 }
 
@@ -283,19 +340,34 @@ static int write_xy(FILE *out, const void *ctx)
     return 0;
 }
 
+#define MAX_SERIES 24
+
+/* Does row r belong to variant v (v < nacc: an accuracy; else a
+ * resolution) and solver? */
+static int in_series(const sweep_args *a, const row *r, int v, int solver)
+{
+    if (r->solver != solver)
+        return 0;
+    return v < a->nacc ? r->res == 0 && r->acc == a->acc[v] : r->res == a->res[v - a->nacc];
+}
+
 static int plot(const sweep_args *a, const row *r, int nr, const char *title)
 {
-    rad_series s[18]; /* 3 accuracies x 6 solvers */
-    double x[18][MAX_LIST], y[18][MAX_LIST];
-    char labels[18][48];
+    rad_series s[MAX_SERIES]; /* accuracies and resolutions x solvers, the first 24 */
+    double x[MAX_SERIES][MAX_LIST], y[MAX_SERIES][MAX_LIST];
+    char labels[MAX_SERIES][48];
     int ns = 0;
-    for (int i = 0; i < a->nacc; i++)
-        for (int j = 0; j < a->nsolvers && ns < 18; j++, ns++) {
+    for (int v = 0; v < a->nacc + a->nres; v++)
+        for (int j = 0; j < a->nsolvers && ns < MAX_SERIES; j++, ns++) {
             s[ns].n = 0;
-            snprintf(labels[ns], sizeof labels[ns], "%s, %s", rad_accuracy_name(a->acc[i]),
-                     rad_solver_name(a->solvers[j]));
+            if (v < a->nacc)
+                snprintf(labels[ns], sizeof labels[ns], "%s, %s", rad_accuracy_name(a->acc[v]),
+                         rad_solver_name(a->solvers[j]));
+            else
+                snprintf(labels[ns], sizeof labels[ns], "hemicube %d, %s", a->res[v - a->nacc],
+                         rad_solver_name(a->solvers[j]));
             for (int k = 0; k < nr; k++)
-                if (r[k].acc == a->acc[i] && r[k].solver == a->solvers[j] && s[ns].n < MAX_LIST) {
+                if (in_series(a, &r[k], v, a->solvers[j]) && s[ns].n < MAX_LIST) {
                     x[ns][s[ns].n] = r[k].t_ff + r[k].t_solve;
                     y[ns][s[ns].n++] = r[k].rms;
                 }
@@ -307,6 +379,114 @@ static int plot(const sweep_args *a, const row *r, int nr, const char *title)
                                 1, 1, 0, 0};
     const xy_plot p = {s, ns, &spec};
     return cli_write_atomic(a->plot, write_xy, &p);
+}
+
+/* The reference contour's F on the scene meshed n x n (n x n elements
+ * squared doubles, freed by the caller), for ff_error; NULL with the error
+ * printed. */
+static double *reference_F(rad_scene *scene, int n, const rad_ff_options *ff, int *ne)
+{
+    rad_mesh m;
+    rad_error err;
+    rad_ff_options o = *ff;
+    o.method = RAD_FF_CONTOUR;
+    o.accuracy = RAD_ACCURACY_REFERENCE;
+    rad_scene_set_mesh(scene, n, n);
+    if (rad_mesh_build(&m, scene, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        return NULL;
+    }
+    *ne = m.nelements;
+    double *F = malloc(sizeof *F * (size_t)m.nelements * (size_t)m.nelements + 1);
+    if (!F)
+        cli_error("out of memory for the reference form factors");
+    else if (rad_ff_matrix(&m, &o, F, NULL, NULL, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        free(F);
+        F = NULL;
+    }
+    rad_mesh_free(&m);
+    return F;
+}
+
+/* max_i sum_j |F_ij - G_ij| (n x n, column-major). */
+static double inf_norm_diff(const double *F, const double *G, int n)
+{
+    double worst = 0;
+    for (int i = 0; i < n; i++) {
+        double s = 0;
+        for (int j = 0; j < n; j++)
+            s += fabs(F[(size_t)i + (size_t)j * n] - G[(size_t)i + (size_t)j * n]);
+        worst = s > worst ? s : worst;
+    }
+    return worst;
+}
+
+/* What every row of one mesh measures against. */
+typedef struct truth_ref {
+    const rad_result *truth;    /* reference gauss on the finest mesh, or */
+    const double *closed;       /* the furnace's closed form (have_closed) */
+    int have_closed;
+    const double *Fref;         /* this mesh's reference contour F, or NULL */
+    int nref;
+} truth_ref;
+
+/* One row: the scene meshed `mesh` x `mesh` with the form-factor options
+ * o and the solver; 0, or 1 (printed). */
+static int sweep_row(const sweep_args *a, rad_scene *scene, int mesh, const rad_ff_options *o,
+                     int solver, const truth_ref *t, row *w)
+{
+    rad_result sol;
+    if (run_one(scene, mesh, o, solver, t->Fref != NULL, &sol, &w->t_ff, &w->t_solve))
+        return 1;
+    w->mesh = mesh;
+    w->elements = sol.mesh.nelements;
+    w->acc = o->method == RAD_FF_HEMICUBE ? -1 : (int)o->accuracy;
+    w->res = o->method == RAD_FF_HEMICUBE ? o->resolution : 0;
+    w->solver = solver;
+    w->row_min = sol.solve.row_sum_min;
+    w->row_max = sol.solve.row_sum_max;
+    w->ff_error = t->Fref && sol.F && t->nref == sol.mesh.nelements
+                      ? inf_norm_diff(sol.F, t->Fref, t->nref)
+                      : NAN;
+    rad_solution_error(&sol.mesh, sol.B, t->have_closed ? NULL : &t->truth->mesh,
+                       t->truth->B, t->closed, &w->rms, &w->max);
+    if (!a->common.quiet)
+        fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n", w->mesh, w->mesh,
+                w->res ? "hemicube" : rad_accuracy_name(w->acc), rad_solver_name(w->solver),
+                w->t_ff + w->t_solve, w->rms);
+    rad_result_free(&sol);
+    return 0;
+}
+
+/* Every row of one mesh: the accuracies, then the resolutions, each with
+ * every solver; the number of rows, or -1 (printed). */
+static int sweep_mesh(const sweep_args *a, rad_scene *scene, int mesh, truth_ref *t, row *w)
+{
+    int nr = 0, nref = 0;
+    double *Fref = a->nres > 0 ? reference_F(scene, mesh, &a->common.ff, &nref) : NULL;
+    if (a->nres > 0 && !Fref)
+        return -1;
+    t->Fref = Fref;
+    t->nref = nref;
+    for (int v = 0; v < a->nacc + a->nres; v++)
+        for (int j = 0; j < a->nsolvers; j++) {
+            rad_ff_options o = a->common.ff;
+            if (v < a->nacc) {
+                o.accuracy = (rad_accuracy)a->acc[v];
+            } else {
+                o.method = RAD_FF_HEMICUBE;
+                o.resolution = a->res[v - a->nacc];
+            }
+            if (sweep_row(a, scene, mesh, &o, a->solvers[j], t, &w[nr])) {
+                free(Fref);
+                return -1;
+            }
+            nr++;
+        }
+    free(Fref);
+    t->Fref = NULL;
+    return nr;
 }
 
 int cmd_sweep(int argc, char **argv)
@@ -334,8 +514,13 @@ int cmd_sweep(int argc, char **argv)
     for (int k = 0; k < a.nmeshes; k++)
         finest = a.meshes[k] > finest ? a.meshes[k] : finest;
     int status = 1, nr = 0;
-    row rows[MAX_LIST * 12];
+    row *rows = malloc(sizeof *rows * (size_t)a.nmeshes * (size_t)(a.nacc + a.nres) *
+                       (size_t)a.nsolvers);
     char tname[64];
+    if (!rows) {
+        cli_error("out of memory for the table");
+        goto done;
+    }
     if (have_closed) {
         snprintf(tname, sizeof tname, "closed-form");
     } else {
@@ -344,34 +529,17 @@ int cmd_sweep(int argc, char **argv)
         o.accuracy = RAD_ACCURACY_REFERENCE;
         if (!a.common.quiet)
             fprintf(stderr, "radiosity: truth: reference gauss on %dx%d\n", finest, finest);
-        if (run_one(&scene, finest, &o, RAD_SOLVER_GAUSS, &truth, &t1, &t2))
+        if (run_one(&scene, finest, &o, RAD_SOLVER_GAUSS, 0, &truth, &t1, &t2))
             goto done;
         snprintf(tname, sizeof tname, "reference-%dx%d", finest, finest);
     }
-    for (int m = 0; m < a.nmeshes; m++)
-        for (int i = 0; i < a.nacc; i++)
-            for (int j = 0; j < a.nsolvers; j++) {
-                rad_ff_options o = a.common.ff;
-                rad_result sol;
-                row *w = &rows[nr];
-                o.accuracy = (rad_accuracy)a.acc[i];
-                if (run_one(&scene, a.meshes[m], &o, a.solvers[j], &sol, &w->t_ff, &w->t_solve))
-                    goto done;
-                w->mesh = a.meshes[m];
-                w->elements = sol.mesh.nelements;
-                w->acc = a.acc[i];
-                w->solver = a.solvers[j];
-                w->row_min = sol.solve.row_sum_min;
-                w->row_max = sol.solve.row_sum_max;
-                rad_solution_error(&sol.mesh, sol.B, have_closed ? NULL : &truth.mesh,
-                                   truth.B, closed, &w->rms, &w->max);
-                if (!a.common.quiet)
-                    fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n",
-                            w->mesh, w->mesh, rad_accuracy_name(w->acc), rad_solver_name(w->solver),
-                            w->t_ff + w->t_solve, w->rms);
-                nr++;
-                rad_result_free(&sol);
-            }
+    truth_ref tr = {&truth, closed, have_closed, NULL, 0};
+    for (int m = 0; m < a.nmeshes; m++) {
+        const int k = sweep_mesh(&a, &scene, a.meshes[m], &tr, rows + nr);
+        if (k < 0)
+            goto done;
+        nr += k;
+    }
     const table_out t = {rows, nr, tname};
     if (cli_write_atomic(a.output, write_table_to, &t))
         goto done;
@@ -379,6 +547,7 @@ int cmd_sweep(int argc, char **argv)
         goto done;
     status = 0;
 done:
+    free(rows);
     rad_result_free(&truth);
     rad_scene_free(&scene);
     return status;

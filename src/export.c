@@ -349,6 +349,10 @@ int rad_export_report(FILE *out, const rad_run_info *in)
     jnum(out, "form_factor_pairs_per_second", in->ff_pairs_per_second, 1);
     if (in->matrix) /* "none": the form factors were computed shot by shot */
         jstr(out, "matrix", in->matrix);
+    if (in->method) /* the hemicube's rows have no error estimates */
+        jstr(out, "form_factors_method", in->method);
+    if (in->method && strcmp(in->method, "hemicube") == 0)
+        fprintf(out, "  \"hemicube_resolution\": %d,\n", in->resolution);
     if (f) {
         jnum(out, "form_factor_min", f->min_value, 1);
         jnum(out, "form_factor_max", f->max_value, 1);

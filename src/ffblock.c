@@ -85,6 +85,9 @@ rad_status rad_ff_block_open(rad_ff_block **out, const rad_mesh *mesh,
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
+    if (opt->method != RAD_FF_CONTOUR)
+        return rad_fail(err, RAD_ERR_INVALID, "form factors by pairs or blocks need the "
+                        "contour integral: the hemicube gives whole rows");
     rad_ff_block *b = calloc(1, sizeof *b);
     if (!b)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");

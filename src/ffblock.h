@@ -65,5 +65,9 @@ rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, siz
 rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
                              rad_ff_edge **edges);
 double rad_ff_promise(rad_accuracy a);
+/* The fill's statistics of a dense F (n x n): pairs, extremes, the
+ * classic rule's faults, rows summing above 1 + RAD_ROW_SUM_SLACK; the
+ * error fields are left to the caller (also the hemicube's, hcmatrix.c). */
+void rad_ff_fill_stats(const double *F, int n, rad_ff_stats *st);
 
 #endif /* RAD_FFBLOCK_H */

@@ -36,6 +36,7 @@
 
 #include "ffblock.h"
 #include "formfactor.h"
+#include "hemicube.h"
 #include "mesh.h"
 #include "ffrow.h"
 #include "occlusion.h"
@@ -233,7 +234,7 @@ static void mirror(const rad_ff_poly *polys, int n, double *M, int threads)
                         M[(size_t)j + (size_t)i * n] * (polys[j].area / polys[i].area);
 }
 
-static void fill_stats(const double *F, int n, rad_ff_stats *st)
+void rad_ff_fill_stats(const double *F, int n, rad_ff_stats *st)
 {
     st->pairs = 0.5 * (double)n * (n - 1);
     st->min_value = HUGE_VAL;
@@ -262,6 +263,10 @@ static void fill_stats(const double *F, int n, rad_ff_stats *st)
 rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F,
                          double *errest, rad_ff_stats *stats, rad_error *err)
 {
+    if (opt->method == RAD_FF_HEMICUBE) /* rows from element centres (hcmatrix.c) */
+        return rad_hemicube_matrix(m, opt, F, errest, stats, err);
+    if (opt->method != RAD_FF_CONTOUR)
+        return rad_fail(err, RAD_ERR_INVALID, "unknown form-factor method %d", (int)opt->method);
     return rad_ff_matrix_occ(m, opt, RAD_OCC_AUTO, F, errest, stats, NULL, err);
 }
 
@@ -389,7 +394,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
                             k % (size_t)n, k / (size_t)n);
     if (stats) {
         memset(stats, 0, sizeof *stats);
-        fill_stats(F, n, stats);
+        rad_ff_fill_stats(F, n, stats);
         stats->max_errest = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxerr;
         stats->max_relerr = opt->accuracy == RAD_ACCURACY_CLASSIC ? NAN : maxrel;
         stats->max_row_error = max_row_error;

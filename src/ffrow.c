@@ -42,6 +42,7 @@
 #endif
 
 #include "ffrow.h"
+#include "hemicube.h"
 #include "mesh.h"
 #include "status.h"
 #include "vec.h"
@@ -73,6 +74,7 @@ struct rad_ffrow {
     double *inv_t;              /* 1 / (2 pi A_k), unit frame */
     rad_occ *occ;
     rad_occ_stats vst;
+    rad_hemicube *hc;           /* the hemicube method: rows from centres */
     int threads;
     rad_ff_scratch *w;
     rad_occ_work *ow;
@@ -137,6 +139,7 @@ void rad_ffrow_free(rad_ffrow *r)
     free(r->ow);
     free(r->t);
     rad_occ_free(r->occ);
+    rad_hemicube_free(r->hc);
     free(r->polys);
     free(r->pts);
     free(r->edges);
@@ -239,9 +242,15 @@ rad_status rad_ffrow_create(rad_ffrow **out, const rad_mesh *m, const rad_ff_opt
     rad_status st = rad_mesh_normalized(m, &r->unit, NULL, err);
     if (st == RAD_OK && rad_ff_mesh_polys(&r->unit, &r->polys, &r->pts, &r->edges) != RAD_OK)
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", r->n);
+    const int hemi = opt->method == RAD_FF_HEMICUBE;
+    if (st == RAD_OK && hemi && P > 0)
+        st = rad_fail(err, RAD_ERR_INVALID, "the hemicube shoots from elements: a patch grid "
+                      "(--patches PxQ) needs the contour integral");
     if (st == RAD_OK && P > 0 && Q > 0)
         st = patch_polys(r, P, Q, err);
-    if (st == RAD_OK)
+    if (st == RAD_OK && hemi) /* its z-buffer is its visibility */
+        st = rad_hemicube_create(&r->hc, &r->unit, opt->resolution, err);
+    else if (st == RAD_OK)
         st = make_occ(r, mode, err);
     if (st == RAD_OK)
         st = thread_space(r, err);
@@ -297,8 +306,40 @@ static void row_sum(rad_ffrow *r, int i, double sum)
     r->row_max = isnan(r->row_max) ? sum : fmax(r->row_max, sum);
 }
 
+/* The hemicube's column: row i from i's centre (hemicube.c), and F_ji =
+ * F_ij A_i / A_j by reciprocity, as Cohen et al. 1988 (section 3.1, eq. 6)
+ * shoot from a hemicube. */
+static rad_status hemicube_column(rad_ffrow *r, int i, double *to, double *from,
+                                  rad_error *err)
+{
+    const int n = r->n;
+    const rad_ff_poly *P = r->polys;
+    tally *t = &r->t[0];
+    double *row = from ? from : to, sum = 0;
+    rad_status st = rad_hemicube_row(r->hc, i, row, err);
+    if (st != RAD_OK)
+        return st;
+    for (int j = 0; j < n; j++) {
+        const double fij = row[j];
+        sum += fij;
+        to[j] = fij * (P[i].area / P[j].area);
+        if (j == i)
+            continue;
+        t->pairs++;
+        tally_value(t, fij);
+        tally_value(t, to[j]);
+        if (!isfinite(to[j]))
+            return not_finite(err, j, i);
+    }
+    merge(r);
+    row_sum(r, i, sum);
+    return RAD_OK;
+}
+
 rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_error *err)
 {
+    if (r->hc)
+        return hemicube_column(r, i, to, from, err);
     const int n = r->n;
     const double *inv_t = r->inv_t, promise = rad_ff_promise(r->opt.accuracy);
     const rad_ff_poly *P = r->polys;
@@ -394,7 +435,8 @@ rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
 void rad_ffrow_stats(const rad_ffrow *r, rad_ff_stats *st, double *min_row_sum,
                      double *max_row_sum)
 {
-    const int classic = r->opt.accuracy == RAD_ACCURACY_CLASSIC;
+    /* no error estimate in classic mode, nor from the hemicube */
+    const int classic = r->opt.accuracy == RAD_ACCURACY_CLASSIC || r->hc;
     rad_occ_stats v = r->vst;
     for (int k = 0; k < r->threads; k++)
         rad_occ_stats_add(&v, &r->ow[k].stats);
@@ -408,7 +450,7 @@ void rad_ffrow_stats(const rad_ffrow *r, rad_ff_stats *st, double *min_row_sum,
     st->max_errest = classic ? NAN : r->all.maxerr;
     st->max_relerr = classic ? NAN : r->all.maxrel;
     st->max_row_error = NAN; /* a bound over whole rows: not kept */
-    st->promise = rad_ff_promise(r->opt.accuracy);
+    st->promise = r->hc ? NAN : rad_ff_promise(r->opt.accuracy);
     st->promise_unmet = r->all.unmet;
     st->rows_above_one = r->rows_above_one;
     rad_occ_stats_to_ff(&v, st);

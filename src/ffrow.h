@@ -16,7 +16,11 @@
  * geometry (rad_mesh_normalized); the entry of the dense matrix that the
  * fill derives by reciprocity is derived here by the same expression.  So
  * shooting from rows and shooting from the matrix take the same steps and
- * give the same B.
+ * give the same B.  The exception is opt->method RAD_FF_HEMICUBE: a
+ * hemicube gives row i from i's centre (hemicube.h), and the column is
+ * F_ji = F_ij A_i / A_j from it, as Cohen et al. 1988 shoot (section
+ * 3.1); the dense matrix of hemicubes holds F_ji from j's centre instead,
+ * so the two converge to slightly different B.
  *
  * Patches (patchgrid.h): rad_ffrow_patch gives F_jP, from every element j
  * to patch P, integrated directly on the patch's outline, one pair per

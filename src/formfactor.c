@@ -79,6 +79,14 @@ void rad_ff_options_init(rad_ff_options *opt)
     memset(opt, 0, sizeof *opt);
     opt->quadrature = 3;
     opt->accuracy = RAD_ACCURACY_DEFAULT;
+    opt->method = RAD_FF_CONTOUR;
+    opt->resolution = RAD_HEMICUBE_DEFAULT;
+}
+
+const char *rad_ff_method_name(int method)
+{
+    static const char *const names[] = {"contour", "hemicube"};
+    return method >= 0 && method <= RAD_FF_HEMICUBE ? names[method] : NULL;
 }
 
 /* ---- quadrature of one edge pair ---------------------------------------- */

@@ -73,6 +73,11 @@ static int check(const cli_solve *s)
         cli_error("--error-bounds (LAPACK's dgesvx) has no distributed counterpart here");
         return 2;
     }
+    if (s->common.ff.method != RAD_FF_CONTOUR) {
+        cli_error("radiosity-mpi fills its blocks of F by the contour integral; the hemicube "
+                  "gives whole rows (use radiosity solve)");
+        return 2;
+    }
     return 0;
 }
 

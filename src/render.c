@@ -576,12 +576,17 @@ static int row_span(const double *sx, const double *sy, int n, double yc, double
 static void draw_face(const view *v, int f, const face_geom *g, const face_work *w,
                       rad_image *img)
 {
-    double ylo = HUGE_VAL, yhi = -HUGE_VAL;
-    int y0, y1;
+    double ylo = HUGE_VAL, yhi = -HUGE_VAL, xlo = HUGE_VAL, xhi = -HUGE_VAL;
+    int y0, y1, xa, xb;
     for (int k = 0; k < g->nclip; k++) {
         ylo = fmin(ylo, w->sy[k]);
         yhi = fmax(yhi, w->sy[k]);
+        xlo = fmin(xlo, w->sx[k]);
+        xhi = fmax(xhi, w->sx[k]);
     }
+    pixel_range(xlo, xhi, v->width, &xa, &xb);
+    if (xa > xb) /* wholly left or right of the picture: no row would draw */
+        return;
     pixel_range(ylo, yhi, v->height, &y0, &y1);
     for (int y = y0; y <= y1; y++) {
         const double yc = y + 0.5;

@@ -34,6 +34,8 @@ typedef struct rad_run_info {
     long b_negative;            /* element-band values of B below 0: impossible
                                    (classic mode's nonsense), -1 unknown */
     const char *matrix;         /* "dense", "none" (form factors per shot), or NULL */
+    const char *method;         /* "contour", "hemicube", or NULL (not said) */
+    int resolution;             /* the hemicube's R (method "hemicube") */
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */
