@@ -64,7 +64,10 @@ static void help(void)
            "  sorted          the largest unshot power shoots first\n"
            "  sorted_ambient  the same, displayed with the ambient term\n"
            "The table (TSV, %%.17g) has the columns step gathering shooting sorted\n"
-           "sorted_ambient, one row per step from 0.  A summary goes to standard error.\n"
+           "sorted_ambient (eq. 14: the RMS error of the radiosity averaged over the\n"
+           "bands), then gathering_bands ... sorted_ambient_bands (the RMS error of\n"
+           "each band, averaged over the bands), one row per step from 0.  A summary\n"
+           "goes to standard error.\n"
            "\n"
            "Options:\n"
            "      --steps N           steps per method (default: 2 x the element\n"
@@ -265,7 +268,7 @@ static int snapshot(void *user, int method, int step, const double *B)
 /* ---- outputs --------------------------------------------------------------- */
 
 typedef struct table_ctx {
-    const double *rms;
+    const double *rms, *rms_bands;
     int steps;
 } table_ctx;
 
@@ -276,11 +279,15 @@ static int write_table_to(FILE *out, const void *ctx)
     fprintf(out, "step");
     for (int m = 0; m < RAD_RACE_METHODS; m++)
         fprintf(out, "\t%s", rad_race_name(m));
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        fprintf(out, "\t%s_bands", rad_race_name(m));
     fputc('\n', out);
     for (size_t k = 0; k < rows; k++) {
         fprintf(out, "%zu", k);
         for (int m = 0; m < RAD_RACE_METHODS; m++)
             fprintf(out, "\t%.17g", t->rms[k + (size_t)m * rows]);
+        for (int m = 0; m < RAD_RACE_METHODS; m++)
+            fprintf(out, "\t%.17g", t->rms_bands[k + (size_t)m * rows]);
         fputc('\n', out);
     }
     return ferror(out) ? -1 : 0;
@@ -372,13 +379,14 @@ typedef struct pipeline {
                                    without a matrix, the mesh and B converged
                                    by progressive refinement to 1e-12 */
     rad_ffrow *row;             /* matrix-free: the rows and columns */
-    double *rms, *Bv;
+    double *rms, *rms_bands, *Bv;
     int reached[RAD_RACE_METHODS];
 } pipeline;
 
 static void pipeline_free(pipeline *p)
 {
     free(p->rms);
+    free(p->rms_bands);
     free(p->Bv);
     rad_ffrow_free(p->row);
     rad_result_free(&p->res);
@@ -439,7 +447,9 @@ static int race(progress_args *a, pipeline *p)
     if (!a->steps_given && last > a->race.steps)
         a->race.steps = last;
     p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
-    if (!p->rms) {
+    p->rms_bands = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
+    a->race.rms_bands = p->rms_bands;
+    if (!p->rms || !p->rms_bands) {
         cli_error("out of memory for %d steps", a->race.steps);
         return 1;
     }
@@ -480,7 +490,7 @@ static int outputs(const progress_args *a, const pipeline *p)
     const char *name = strrchr(p->scene.filename, '/');
     snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
              name ? name + 1 : p->scene.filename);
-    const table_ctx t = {p->rms, a->race.steps};
+    const table_ctx t = {p->rms, p->rms_bands, a->race.steps};
     const plot_ctx pl = {p->rms, a->race.steps, title};
     const cli_output o[2] = {{a->output ? a->output : "-", write_table_to, &t},
                              {a->plot, write_plot_to, &pl}};
