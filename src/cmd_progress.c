@@ -37,7 +37,8 @@ enum {
     OPT_SNAPSHOT_PREFIX,
     OPT_RACE_PATCHES,
     OPT_RACE_MATRIX,
-    OPT_SNAPSHOTS_AT
+    OPT_SNAPSHOTS_AT,
+    OPT_EXPOSURE_FROM
 };
 
 #define MAX_SNAPSHOTS_AT 256
@@ -51,6 +52,7 @@ typedef struct progress_args {
     rad_matrix_mode matrix;     /* --matrix; auto decided in prepare() */
     int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
     int steps_given;
+    rad_exposure_from exposure_from; /* of the snapshots */
 } progress_args;
 
 static void help(void)
@@ -85,13 +87,15 @@ static void help(void)
            "                          1e-12 without a matrix) or auto (default: dense\n"
            "                          when 16 N^2 bytes fit in half the memory allowed)\n"
            "      --snapshots K       render every K steps of every method (the\n"
-           "                          scene's camera, 512 x 512, the exposure of the\n"
-           "                          converged solution) to PREFIX-METHOD-STEP.png\n"
+           "                          scene's camera, 512 x 512, the automatic exposure\n"
+           "                          of the converged solution, see --exposure-from)\n"
+           "                          to PREFIX-METHOD-STEP.png\n"
            "      --snapshots-at LIST render at these steps of every method (comma-\n"
            "                          separated, e.g. 1,2,24,100 as the paper's figures\n"
            "                          2-5; the sorted_ambient images show the ambient\n"
            "                          term); --steps grows to the last one if not given\n"
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
+           CLI_EXPOSURE_FROM_HELP
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
@@ -168,6 +172,8 @@ static int parse_option(progress_args *a, int opt, const char *arg)
     case OPT_SNAPSHOT_PREFIX:
         a->prefix = arg;
         return 0;
+    case OPT_EXPOSURE_FROM:
+        return cli_parse_exposure_from(arg, &a->exposure_from);
     case OPT_RACE_PATCHES:
         a->race.patches = 1;
         return 0;
@@ -459,10 +465,7 @@ static int race(progress_args *a, pipeline *p)
         sc.prefix = a->prefix ? a->prefix : "progress";
         rad_render_options_init(&sc.ropt);
         sc.ropt.camera = p->scene.camera;
-        double top = 0;
-        for (size_t k = 0; k < (size_t)n * RAD_BANDS; k++)
-            top = fmax(top, p->res.B[k]);
-        sc.ropt.exposure = top > 0 ? 1 / top : 1;
+        sc.ropt.exposure = rad_mesh_auto_exposure(&p->res.mesh, p->res.B, a->exposure_from);
         p->Bv = malloc(sizeof *p->Bv * (size_t)(p->res.mesh.nvertices ? p->res.mesh.nvertices : 1) *
                        RAD_BANDS);
         if (!p->Bv) {
@@ -539,6 +542,7 @@ int cmd_progress(int argc, char **argv)
         {"snapshots", required_argument, NULL, OPT_SNAPSHOTS},
         {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
         {"snapshots-at", required_argument, NULL, OPT_SNAPSHOTS_AT},
+        {"exposure-from", required_argument, NULL, OPT_EXPOSURE_FROM},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
