@@ -29,6 +29,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "errcolour.h"
 #include "plot.h"
 #include "radiosity/pipeline.h"
 #include "radiosity/plyread.h"
@@ -493,6 +494,39 @@ static void test_edges_exposure(void)
     fixture_free(&fx);
 }
 
+/* The error colours of errcolour.c by hand from its documented scale:
+ * grey 128 at e = 0, linear to red (255, 0, 0) at e = +0.5 and beyond, to
+ * blue (0, 0, 255) at -0.5 and beyond; e = 0.25 is half way: 191.5 -> 192
+ * (round half away from zero) and 64.  And the picture drawn from the
+ * field at exposure 1, flat, shows those bytes exactly. */
+static void test_errcolour(void)
+{
+    static const struct { double e; unsigned char c[3]; } cases[] = {
+        {0, {128, 128, 128}},  {0.25, {192, 64, 64}}, {0.5, {255, 0, 0}},
+        {7, {255, 0, 0}},      {-0.25, {64, 64, 192}}, {-1, {0, 0, 255}},
+        {INFINITY, {255, 0, 0}}};
+    int bad = 0;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        unsigned char c[3];
+        rad_errcolour_of(cases[k].e, c);
+        bad += memcmp(c, cases[k].c, 3) != 0;
+    }
+    tap_ok(bad == 0, "error colours: grey at 0, red over, blue under, full at 50%% (%d off)", bad);
+    /* B = 1.25 Bref on element 0 (red-ish), 0.5 Bref on element 1 (blue) */
+    const double B[6] = {1.25, 0.5, 2.5, 1, 1.25, 0.5}, Bref[6] = {1, 1, 2, 2, 1, 1};
+    tap_close(rad_errcolour_relative(2, 0, B, Bref), 0.25, 1e-15, "relative error of the band mean");
+    double field[6];
+    rad_errcolour_field(2, B, Bref, field);
+    int same = 1;
+    for (int i = 0; i < 2; i++) {
+        unsigned char c[3];
+        rad_errcolour_of(i == 0 ? 0.25 : -0.5, c);
+        for (int b = 0; b < 3; b++)
+            same &= rad_tone_byte(field[i + 2 * b], 1) == c[b];
+    }
+    tap_ok(same, "the field at exposure 1 tone-maps back to the colour bytes");
+}
+
 /* 8-bit sRGB of a linear value clamped to [0, 1] (IEC 61966-2-1:1999). */
 static double srgb_byte(double x)
 {
@@ -913,6 +947,7 @@ int main(void)
     test_linear();
     test_edges_exposure();
     test_exposure_cornell();
+    test_errcolour();
     test_determinism();
     test_bad_options();
     test_ply_good();
