@@ -10,6 +10,14 @@
  * the ambient term.  The converged solution is the gauss solve.  scene ->
  * mesh -> form factors -> gauss -> race (progressive.c) -> TSV, plot,
  * snapshots.  Only parsing, dispatch and messages live here.
+ *
+ * The error is eq. 14 of the band-averaged radiosity (rmserror.c), the
+ * per-band mean beside it; the plot is the paper's figure 7 on a log axis
+ * or, normalised by the converged solution's own RMS, on a linear one.
+ * The snapshots are the paper's figures 2-5 (sorted_ambient at 1, 2, 24,
+ * 100 steps) and 8 (every method at 2), each with, on request, its
+ * pseudo-colour error picture (errcolour.c) and the element table of the
+ * radiosity it shows, so that what a picture claims can be checked.
  */
 #include <config.h>
 
