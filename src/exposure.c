@@ -72,11 +72,6 @@ double rad_mesh_auto_exposure(const rad_mesh *mesh, const double *B, rad_exposur
     return mx > 0 && isfinite(1 / mx) ? 1 / mx : 1;
 }
 
-const char *rad_exposure_from_name(rad_exposure_from from)
-{
-    return from == RAD_EXPOSURE_ALL ? "all" : "reflectors";
-}
-
 int rad_exposure_from_parse(const char *name, rad_exposure_from *from)
 {
     if (strcmp(name, "reflectors") == 0)

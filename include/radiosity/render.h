@@ -116,8 +116,7 @@ RAD_API double rad_render_auto_exposure(const rad_render_model *model, rad_expos
 RAD_API double rad_mesh_auto_exposure(const rad_mesh *mesh, const double *B,
                                       rad_exposure_from from);
 
-/* "reflectors" or "all"; and back: 0, or -1 for another name. */
-RAD_API const char *rad_exposure_from_name(rad_exposure_from from);
+/* "reflectors" or "all" to *from: 0, or -1 for another name. */
 RAD_API int rad_exposure_from_parse(const char *name, rad_exposure_from *from);
 
 /* Is the camera usable: fov in (0, 180), eye != at, up not parallel to the
