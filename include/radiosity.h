@@ -303,9 +303,13 @@ typedef struct rad_shot {
     int shooter;                /* element (or patch, with patches) that shot */
     double shot;                /* power shot, summed over the bands */
     double unshot;              /* unshot power left, summed over the bands */
-    double rms, rms_ambient;    /* area-weighted RMS error against the reference
-                                   (Cohen et al. 1988, eq. 14), without and with
-                                   the ambient term */
+    double rms, rms_ambient;    /* area-weighted RMS error of the band-averaged
+                                   radiosity against the reference (Cohen et al.
+                                   1988, eq. 14), without and with the ambient
+                                   term */
+    double rms_bands, rms_ambient_bands; /* the same per band, averaged over the
+                                   bands (what rms was before eq. 14 was read
+                                   as the paper means it) */
 } rad_shot;
 
 /* Called after each shooting step; return non-zero to stop the solve

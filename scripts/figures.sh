@@ -1,12 +1,16 @@
 #!/bin/sh
 # figures.sh -- the pictures of Goral, Torrance, Greenberg & Battaile 1984
-# (their figures 6-8) from the cube scene, with an HTML page showing them
-# side by side with the exact command behind each.
+# (their figures 6-8) from the cube scene, of Cohen, Chen, Wallace &
+# Greenberg 1988 (figures 2-5, 7 and 8) from the Cornell box, and of
+# George, Sillion & Greenberg 1990 (figure 6), with an HTML page showing
+# them side by side, each captioned with its paper, its figure and what to
+# look for, and the exact command behind it.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #
 # Usage: scripts/figures.sh RADIOSITY DATADIR OUTDIR
 #   RADIOSITY  the program (e.g. src/radiosity)
-#   DATADIR    where goral1984-cube.scene is (e.g. data)
+#   DATADIR    where goral1984-cube.scene, cornell-box.scene and
+#              cube-on-table.scene are (e.g. data)
 #   OUTDIR     where the pictures and index.html go (created if needed)
 #
 # Figure 6: flat shading at meshes 1x1 to 7x7, each with the RGB scanline
@@ -16,6 +20,14 @@
 #           more (7b-7e: --bounces 2, 3, 5, 9), and solved (7f), each with
 #           its RGB scanline plot.
 # Figure 8: smooth (Gouraud) shading of the 3x3 and 7x7 meshes.
+# Cohen et al. 1988, on data/cornell-box.scene (one `radiosity progress`
+# run, its surfaces shooting as patches, 100 steps per method):
+#           figures 2-5: sorted shooting shown with the ambient term after
+#           1, 2, 24 and 100 shots, each with its pseudo-colour error image
+#           (grey accurate, red over, blue under the converged solution);
+#           figure 7: the RMS error of eq. 14 of the four methods divided
+#           by the RMS of the converged solution, on a linear axis;
+#           figure 8: the four methods after 2 steps side by side.
 # And figure 6 of George, Sillion & Greenberg 1990 (cube-on-table.scene):
 #           the room converged without and with the cube, and the cube put
 #           on the table by redistribution against progressive refinement
@@ -93,8 +105,8 @@ for n in 1 2 3 4 5 7; do
   fig "fig6-${n}x$n" "${n}x$n elements per wall, flat" plot -- \
     "$scene" --mesh "${n}x$n" --shading flat
 done
-end_row "Figure 6: flat shading at increasing mesh resolution" \
-  "Each element is drawn in its own radiosity; below each picture the linear R, G, B radiosity along row $row (the middle row) of the picture."
+end_row "Goral et al. 1984, figure 6: flat shading at increasing mesh resolution" \
+  "The cube of data/goral1984-cube.scene, seen through its emitting front wall (the red wall, x = 0, on the right, the blue on the left; the reflectances are this project's choice, see the scene file).  Each element is drawn in its own radiosity; below each picture the linear R, G, B radiosity along row $row (the middle row).  Look for: the staircase of the coarse meshes smoothing out as the mesh refines, and the red and blue bleeding onto the grey walls next to them (the R and B curves parting near the coloured walls)."
 
 # the paper's 7a-7e: direct light, then 1, 2, 4 and 8 intermediate reflections
 for pair in a:1:0 b:2:1 c:3:2 d:5:4 e:9:8; do
@@ -105,8 +117,8 @@ for pair in a:1:0 b:2:1 c:3:2 d:5:4 e:9:8; do
     "$scene" --mesh 5x5 --shading flat --bounces "$k"
 done
 fig "fig7f-solved" "7f: solved (all reflections)" plot -- "$scene" --mesh 5x5 --shading flat
-end_row "Figure 7: the light after K reflections" \
-  "As in the paper: 7a is the direct light alone (light that reflects once, off a wall, on its way to the eye: B = E + rho F E), 7b-7e add 1, 2, 4 and 8 intermediate reflections (B = sum over m = 0..K of (rho F)^m E with K = 2, 3, 5, 9: Jacobi from B = E without a convergence test), 7f is the solution of the full system.  In 7a the grey walls are grey (equal R, G and B); colour bleeds onto them from 7b on, and 7e is within 0.1% of 7f on the grey walls' mean.  Below each picture the linear R, G, B radiosity along row $row.  The exposure of each picture maps its brightest element to white."
+end_row "Goral et al. 1984, figure 7: the light after K reflections" \
+  "As in the paper: 7a is the direct light alone (light that reflects once, off a wall, on its way to the eye: B = E + rho F E), 7b-7e add 1, 2, 4 and 8 intermediate reflections (B = sum over m = 0..K of (rho F)^m E with K = 2, 3, 5, 9: Jacobi from B = E without a convergence test), 7f is the solution of the full system.  Look for: in 7a the grey walls are grey (equal R, G and B: their three scanline curves coincide); colour bleeds onto them from 7b on and their mean rises with every reflection; 7e is within 0.1% of 7f on the grey walls' mean (tests/figure7.sh checks 0.5%).  Below each picture the linear R, G, B radiosity along row $row.  The exposure of each picture maps its brightest non-emitting element to white (--exposure-from reflectors, the default)."
 
 for n in 3 7; do
   fig "fig8-${n}x$n-smooth" "${n}x$n elements per wall, smooth" "" -- \
@@ -114,8 +126,49 @@ for n in 3 7; do
   fig "fig8-${n}x$n-flat" "${n}x$n elements per wall, flat" "" -- \
     "$scene" --mesh "${n}x$n" --shading flat
 done
-end_row "Figure 8: smooth shading" \
-  "Vertex radiosity (the mean of the elements around each vertex) interpolated bilinearly across each element (Gouraud shading), next to the flat picture of the same mesh."
+end_row "Goral et al. 1984, figure 8: smooth shading" \
+  "Vertex radiosity (the mean of the elements around each vertex) interpolated bilinearly across each element (Gouraud shading), next to the flat picture of the same mesh.  Look for: the element boundaries of the flat pictures gone in the smooth ones, and the 3x3 smooth picture already close to the 7x7 one."
+
+# ---- Cohen, Chen, Wallace & Greenberg 1988, figures 2-5, 7 and 8 -----------
+box=$data/cornell-box.scene
+[ -r "$box" ] || { echo "$0: cannot read $box" >&2; exit 1; }
+set -- progress -q --patches --steps 100 --snapshots-at 1,2,24,100 --error-images \
+  --snapshot-prefix "$out/c88" -o "$out/c88-race.tsv" \
+  --plot "$out/c88-fig7.png" --plot-axis linear --plot-normalised "$box"
+"$radiosity" "$@" || { echo "$0: failed: $(shell_quote "$radiosity" "$@")" >&2; exit 1; }
+c88_cmd=$(html_escape "$(shell_quote "$radiosity" "$@")")
+
+# c88cell PICTURE CAPTION [WIDTH]: a cell with the progress command
+c88cell() {
+  cells="$cells<td><figure style=\"width: ${3:-256}px\"><img src=\"$1.png\" width=\"${3:-256}\" alt=\"$(html_escape "$2")\"><figcaption>$(html_escape "$2")</figcaption></figure></td>
+"
+}
+# c88rms STEP COLUMN: the race table's eq. 14 error at STEP
+c88rms() {
+  awk -F '\t' -v k="$1" -v m="$2" 'NR == 1 { for (j = 1; j <= NF; j++) c[$j] = j; next }
+    $1 == k { printf "%.3g", $c[m] }' "$out/c88-race.tsv"
+}
+
+for k in 1 2 24 100; do
+  f=$(printf '%06d' "$k")
+  c88cell "c88-sorted_ambient-$f" "$k shot$([ "$k" = 1 ] || echo s), with the ambient term (RMS error $(c88rms "$k" sorted_ambient))"
+done
+end_row "Cohen et al. 1988, figures 2-5: progressive refinement after 1, 2, 24 and 100 shots" \
+  "The Cornell box (data/cornell-box.scene, 2603 elements; each surface shoots as one patch, the patch with the most unshot power first, and its elements receive), shown with the ambient term of eq. 13, which stands in for the light not shot yet.  The RMS error is that of eq. 14 (band-averaged radiosity, area-weighted) against the converged gauss solution.  Look for: after one shot (the lamp) every surface is already lit, the shadows by the ambient term alone; the picture changes little after 24 shots.  Exposure: the converged solution's brightest non-emitting element is white.  Command: <code>$c88_cmd</code>"
+for k in 1 2 24 100; do
+  f=$(printf '%06d' "$k")
+  c88cell "c88-sorted_ambient-$f-error" "error after $k shot$([ "$k" = 1 ] || echo s)"
+done
+end_row "Cohen et al. 1988, figures 2-5: the pseudo-colour error images" \
+  "Each element coloured by the relative error e = (Y - Yc) / Yc of its band-averaged radiosity Y as displayed above against the converged Yc: grey (128, 128, 128) where e = 0, shading linearly to red (255, 0, 0) at e = +50% or more (over-estimate) and to blue (0, 0, 255) at -50% or less (under-estimate); flat shading.  Look for: after 1 shot the regions the lamp does not reach (the shadows of the blocks, the block faces turned away from it, the corners) are red, as the uniform ambient term over-estimates there, while the ceiling around the lamp, lit in the end by the bright floor, is blue; the red shrinks by 24 shots and the picture is nearly all grey after 100 (tests/errorimages.sh checks the first two on a coarse mesh).  The front face of the short block, which looks out through the open front of the box, stays red longest: eq. 9 approximates every element's view of the room by the others' share of the total area, as if each saw a closed room, and this face sees mostly the opening (data/cornell-box-closed.scene, with a front wall, does not show it)."
+c88cell c88-fig7 "RMS error (eq. 14) of each method divided by the RMS of the converged solution, linear axis (table: c88-race.tsv)" 640
+end_row "Cohen et al. 1988, figure 7: the convergence of the four methods" \
+  "Gathering (Gauss-Seidel, one element row per step), shooting in file order, sorted shooting, and sorted shooting displayed with the ambient term, from B = E.  The error is divided by the RMS of the converged solution (eq. 14 against B = 0), as a fraction of it, on a linear axis.  Look for: gathering hardly moves in 100 steps (one row of 2603 per step), shooting in file order falls in steps, sorted shooting falls fastest, and the ambient term lowers its error further from the first step.  After 100 steps: gathering $(c88rms 100 gathering), shooting $(c88rms 100 shooting), sorted $(c88rms 100 sorted), sorted + ambient $(c88rms 100 sorted_ambient) (not normalised, the unit of B)."
+for m in gathering:gathering shooting:"shooting, file order" sorted:"shooting, sorted" sorted_ambient:"sorted + ambient"; do
+  c88cell "c88-${m%%:*}-000002" "${m#*:}, 2 steps (RMS error $(c88rms 2 "${m%%:*}"))"
+done
+end_row "Cohen et al. 1988, figure 8: the four methods after 2 steps" \
+  "The same run, each method after two steps from B = E.  Look for: gathering has updated two elements of 2603 and shows little more than the lamp; shooting in file order has shot the lamp (the first surface in the file) and then a piece of ceiling that had received nothing, so it shows the direct light alone; sorted shooting has shot the lamp and then the patch holding the most of the power it received, so the ceiling and the shadows begin to fill; the ambient term fills the shadows with an estimate of the light still to come."
 
 # ---- George, Sillion & Greenberg 1990, figure 6 ----------------------------
 cot=$data/cube-on-table.scene
@@ -166,7 +219,7 @@ anim george6-conv "$cot" "$data/cube-on-table.changes"
 acell george6-conv-0 "converged, without the cube"
 acell george6-conv-1 "converged, with the cube (redistribution to tolerance 1e-12)"
 end_row "George et al. 1990, figure 6: the cube put on the table" \
-  "The room of data/cube-on-table.scene converged without the cube (frame 0) and with it (frame 1: the cube added, its form factors and the pairs it can shadow recomputed, the energy redistributed and propagated to convergence).  Each animation's pictures share frame 0's exposure."
+  "The room of data/cube-on-table.scene converged without the cube (frame 0) and with it (frame 1: the cube added, its form factors and the pairs it can shadow recomputed, the energy redistributed and propagated to convergence).  Each animation's pictures share frame 0's exposure.  Look for: the cube's shadow on the table and the light the cube reflects onto its surroundings."
 claim=
 for k in 2 50; do
   anim "george6-redist$k" --steps "$k" "$cot" "$data/cube-on-table.changes"
@@ -190,7 +243,7 @@ cat > "$out/index.html.tmp" <<EOF
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<title>radiosity: the figures of Goral et al. 1984</title>
+<title>radiosity: the figures of Goral et al. 1984, Cohen et al. 1988 and George et al. 1990</title>
 <style>
 body { font-family: sans-serif; margin: 1em 2em; }
 table { border-collapse: collapse; }
@@ -201,12 +254,19 @@ code { font-size: 80%; word-break: break-all; }
 </style>
 </head>
 <body>
-<h1>The colour-bleeding cube of Goral, Torrance, Greenberg &amp; Battaile (1984)</h1>
-<p>Scene <code>$(html_escape "$scene")</code>: a unit cube seen through its emitting front
-wall; the red wall (x = 0) is on the right, the blue wall on the left.  The
-reflectances are this project's choice (see the scene file).  Pictures are
-${size} x ${size}, shown at half size; the command under each picture made it.
-Made by $(html_escape "$version").</p>
+<h1>The figures of three radiosity papers</h1>
+<p>Goral, Torrance, Greenberg &amp; Battaile, "Modeling the Interaction of Light
+Between Diffuse Surfaces", SIGGRAPH 1984 (figures 6-8, the colour-bleeding cube
+<code>$(html_escape "$scene")</code>: a unit cube seen through its emitting front
+wall; the red wall (x = 0) is on the right, the blue wall on the left);
+Cohen, Chen, Wallace &amp; Greenberg, "A Progressive Refinement Approach to Fast
+Radiosity Image Generation", SIGGRAPH 1988 (figures 2-5, 7 and 8, on the Cornell
+box <code>$(html_escape "$box")</code>); George, Sillion &amp; Greenberg,
+"Radiosity Redistribution for Dynamic Environments", IEEE CG&amp;A 1990 (figure 6).
+Each section names its paper and figure and says what to look for.  Pictures
+are ${size} x ${size}, shown at half size; the command under each picture (or in
+its section) made it.  Automatic exposures map the brightest element that
+emits nothing to white (lamps clip).  Made by $(html_escape "$version").</p>
 $rows</body>
 </html>
 EOF

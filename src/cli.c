@@ -76,6 +76,14 @@ int cli_parse_vec3(const char *arg, rad_vec3 *out)
     return 0;
 }
 
+int cli_parse_exposure_from(const char *arg, rad_exposure_from *out)
+{
+    if (rad_exposure_from_parse(arg, out) == 0)
+        return 0;
+    cli_error("--exposure-from takes reflectors or all, not '%s'", arg);
+    return 2;
+}
+
 int cli_parse_mesh(const char *arg, int *n, int *m)
 {
     char buf[64];

@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "radiosity/pipeline.h"
+#include "radiosity/render.h"
 #include "radiosity.h"
 
 #define EXIT_USAGE 2
@@ -107,6 +108,14 @@ int cli_parse_int(const char *arg, long lo, long hi, int *out);
 int cli_parse_double(const char *arg, double *out);
 /* Parse "X,Y,Z". */
 int cli_parse_vec3(const char *arg, rad_vec3 *out);
+/* --exposure-from reflectors|all: 0, or 2 (the usage error printed). */
+int cli_parse_exposure_from(const char *arg, rad_exposure_from *out);
+#define CLI_EXPOSURE_FROM_HELP                                                   \
+    "      --exposure-from SET which elements the automatic exposure maps to\n"   \
+    "                          full scale: reflectors (default: the brightest\n" \
+    "                          element that emits nothing is white, brighter\n"  \
+    "                          lamps clip) or all (the brightest element, lamps\n"\
+    "                          included)\n"
 
 /* ---- outputs (cli_output.c) --------------------------------------------- */
 

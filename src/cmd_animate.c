@@ -45,7 +45,8 @@ enum {
     OPT_RESUME,
     OPT_CONVERGE_LAST,
     OPT_ERRORS,
-    OPT_IMPORTANCE
+    OPT_IMPORTANCE,
+    OPT_EXPOSURE_FROM
 };
 
 static void help(void)
@@ -65,8 +66,9 @@ static void help(void)
            "      --frames PATTERN    one PNG per frame, PATTERN a printf pattern with\n"
            "                          one integer conversion (frame%%03d.png, a width\n"
            "                          below 100); the scene's camera, frame 0's\n"
-           "                          exposure\n"
+           "                          automatic exposure (see --exposure-from)\n"
            "      --width W, --height H  picture size (default 384 x 384)\n"
+           CLI_EXPOSURE_FROM_HELP
            "      --elements PATTERN  one element table per frame (the format of\n"
            "                          'solve --elements'; absent objects' elements\n"
            "                          left out, numbered as a fresh solve would)\n"
@@ -136,6 +138,7 @@ typedef struct anim_args {
     rad_anim_options opt;
     const char *frames, *elements, *trace, *report, *log, *resume, *errors;
     int reference, width, height;
+    rad_exposure_from exposure_from; /* of frame 0, which every frame keeps */
 } anim_args;
 
 /* A printf pattern with exactly one integer conversion (%d, %05d, ...). */
@@ -235,6 +238,8 @@ static int parse_option(anim_args *a, int opt, const char *arg)
     case OPT_RESUME:
         a->resume = arg;
         return 0;
+    case OPT_EXPOSURE_FROM:
+        return cli_parse_exposure_from(arg, &a->exposure_from);
     case OPT_ERRORS:
         a->errors = arg;
         a->reference = 1;
@@ -375,10 +380,7 @@ static int picture(anim_run *r, const char *path)
     }
     Bv = malloc(sizeof *Bv * ((size_t)m.nvertices + 1) * RAD_BANDS);
     if (r->exposure == 0) {
-        double top = 0;
-        for (size_t k = 0; k < (size_t)m.nelements * RAD_BANDS; k++)
-            top = fmax(top, B[k]);
-        r->exposure = top > 0 ? 1 / top : 1;
+        r->exposure = rad_mesh_auto_exposure(&m, B, r->args->exposure_from);
     }
     rad_render_options_init(&ro);
     ro.camera = r->scene.camera;
@@ -819,6 +821,7 @@ int cmd_animate(int argc, char **argv)
         {"report", required_argument, NULL, OPT_AN_REPORT},
         {"reference", no_argument, NULL, OPT_REFERENCE},
         {"from-scratch", no_argument, NULL, OPT_FROM_SCRATCH},
+        {"exposure-from", required_argument, NULL, OPT_EXPOSURE_FROM},
         {"no-gather", no_argument, NULL, OPT_NO_GATHER},
         {"converge-last", no_argument, NULL, OPT_CONVERGE_LAST},
         {"importance", required_argument, NULL, OPT_IMPORTANCE},

@@ -10,6 +10,14 @@
  * the ambient term.  The converged solution is the gauss solve.  scene ->
  * mesh -> form factors -> gauss -> race (progressive.c) -> TSV, plot,
  * snapshots.  Only parsing, dispatch and messages live here.
+ *
+ * The error is eq. 14 of the band-averaged radiosity (rmserror.c), the
+ * per-band mean beside it; the plot is the paper's figure 7 on a log axis
+ * or, normalised by the converged solution's own RMS, on a linear one.
+ * The snapshots are the paper's figures 2-5 (sorted_ambient at 1, 2, 24,
+ * 100 steps) and 8 (every method at 2), each with, on request, its
+ * pseudo-colour error picture (errcolour.c) and the element table of the
+ * radiosity it shows, so that what a picture claims can be checked.
  */
 #include <config.h>
 
@@ -21,8 +29,11 @@
 #include "cli.h"
 #include "plotxy.h"
 #include "ffrow.h"
+#include "errcolour.h"
 #include "progressive.h"
+#include "radiosity/export.h"
 #include "radiosity/render.h"
+#include "rmserror.h"
 
 #define DEFAULT_STEPS_CAP 10000 /* default --steps: 2 x elements, at most this */
 #define MAX_STEPS 10000000
@@ -37,7 +48,12 @@ enum {
     OPT_SNAPSHOT_PREFIX,
     OPT_RACE_PATCHES,
     OPT_RACE_MATRIX,
-    OPT_SNAPSHOTS_AT
+    OPT_SNAPSHOTS_AT,
+    OPT_EXPOSURE_FROM,
+    OPT_ERROR_IMAGES,
+    OPT_SNAPSHOT_ELEMENTS,
+    OPT_PLOT_AXIS,
+    OPT_PLOT_NORMALISED
 };
 
 #define MAX_SNAPSHOTS_AT 256
@@ -51,6 +67,12 @@ typedef struct progress_args {
     rad_matrix_mode matrix;     /* --matrix; auto decided in prepare() */
     int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
     int steps_given;
+    rad_exposure_from exposure_from; /* of the snapshots */
+    int error_images;           /* --error-images */
+    int snapshot_elements;      /* --snapshot-elements */
+    int plot_linear;            /* --plot-axis linear */
+    int plot_axis_given;
+    int plot_normalised;        /* --plot-normalised */
 } progress_args;
 
 static void help(void)
@@ -64,13 +86,21 @@ static void help(void)
            "  sorted          the largest unshot power shoots first\n"
            "  sorted_ambient  the same, displayed with the ambient term\n"
            "The table (TSV, %%.17g) has the columns step gathering shooting sorted\n"
-           "sorted_ambient, one row per step from 0.  A summary goes to standard error.\n"
+           "sorted_ambient (eq. 14: the RMS error of the radiosity averaged over the\n"
+           "bands), then gathering_bands ... sorted_ambient_bands (the RMS error of\n"
+           "each band, averaged over the bands), one row per step from 0.  A summary\n"
+           "goes to standard error.\n"
            "\n"
            "Options:\n"
            "      --steps N           steps per method (default: 2 x the element\n"
            "                          count, at most %d)\n"
            "  -o, --output FILE       the table; '-' or none: standard output\n"
-           "      --plot FILE.png     the four curves on a log-scale error axis\n"
+           "      --plot FILE.png     the four curves (eq. 14) on a log-scale error axis\n"
+           "      --plot-axis AXIS    log (default) or linear: the error axis of --plot\n"
+           "      --plot-normalised   --plot divides each curve by the RMS of the\n"
+           "                          converged solution (eq. 14 against B = 0), as a\n"
+           "                          fraction of it; with --plot-axis linear this is\n"
+           "                          the paper's figure 7\n"
            "      --reach TOL         the summary gives the first step of each method\n"
            "                          within TOL (max norm, relative) of the gauss\n"
            "                          solution (default 1e-6)\n"
@@ -82,14 +112,27 @@ static void help(void)
            "                          1e-12 without a matrix) or auto (default: dense\n"
            "                          when 16 N^2 bytes fit in half the memory allowed)\n"
            "      --snapshots K       render every K steps of every method (the\n"
-           "                          scene's camera, 512 x 512, the exposure of the\n"
-           "                          converged solution) to PREFIX-METHOD-STEP.png\n"
+           "                          scene's camera, 512 x 512, the automatic exposure\n"
+           "                          of the converged solution, see --exposure-from)\n"
+           "                          to PREFIX-METHOD-STEP.png\n"
            "      --snapshots-at LIST render at these steps of every method (comma-\n"
            "                          separated, e.g. 1,2,24,100 as the paper's figures\n"
            "                          2-5; the sorted_ambient images show the ambient\n"
            "                          term); --steps grows to the last one if not given\n"
            "      --snapshot-prefix P file prefix of the snapshots (default 'progress')\n"
            CLI_METHOD_HELP
+           "      --error-images      beside each snapshot, PREFIX-METHOD-STEP-error.png:\n"
+           "                          each element in a pseudo-colour of the relative\n"
+           "                          error e = (Y - Yc) / Yc of its band-averaged\n"
+           "                          radiosity Y as displayed against the converged\n"
+           "                          Yc (flat): grey (128,128,128) where e = 0, moving\n"
+           "                          linearly to red (255,0,0) at e >= +50%% (over)\n"
+           "                          and to blue (0,0,255) at e <= -50%% (under), as\n"
+           "                          the paper's figures 2-5\n"
+           "      --snapshot-elements beside each snapshot, PREFIX-METHOD-STEP.tsv: the\n"
+           "                          radiosity it shows as an element table (the\n"
+           "                          format of 'solve --elements')\n"
+           CLI_EXPOSURE_FROM_HELP
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
@@ -166,6 +209,25 @@ static int parse_option(progress_args *a, int opt, const char *arg)
     case OPT_SNAPSHOT_PREFIX:
         a->prefix = arg;
         return 0;
+    case OPT_EXPOSURE_FROM:
+        return cli_parse_exposure_from(arg, &a->exposure_from);
+    case OPT_ERROR_IMAGES:
+        a->error_images = 1;
+        return 0;
+    case OPT_SNAPSHOT_ELEMENTS:
+        a->snapshot_elements = 1;
+        return 0;
+    case OPT_PLOT_NORMALISED:
+        a->plot_normalised = 1;
+        return 0;
+    case OPT_PLOT_AXIS:
+        if (strcmp(arg, "log") == 0 || strcmp(arg, "linear") == 0) {
+            a->plot_linear = strcmp(arg, "linear") == 0;
+            a->plot_axis_given = 1;
+            return 0;
+        }
+        cli_error("--plot-axis takes log or linear, not '%s'", arg);
+        return 2;
     case OPT_RACE_PATCHES:
         a->race.patches = 1;
         return 0;
@@ -189,6 +251,9 @@ typedef struct snap_ctx {
     const char *prefix;
     rad_render_options ropt;
     double *Bv;
+    const double *Bref;         /* the converged solution (--error-images) */
+    double *field;              /* n x RAD_BANDS: the error colours */
+    int error_images, elements;
     rad_error err;
     int failed;
 } snap_ctx;
@@ -203,10 +268,25 @@ static int write_png(FILE *out, const void *img)
     return 0;
 }
 
-/* PREFIX-METHOD-STEP.png into path[4096]: 0, or 1 when it does not fit. */
-static int snapshot_path(char *path, const char *prefix, int method, int step)
+/* A snapshot's element table: the mesh and the radiosity shown. */
+typedef struct snap_table {
+    const rad_mesh *mesh;
+    const double *B;
+} snap_table;
+
+static int write_elements(FILE *out, const void *ctx)
 {
-    const int len = snprintf(path, 4096, "%s-%s-%06d.png", prefix, rad_race_name(method), step);
+    const snap_table *t = ctx;
+    return rad_export_elements(out, t->mesh, t->B);
+}
+
+/* PREFIX-METHOD-STEP[SUFFIX] into path[4096] (SUFFIX ".png", "-error.png"
+ * or ".tsv"): 0, or 1 when it does not fit. */
+static int snapshot_path(char *path, const char *prefix, int method, int step,
+                         const char *suffix)
+{
+    const int len = snprintf(path, 4096, "%s-%s-%06d%s", prefix, rad_race_name(method), step,
+                             suffix);
     return len < 0 || len >= 4096;
 }
 
@@ -220,12 +300,13 @@ static int snapshots_check(const progress_args *a)
         return 0;
     const char *prefix = a->prefix ? a->prefix : "progress";
     for (int m = 0; m < RAD_RACE_METHODS; m++) {
-        if (snapshot_path(path, prefix, m, MAX_STEPS)) {
+        if (snapshot_path(path, prefix, m, MAX_STEPS, "-error.png")) {
             cli_error("--snapshot-prefix '%.60s...' makes paths of more than 4095 bytes",
                       prefix);
             return 1;
         }
-        snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0);
+        snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
+                      ".png");
         const cli_output o = {path, write_png, NULL};
         if (cli_outputs_check(&o, 1))
             return 1;
@@ -233,40 +314,64 @@ static int snapshots_check(const progress_args *a)
     return 0;
 }
 
+/* Draw B (element radiosity, and Bv at the vertices or NULL) with ro to path. */
+static int draw(snap_ctx *c, const double *B, const double *Bv, const rad_render_options *ro,
+                const char *path)
+{
+    rad_render_model model;
+    rad_image img;
+    if (rad_render_model_from_mesh(&model, c->mesh, B, Bv, &c->err) != RAD_OK)
+        return 1;
+    int failed = rad_render(&model, ro, &img, &c->err) != RAD_OK;
+    if (!failed) {
+        failed = cli_write_atomic(path, write_png, &img) != 0;
+        rad_image_free(&img);
+    }
+    rad_render_model_free(&model);
+    return failed;
+}
+
+/* The error picture of B against the converged solution (errcolour.c):
+ * flat, at exposure 1, so that the colours come out as their bytes. */
+static int draw_error(snap_ctx *c, const double *B, const char *path)
+{
+    rad_render_options ro = c->ropt;
+    ro.shading = RAD_SHADING_FLAT;
+    ro.exposure = 1;
+    rad_errcolour_field(c->mesh->nelements, B, c->Bref, c->field);
+    return draw(c, c->field, NULL, &ro, path);
+}
+
 static int snapshot(void *user, int method, int step, const double *B)
 {
     snap_ctx *c = user;
-    rad_render_model model;
-    rad_image img;
     char path[4096];
-    if (snapshot_path(path, c->prefix, method, step)) { /* snapshots_check saw to it */
+    if (snapshot_path(path, c->prefix, method, step, "-error.png")) { /* snapshots_check saw to it */
         c->failed = 1;
         snprintf(c->err.message, sizeof c->err.message, "a snapshot path is too long");
         return 1;
     }
     rad_smooth_vertices(c->mesh, B, c->Bv);
-    if (rad_render_model_from_mesh(&model, c->mesh, B, c->Bv, &c->err) != RAD_OK) {
-        c->failed = 1;
-        return 1;
+    snapshot_path(path, c->prefix, method, step, ".png");
+    c->failed = draw(c, B, c->Bv, &c->ropt, path);
+    if (!c->failed && c->error_images) {
+        snapshot_path(path, c->prefix, method, step, "-error.png");
+        c->failed = draw_error(c, B, path);
     }
-    if (rad_render(&model, &c->ropt, &img, &c->err) == RAD_OK) {
-        if (cli_write_atomic(path, write_png, &img)) {
-            c->failed = 1;
-            snprintf(c->err.message, sizeof c->err.message, "the snapshots stop at step %d",
-                     step);
-        }
-        rad_image_free(&img);
-    } else {
-        c->failed = 1;
+    if (!c->failed && c->elements) {
+        const snap_table t = {c->mesh, B};
+        snapshot_path(path, c->prefix, method, step, ".tsv");
+        c->failed = cli_write_atomic(path, write_elements, &t) != 0;
     }
-    rad_render_model_free(&model);
+    if (c->failed && !c->err.message[0])
+        snprintf(c->err.message, sizeof c->err.message, "the snapshots stop at step %d", step);
     return c->failed;
 }
 
 /* ---- outputs --------------------------------------------------------------- */
 
 typedef struct table_ctx {
-    const double *rms;
+    const double *rms, *rms_bands;
     int steps;
 } table_ctx;
 
@@ -277,11 +382,15 @@ static int write_table_to(FILE *out, const void *ctx)
     fprintf(out, "step");
     for (int m = 0; m < RAD_RACE_METHODS; m++)
         fprintf(out, "\t%s", rad_race_name(m));
+    for (int m = 0; m < RAD_RACE_METHODS; m++)
+        fprintf(out, "\t%s_bands", rad_race_name(m));
     fputc('\n', out);
     for (size_t k = 0; k < rows; k++) {
         fprintf(out, "%zu", k);
         for (int m = 0; m < RAD_RACE_METHODS; m++)
             fprintf(out, "\t%.17g", t->rms[k + (size_t)m * rows]);
+        for (int m = 0; m < RAD_RACE_METHODS; m++)
+            fprintf(out, "\t%.17g", t->rms_bands[k + (size_t)m * rows]);
         fputc('\n', out);
     }
     return ferror(out) ? -1 : 0;
@@ -291,10 +400,13 @@ typedef struct plot_ctx {
     const double *rms;
     int steps;
     const char *title;
+    int linear;                 /* a linear error axis, else log */
+    double scale;               /* > 0: the curves divided by it */
 } plot_ctx;
 
 /* Figure 7 of Cohen et al. 1988: the RMS error of each method against the
- * step, on a log axis (steps where it is 0 are not drawn). */
+ * step, on a log axis (steps where it is 0 are not drawn) or a linear one,
+ * in the unit of B or divided by the RMS of the converged solution. */
 static int write_plot_to(FILE *out, const void *ctx)
 {
     static const char *const label[RAD_RACE_METHODS] = {
@@ -304,17 +416,27 @@ static int write_plot_to(FILE *out, const void *ctx)
     const size_t rows = (size_t)p->steps + 1;
     rad_series s[RAD_RACE_METHODS];
     rad_error err;
-    double *x = malloc(sizeof *x * rows);
+    double *x = malloc(sizeof *x * rows * (1 + (p->scale > 0 ? RAD_RACE_METHODS : 0)));
     if (!x) {
         cli_error("out of memory for the plot");
         return -1;
     }
     for (size_t k = 0; k < rows; k++)
         x[k] = (double)k;
-    for (int m = 0; m < RAD_RACE_METHODS; m++)
-        s[m] = (rad_series){label[m], x, p->rms + (size_t)m * rows, (int)rows};
+    for (int m = 0; m < RAD_RACE_METHODS; m++) {
+        const double *y = p->rms + (size_t)m * rows;
+        if (p->scale > 0) { /* normalised: eq. 14 over the converged RMS */
+            double *yn = x + rows * (size_t)(1 + m);
+            for (size_t k = 0; k < rows; k++)
+                yn[k] = y[k] / p->scale;
+            y = yn;
+        }
+        s[m] = (rad_series){label[m], x, y, (int)rows};
+    }
     const rad_plot_spec spec = {p->title, "shooting or gathering steps",
-                                "RMS error of B (eq. 14)", 0, 1, PLOT_WIDTH, PLOT_HEIGHT};
+                                p->scale > 0 ? "RMS error (eq. 14) / RMS of the converged B"
+                                             : "RMS error of B (eq. 14)",
+                                0, !p->linear, PLOT_WIDTH, PLOT_HEIGHT};
     rad_status st = rad_plot_xy(s, RAD_RACE_METHODS, &spec, out, &err);
     free(x);
     if (st != RAD_OK) {
@@ -373,14 +495,16 @@ typedef struct pipeline {
                                    without a matrix, the mesh and B converged
                                    by progressive refinement to 1e-12 */
     rad_ffrow *row;             /* matrix-free: the rows and columns */
-    double *rms, *Bv;
+    double *rms, *rms_bands, *Bv, *field;
     int reached[RAD_RACE_METHODS];
 } pipeline;
 
 static void pipeline_free(pipeline *p)
 {
     free(p->rms);
+    free(p->rms_bands);
     free(p->Bv);
+    free(p->field);
     rad_ffrow_free(p->row);
     rad_result_free(&p->res);
     rad_scene_free(&p->scene);
@@ -440,7 +564,9 @@ static int race(progress_args *a, pipeline *p)
     if (!a->steps_given && last > a->race.steps)
         a->race.steps = last;
     p->rms = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
-    if (!p->rms) {
+    p->rms_bands = malloc(sizeof *p->rms * ((size_t)a->race.steps + 1) * RAD_RACE_METHODS);
+    a->race.rms_bands = p->rms_bands;
+    if (!p->rms || !p->rms_bands) {
         cli_error("out of memory for %d steps", a->race.steps);
         return 1;
     }
@@ -450,10 +576,7 @@ static int race(progress_args *a, pipeline *p)
         sc.prefix = a->prefix ? a->prefix : "progress";
         rad_render_options_init(&sc.ropt);
         sc.ropt.camera = p->scene.camera;
-        double top = 0;
-        for (size_t k = 0; k < (size_t)n * RAD_BANDS; k++)
-            top = fmax(top, p->res.B[k]);
-        sc.ropt.exposure = top > 0 ? 1 / top : 1;
+        sc.ropt.exposure = rad_mesh_auto_exposure(&p->res.mesh, p->res.B, a->exposure_from);
         p->Bv = malloc(sizeof *p->Bv * (size_t)(p->res.mesh.nvertices ? p->res.mesh.nvertices : 1) *
                        RAD_BANDS);
         if (!p->Bv) {
@@ -461,6 +584,14 @@ static int race(progress_args *a, pipeline *p)
             return 1;
         }
         sc.Bv = p->Bv;
+        sc.Bref = p->res.B;
+        sc.error_images = a->error_images;
+        sc.elements = a->snapshot_elements;
+        if (a->error_images &&
+            !(sc.field = p->field = malloc(sizeof *p->field * (size_t)(n ? n : 1) * RAD_BANDS))) {
+            cli_error("out of memory");
+            return 1;
+        }
         a->race.snapshot = snapshot;
         a->race.snapshot_user = &sc;
     }
@@ -475,20 +606,41 @@ static int race(progress_args *a, pipeline *p)
     return 0;
 }
 
+/* eq. 14 of the converged solution against B = 0: the RMS of its
+ * band-averaged radiosity, the unit of a normalised plot (0 when it
+ * cannot be had: the plot is then not normalised). */
+static double converged_rms(const rad_mesh *m, const double *B)
+{
+    const int n = m->nelements;
+    double *area = malloc(sizeof *area * (size_t)(n ? n : 1)), total = 0;
+    if (!area)
+        return 0;
+    for (int i = 0; i < n; i++)
+        total += area[i] = m->elements[i].area;
+    const double r = rad_rms_of(n, area, total, B);
+    free(area);
+    return r;
+}
+
 static int outputs(const progress_args *a, const pipeline *p)
 {
     char title[512];
     const char *name = strrchr(p->scene.filename, '/');
     snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
              name ? name + 1 : p->scene.filename);
-    const table_ctx t = {p->rms, a->race.steps};
-    const plot_ctx pl = {p->rms, a->race.steps, title};
+    const table_ctx t = {p->rms, p->rms_bands, a->race.steps};
+    const plot_ctx pl = {p->rms, a->race.steps, title, a->plot_linear,
+                         a->plot_normalised ? converged_rms(&p->res.mesh, p->res.B) : 0};
     const cli_output o[2] = {{a->output ? a->output : "-", write_table_to, &t},
                              {a->plot, write_plot_to, &pl}};
     if (cli_outputs_write(o, 2))
         return 1;
-    if (!a->common.quiet)
+    if (!a->common.quiet) {
         summary(&p->res.mesh, &a->race, p->rms, p->reached, a->matrix);
+        if (pl.scale > 0)
+            fprintf(stderr, "radiosity: --plot-normalised divides by the RMS of the converged "
+                            "solution, %.17g\n", pl.scale);
+    }
     return 0;
 }
 
@@ -531,6 +683,11 @@ int cmd_progress(int argc, char **argv)
         {"snapshot-prefix", required_argument, NULL, OPT_SNAPSHOT_PREFIX},
         {"snapshots-at", required_argument, NULL, OPT_SNAPSHOTS_AT},
         CLI_METHOD_LONGOPTS,
+        {"exposure-from", required_argument, NULL, OPT_EXPOSURE_FROM},
+        {"error-images", no_argument, NULL, OPT_ERROR_IMAGES},
+        {"snapshot-elements", no_argument, NULL, OPT_SNAPSHOT_ELEMENTS},
+        {"plot-axis", required_argument, NULL, OPT_PLOT_AXIS},
+        {"plot-normalised", no_argument, NULL, OPT_PLOT_NORMALISED},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
@@ -549,8 +706,15 @@ int cmd_progress(int argc, char **argv)
     }
     if (cli_common_check(&a.common))
         return cli_usage_hint("progress");
-    if (a.prefix && a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
-        cli_error("--snapshot-prefix needs --snapshots K or --snapshots-at LIST");
+    if ((a.prefix || a.error_images || a.snapshot_elements) && a.race.snapshot_every == 0 &&
+        a.race.nsnapshot_at == 0) {
+        cli_error("%s needs --snapshots K or --snapshots-at LIST",
+                  a.prefix ? "--snapshot-prefix" : a.error_images ? "--error-images"
+                                                                  : "--snapshot-elements");
+        return cli_usage_hint("progress");
+    }
+    if ((a.plot_axis_given || a.plot_normalised) && !a.plot) {
+        cli_error("%s needs --plot FILE.png", a.plot_axis_given ? "--plot-axis" : "--plot-normalised");
         return cli_usage_hint("progress");
     }
     if (a.steps_given && a.race.nsnapshot_at > 0 &&

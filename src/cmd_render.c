@@ -32,6 +32,7 @@ enum {
     OPT_SHADING,
     OPT_EDGES,
     OPT_EXPOSURE,
+    OPT_EXPOSURE_FROM,
     OPT_SCANLINE,
     OPT_PROFILE,
     OPT_PLOT
@@ -63,7 +64,8 @@ static void help(void)
            "                          (vertex radiosity interpolated; default)\n"
            "      --edges             draw the element edges in black\n"
            "      --exposure X        multiply radiosity by X before the sRGB curve\n"
-           "                          (default: the brightest element is white)\n"
+           "                          (default: automatic, see --exposure-from)\n"
+           CLI_EXPOSURE_FROM_HELP
            "      --scanline ROW      the image row (0 = top) for --profile and --plot\n"
            "      --profile FILE      the row's linear radiosity as TSV: x r g b\n"
            "      --plot FILE         the row's radiosity plotted as a PNG\n"
@@ -153,6 +155,8 @@ static int render_option(render_args *a, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_EXPOSURE_FROM:
+        return cli_parse_exposure_from(arg, &a->ropt.exposure_from);
     case OPT_SCANLINE:
         if (cli_parse_int(arg, 0, RAD_RENDER_MAX_SIDE - 1, &a->scanline)) {
             cli_error("--scanline takes a row number from 0, not '%s'", arg);
@@ -385,6 +389,7 @@ int cmd_render(int argc, char **argv)
         {"shading", required_argument, NULL, OPT_SHADING},
         {"edges", no_argument, NULL, OPT_EDGES},
         {"exposure", required_argument, NULL, OPT_EXPOSURE},
+        {"exposure-from", required_argument, NULL, OPT_EXPOSURE_FROM},
         {"scanline", required_argument, NULL, OPT_SCANLINE},
         {"profile", required_argument, NULL, OPT_PROFILE},
         {"plot", required_argument, NULL, OPT_PLOT},

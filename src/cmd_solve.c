@@ -256,11 +256,11 @@ static int w_report(FILE *out, const void *c)
 static int w_trace(FILE *out, const void *c)
 {
     const cli_run *r = c;
-    fputs("step\tshooter\tshot\tunshot\trms\trms_ambient\n", out);
+    fputs("step\tshooter\tshot\tunshot\trms\trms_ambient\trms_bands\trms_ambient_bands\n", out);
     for (int k = 0; k < r->nshots; k++) {
         const rad_shot *t = &r->shots[k];
-        fprintf(out, "%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\n", t->step, t->shooter, t->shot,
-                t->unshot, t->rms, t->rms_ambient);
+        fprintf(out, "%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", t->step, t->shooter,
+                t->shot, t->unshot, t->rms, t->rms_ambient, t->rms_bands, t->rms_ambient_bands);
     }
     return ferror(out) ? -1 : 0;
 }

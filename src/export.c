@@ -251,13 +251,10 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
 {
     const int n = m->nelements, nv = m->nvertices;
     int maxv = 0;
-    double bmax = 0;
-    for (int e = 0; e < n; e++) {
+    for (int e = 0; e < n; e++)
         maxv = m->elements[e].nverts > maxv ? m->elements[e].nverts : maxv;
-        for (int b = 0; b < RAD_BANDS; b++)
-            bmax = fmax(bmax, B[(size_t)e + (size_t)b * n]);
-    }
-    const double exposure = bmax > 0 ? 1 / bmax : 1;
+    /* the preview colours: the brightest reflector white (exposure.c) */
+    const double exposure = rad_mesh_auto_exposure(m, B, RAD_EXPOSURE_REFLECTORS);
     fprintf(out, "ply\nformat ascii 1.0\ncomment radiosity %s solution\n", PACKAGE_VERSION);
     fprintf(out, "comment scene %s\n", scene->filename ? scene->filename : "-");
     if (scene->camera.defined) {
@@ -274,7 +271,7 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
                  "element face %d\nproperty list %s int vertex_indices\n"
                  "property int surface\n"
                  "property double radiosity_r\nproperty double radiosity_g\n"
-                 "property double radiosity_b\nend_header\n",
+                 "property double radiosity_b\nproperty uchar emitting\nend_header\n",
             nv, n, maxv > 255 ? "int" : "uchar");
     for (int v = 0; v < nv; v++) {
         const rad_vec3 p = m->vertices[v];
@@ -287,8 +284,8 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
         fprintf(out, "%d", el->nverts);
         for (int k = 0; k < el->nverts; k++)
             fprintf(out, " %d", m->vindex[el->first + k]);
-        fprintf(out, " %d %.17g %.17g %.17g\n", el->surface, B[e], B[(size_t)e + n],
-                B[(size_t)e + 2 * (size_t)n]);
+        fprintf(out, " %d %.17g %.17g %.17g %d\n", el->surface, B[e], B[(size_t)e + n],
+                B[(size_t)e + 2 * (size_t)n], el->emit[0] > 0 || el->emit[1] > 0 || el->emit[2] > 0);
     }
     return ferror(out) ? -1 : 0;
 }

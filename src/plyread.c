@@ -46,7 +46,7 @@ typedef enum ptype {
 
 /* What a property means to us. */
 typedef enum role {
-    R_SKIP = 0, R_X, R_Y, R_Z, R_RAD, R_COLOUR, R_INDICES, R_SURFACE
+    R_SKIP = 0, R_X, R_Y, R_Z, R_RAD, R_COLOUR, R_INDICES, R_SURFACE, R_EMITS
 } role;
 
 typedef struct ply_prop {
@@ -78,6 +78,7 @@ typedef struct ply_state {
     int have_format;
     int vertex, face;           /* indices into elem, -1 absent */
     source vsrc, fsrc;
+    int have_emits;             /* the faces carry `emitting` */
     rad_render_model m;
     size_t nindex, capindex;
     int *face_line;             /* input line of each face */
@@ -427,6 +428,9 @@ static rad_status check_header(reader *r, ply_state *s)
             indices = 1;
         } else if (p->count_type == T_NONE && strcmp(p->name, "surface") == 0) {
             p->role = R_SURFACE;
+        } else if (p->count_type == T_NONE && strcmp(p->name, "emitting") == 0) {
+            p->role = R_EMITS; /* the automatic exposure leaves these out */
+            s->have_emits = 1;
         }
     }
     if (!indices) {
@@ -512,11 +516,14 @@ static rad_status face_room(const reader *r, ply_state *s, size_t i)
     size_t n = next_cap(s->fcap, i, (size_t)m->nfaces);
     if (grow(&m->face_first, n + 1, sizeof(int)) || grow(&m->face_surface, n, sizeof(int)) ||
         grow(&m->face_gi, n, sizeof(int)) || grow(&m->face_gj, n, sizeof(int)) ||
+        (s->have_emits && grow(&m->face_emits, n, 1)) ||
         grow(&s->face_line, n, sizeof(int)) || grow(&s->fband, RAD_BANDS * n, sizeof(double)))
         return rad_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory for %zu faces", r->name,
                         r->line, n);
     for (size_t f = s->fcap; f < n; f++)
         m->face_surface[f] = m->face_gi[f] = m->face_gj[f] = -1;
+    if (s->have_emits)
+        memset(m->face_emits + s->fcap, 0, n - s->fcap);
     memset(s->fband + RAD_BANDS * s->fcap, 0, RAD_BANDS * (n - s->fcap) * sizeof(double));
     s->fcap = n;
     return RAD_OK;
@@ -655,6 +662,8 @@ static rad_status read_face(reader *r, ply_state *s, const ply_element *e, size_
             return st;
         if (p->role == R_SURFACE)
             m->face_surface[i] = v >= 0 && v <= INT_MAX ? (int)v : -1;
+        else if (p->role == R_EMITS)
+            m->face_emits[i] = v != 0;
         else if (p->role == R_RAD || p->role == R_COLOUR)
             s->fband[RAD_BANDS * i + (size_t)p->band] = band_value(s->fsrc, v, p->type);
     }

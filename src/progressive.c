@@ -69,13 +69,16 @@
  * The computed values are the dense fill's bit for bit, so the steps and
  * B are the same either way.
  *
- * Error (eq. 14): sqrt(sum_i A_i (B_i - B_conv_i)^2 / sum_i A_i), the
- * area-weighted RMS difference from the converged solution, averaged over
- * the three bands; with the ambient term B' replaces B.
+ * Error (eq. 14, rmserror.c): sqrt(sum_i A_i (B_i - B_conv_i)^2 / sum_i
+ * A_i), the area-weighted RMS difference from the converged solution of
+ * the radiosity averaged over the three bands; with the ambient term B'
+ * replaces B.  The mean of the three per-band values goes beside it
+ * (rms_bands).
  *
  * The trace: when opt->on_shot is set it receives one rad_shot per step:
  * step, shooter (element or patch), shot (power shot, summed over the
- * bands), unshot (unshot power left), rms and rms_ambient against
+ * bands), unshot (unshot power left), rms and rms_ambient (and their
+ * per-band means rms_bands, rms_ambient_bands) against
  * opt->reference, or against a gauss solve of the mesh's own reflectances
  * and emissions when that is NULL (NaN without a matrix to solve).  The solver writes nothing itself: the
  * caller keeps or prints the rows (the command writes them as a TSV file,
@@ -101,6 +104,7 @@
 #include "plot.h"
 #include "progressive.h"
 #include "radiosity.h"
+#include "rmserror.h"
 #include "status.h"
 
 #define NB RAD_BANDS
@@ -438,39 +442,6 @@ static void ambient_display(int n, const double *B, const double *rho, const dou
         }
 }
 
-/* Element i's difference from the reference in band b (eq. 13-14). */
-static double rms_diff(int n, int i, int b, const double *rho, const double *amb,
-                       const double *B, const double *Bref)
-{
-    size_t k = (size_t)i + (size_t)b * n;
-    return B[k] + (amb ? rho[k] * amb[b] : 0) - Bref[k];
-}
-
-/* Area-weighted RMS error (eq. 14), averaged over the bands; amb may be
- * NULL.  Weights A_i / sum A and differences over their largest |d|, so
- * that neither A d^2 nor d^2 overflows or underflows where the RMS itself
- * is a double (as hypot; areas of 1e300, radiosities of 1e300). */
-static double rms_error(int n, const double *area, double total_area, const double *rho,
-                        const double *amb, const double *B, const double *Bref)
-{
-    double mean = 0;
-    if (!(total_area > 0))
-        return 0;
-    for (int b = 0; b < NB; b++) {
-        double dmax = 0, s = 0;
-        for (int i = 0; i < n; i++)
-            dmax = fmax(dmax, fabs(rms_diff(n, i, b, rho, amb, B, Bref)));
-        if (!(dmax > 0))
-            continue;
-        for (int i = 0; i < n; i++) {
-            double d = rms_diff(n, i, b, rho, amb, B, Bref) / dmax;
-            s += area[i] / total_area * d * d;
-        }
-        mean += dmax * sqrt(s);
-    }
-    return mean / NB;
-}
-
 /* ---- the trace ----------------------------------------------------------- */
 
 /* The per-step rows handed to opt->on_shot, and their reference. */
@@ -549,12 +520,15 @@ typedef struct run {
 } run;
 
 /* The area-weighted RMS error of B (with the ambient amb, or not)
- * against the trace's reference; NaN without one. */
-static double run_rms(const run *r, const double *amb)
+ * against the trace's reference (eq. 14, or its per-band mean with
+ * bands); NaN without one. */
+static double run_rms(const run *r, const double *amb, int bands)
 {
     if (!r->tr.Bref)
         return NAN;
-    return rms_error(r->sh.n, r->area, r->amb.total_area, r->rho, amb, r->sh.B, r->tr.Bref);
+    const rad_rms_input in = {r->sh.n, r->area, r->amb.total_area, r->rho, amb, r->sh.B,
+                              r->tr.Bref};
+    return bands ? rad_rms_bands(&in) : rad_rms_eq14(&in);
 }
 
 /* One shooting step and its trace row: RAD_OK, or the failure of a
@@ -572,7 +546,8 @@ static rad_status run_step(run *r, int step, int *stop)
         return RAD_OK;
     ambient_value(&r->amb, r->U, a);
     rad_shot row = {step, s, shot[0] + shot[1] + shot[2], r->U[0] + r->U[1] + r->U[2],
-                    run_rms(r, NULL), run_rms(r, a)};
+                    run_rms(r, NULL, 0), run_rms(r, a, 0), run_rms(r, NULL, 1),
+                    run_rms(r, a, 1)};
     *stop = r->opt->on_shot(r->opt->shot_user, &row);
     return RAD_OK;
 }
@@ -735,8 +710,11 @@ static int race_record(const race *rc, int m, int k, const double *B)
 {
     const size_t n3 = (size_t)rc->n * NB;
     const rad_race_options *o = rc->opt;
-    rc->rms[(size_t)k + (size_t)m * (size_t)(o->steps + 1)] =
-        rms_error(rc->n, rc->area, rc->total_area, rc->rho, NULL, B, rc->Bref);
+    const size_t at = (size_t)k + (size_t)m * (size_t)(o->steps + 1);
+    const rad_rms_input in = {rc->n, rc->area, rc->total_area, rc->rho, NULL, B, rc->Bref};
+    rc->rms[at] = rad_rms_eq14(&in);
+    if (o->rms_bands)
+        o->rms_bands[at] = rad_rms_bands(&in);
     if (rc->reached[m] < 0 && max_diff(B, rc->Bref, n3) <= o->reach * rc->scale)
         rc->reached[m] = k;
     if (snapshot_due(o, k) && o->snapshot(o->snapshot_user, m, k, B))

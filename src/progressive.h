@@ -57,6 +57,8 @@ typedef struct rad_race_options {
     void *snapshot_user;
     rad_progress_fn progress;   /* may be NULL */
     void *progress_user;
+    double *rms_bands;          /* NULL, or laid out as rms: the per-band RMS
+                                   errors averaged over the bands (rmserror.h) */
 } rad_race_options;
 
 void rad_race_options_init(rad_race_options *opt);
@@ -64,7 +66,7 @@ void rad_race_options_init(rad_race_options *opt);
 /* Run the four methods for opt->steps steps each from B = E against the
  * converged solution Bref (n x RAD_BANDS).  rms is (steps + 1) x
  * RAD_RACE_METHODS, column-major: rms[k + m*(steps + 1)] is the RMS error of
- * method m after k steps (row 0: B = E).  reached[m] is the first step
+ * method m after k steps (eq. 14: of the band-averaged radiosity) (row 0: B = E).  reached[m] is the first step
  * within opt->reach of Bref, or -1 if none within the steps. */
 rad_status rad_race_run(const rad_mesh *mesh, const double *F, const double *Bref,
                         const rad_race_options *opt, double *rms, int *reached,

@@ -43,8 +43,8 @@
  * line of an edge is the trace of the plane through the eye and the edge,
  * m = a x b in camera space, so it needs no clipping.
  *
- * Tone mapping: radiosity is linear; it is multiplied by the exposure,
- * clamped to [0, 1], encoded with the sRGB transfer curve (IEC 61966-2-1:1999)
+ * Tone mapping: radiosity is linear; it is multiplied by the exposure
+ * (given, or automatic: exposure.c), clamped to [0, 1], encoded with the sRGB transfer curve (IEC 61966-2-1:1999)
  * and rounded to 8 bits.
  */
 #include <config.h>
@@ -108,6 +108,7 @@ void rad_render_model_free(rad_render_model *m)
     free(m->face_surface);
     free(m->face_gi);
     free(m->face_gj);
+    free(m->face_emits);
     memset(m, 0, sizeof *m);
 }
 
@@ -127,8 +128,9 @@ rad_status rad_render_model_from_mesh(rad_render_model *m, const rad_mesh *mesh,
     m->face_surface = malloc(sizeof(int) * (nf ? nf : 1));
     m->face_gi = malloc(sizeof(int) * (nf ? nf : 1));
     m->face_gj = malloc(sizeof(int) * (nf ? nf : 1));
+    m->face_emits = malloc(nf ? nf : 1);
     if (!m->pos || (Bv && !m->vrad) || !m->face_first || !m->face_index || !m->frad ||
-        !m->face_surface || !m->face_gi || !m->face_gj) {
+        !m->face_surface || !m->face_gi || !m->face_gj || !m->face_emits) {
         rad_render_model_free(m);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for a picture of %zu elements", nf);
     }
@@ -149,6 +151,7 @@ rad_status rad_render_model_from_mesh(rad_render_model *m, const rad_mesh *mesh,
         m->face_surface[e] = el->surface;
         m->face_gi[e] = el->gi;
         m->face_gj[e] = el->gj;
+        m->face_emits[e] = el->emit[0] > 0 || el->emit[1] > 0 || el->emit[2] > 0;
     }
     m->face_first[nf] = k;
     return RAD_OK;
@@ -750,8 +753,8 @@ static rad_status render_frame(const rad_render_model *m, const rad_render_optio
         face_work_free(&w);
         return st;
     }
-    double mx = rad_render_max_radiosity(m);
-    img->exposure = opt->exposure > 0 ? opt->exposure : mx > 0 ? 1.0 / mx : 1.0;
+    img->exposure =
+        opt->exposure > 0 ? opt->exposure : rad_render_auto_exposure(m, opt->exposure_from);
     img->edges = opt->edges != 0;
     const view v = make_view(opt, m);
     for (int f = 0; f < m->nfaces; f++) {

@@ -182,6 +182,9 @@ bad "missing argument" 'frame\nrotate box 0 0 1\n' "2: missing number"
 ok $? "animate without a change file is a usage error"
 "$RADIOSITY" animate --strategy 3 room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--strategy 3 is a usage error"
+"$RADIOSITY" animate --exposure-from lamps room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
+ok $? "--exposure-from lamps is a usage error"
+"$RADIOSITY" animate --help | grep -q -- --exposure-from; ok $? "animate --help lists --exposure-from"
 "$RADIOSITY" animate --frames 'x.png' room.scene all.changes > /dev/null 2> err; [ $? -eq 2 ]
 ok $? "--frames without an integer conversion is a usage error"
 for p in 'x%d%d.png' 'x%s.png' 'x%n.png' 'x%ld.png' 'x%*d.png' 'x%' 'x%%d.png' 'x%2147483648d.png' 'x%100d.png'; do

@@ -60,14 +60,16 @@ echo precious > "$work/keep.tsv"
 "$RADIOSITY" progress -q -o "$work/keep.tsv" "$work/no-such.scene" 2> /dev/null; rc=$?
 [ $rc -eq 1 ] && [ "$(cat "$work/keep.tsv")" = precious ]; ok $? "missing scene: exit 1, output untouched"
 for bad in "--steps 0" "--steps x" "--reach 2" "--snapshots 0" "--snapshot-prefix p" "--bogus" \
-  "--snapshots-at 3,2" "--snapshots-at x" "--snapshots-at 1,-2" "--snapshots-at 1,"; do
+  "--snapshots-at 3,2" "--snapshots-at x" "--snapshots-at 1,-2" "--snapshots-at 1," \
+  "--exposure-from lamp"; do
   # shellcheck disable=SC2086
   "$RADIOSITY" progress $bad "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "progress $bad: exit 2"
 done
 "$RADIOSITY" progress > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "no scene: exit 2"
 "$RADIOSITY" progress "$cube" "$cube" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "two scenes: exit 2"
 "$RADIOSITY" progress --help > "$work/help"; ok $? "progress --help"
-for o in --steps --output --plot --reach --patches --snapshots --snapshots-at --snapshot-prefix --matrix --mesh --quadrature --accuracy --quiet; do
+for o in --steps --output --plot --reach --patches --snapshots --snapshots-at --snapshot-prefix \
+  --exposure-from --matrix --mesh --quadrature --accuracy --quiet; do
   grep -q -- "$o" "$work/help"; ok $? "progress --help lists $o"
 done
 

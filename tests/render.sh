@@ -67,6 +67,16 @@ ok $mirror_ok "floor and ceiling mirror each other (rows k and 511-k, k = 20 60 
 # the PLY round trip draws the same picture, byte for byte (%.17g is exact)
 "$RADIOSITY" render "$work/sol.ply" -o "$work/fromply.png"
 cmp -s "$work/cube.png" "$work/fromply.png"; ok $? "render SOLUTION.ply = render SCENE, byte for byte"
+# the cube's front wall emits: the default exposure leaves it out (the PLY
+# says which faces emit), --exposure-from all counts it, so the pictures
+# differ, and each survives the PLY round trip
+grep -q '^property uchar emitting$' "$work/sol.ply"; ok $? "the PLY marks the emitting faces"
+"$RADIOSITY" render -q "$cube" --exposure-from all -o "$work/all.png"
+"$RADIOSITY" render "$work/sol.ply" --exposure-from all -o "$work/allply.png"
+! cmp -s "$work/cube.png" "$work/all.png" && cmp -s "$work/all.png" "$work/allply.png"
+ok $? "--exposure-from all differs from the default and survives the PLY round trip"
+"$RADIOSITY" render -q "$cube" --exposure-from reflectors -o "$work/refl.png"
+cmp -s "$work/cube.png" "$work/refl.png"; ok $? "--exposure-from reflectors is the default"
 
 # deterministic
 "$RADIOSITY" render -q "$cube" -o "$work/cube2.png"
@@ -114,7 +124,7 @@ ok $? "--eye and --at override the PLY's camera"
 "$RADIOSITY" render --help > "$work/help"; rc=$?
 ok $rc "render --help exits 0"
 missing=
-for o in -o --output --width --height --eye --at --up --fov --shading --edges --exposure \
+for o in -o --output --width --height --eye --at --up --fov --shading --edges --exposure --exposure-from \
          --scanline --profile --plot --help --mesh --bounces --solver; do
   grep -q -- "$o" "$work/help" || missing="$missing $o"
 done
@@ -131,6 +141,7 @@ usage "bad --width" --width 0 "$cube" -o "$work/x.png"
 usage "bad --eye" --eye 1,2 "$cube" -o "$work/x.png"
 usage "bad --fov" --fov 180 "$cube" -o "$work/x.png"
 usage "bad --exposure" --exposure -1 "$cube" -o "$work/x.png"
+usage "bad --exposure-from" --exposure-from lamps "$cube" -o "$work/x.png"
 usage "--scanline outside the picture" --scanline 512 --profile "$work/p.tsv" "$cube" -o "$work/x.png"
 usage "--profile without --scanline" --profile "$work/p.tsv" "$cube" -o "$work/x.png"
 usage "--mesh with a PLY" --mesh 2x2 "$work/sol.ply" -o "$work/x.png"

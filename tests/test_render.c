@@ -29,7 +29,9 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "errcolour.h"
 #include "plot.h"
+#include "radiosity/pipeline.h"
 #include "radiosity/plyread.h"
 #include "radiosity.h"
 #include "radiosity/render.h"
@@ -492,6 +494,150 @@ static void test_edges_exposure(void)
     fixture_free(&fx);
 }
 
+/* The error colours of errcolour.c by hand from its documented scale:
+ * grey 128 at e = 0, linear to red (255, 0, 0) at e = +0.5 and beyond, to
+ * blue (0, 0, 255) at -0.5 and beyond; e = 0.25 is half way: 191.5 -> 192
+ * (round half away from zero) and 64.  And the picture drawn from the
+ * field at exposure 1, flat, shows those bytes exactly. */
+static void test_errcolour(void)
+{
+    static const struct { double e; unsigned char c[3]; } cases[] = {
+        {0, {128, 128, 128}},  {0.25, {192, 64, 64}}, {0.5, {255, 0, 0}},
+        {7, {255, 0, 0}},      {-0.25, {64, 64, 192}}, {-1, {0, 0, 255}},
+        {INFINITY, {255, 0, 0}}};
+    int bad = 0;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        unsigned char c[3];
+        rad_errcolour_of(cases[k].e, c);
+        bad += memcmp(c, cases[k].c, 3) != 0;
+    }
+    tap_ok(bad == 0, "error colours: grey at 0, red over, blue under, full at 50%% (%d off)", bad);
+    /* B = 1.25 Bref on element 0 (red-ish), 0.5 Bref on element 1 (blue) */
+    const double B[6] = {1.25, 0.5, 2.5, 1, 1.25, 0.5}, Bref[6] = {1, 1, 2, 2, 1, 1};
+    tap_close(rad_errcolour_relative(2, 0, B, Bref), 0.25, 1e-15, "relative error of the band mean");
+    double field[6];
+    rad_errcolour_field(2, B, Bref, field);
+    int same = 1;
+    for (int i = 0; i < 2; i++) {
+        unsigned char c[3];
+        rad_errcolour_of(i == 0 ? 0.25 : -0.5, c);
+        for (int b = 0; b < 3; b++)
+            same &= rad_tone_byte(field[i + 2 * b], 1) == c[b];
+    }
+    tap_ok(same, "the field at exposure 1 tone-maps back to the colour bytes");
+}
+
+/* 8-bit sRGB of a linear value clamped to [0, 1] (IEC 61966-2-1:1999). */
+static double srgb_byte(double x)
+{
+    x = fmin(fmax(x, 0), 1);
+    return 255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055);
+}
+
+/* The automatic exposure on the Cornell box (data/cornell-box.scene at
+ * 2x2 per surface): by default the brightest element that emits nothing,
+ * found here from the mesh's E and the solution's B, maps to full scale
+ * and the lamp, about 18 times brighter, clips to white; with
+ * RAD_EXPOSURE_ALL the lamp sets the scale and the walls fall to 1/18 of
+ * it: the nearly black picture of before. */
+static void test_exposure_cornell(void)
+{
+    const char *top = getenv("top_srcdir");
+    char path[4096];
+    rad_scene sc;
+    rad_result res;
+    rad_pipeline_options po;
+    rad_render_model model;
+    rad_error err;
+    snprintf(path, sizeof path, "%s/data/cornell-box.scene", top ? top : ".");
+    memset(&res, 0, sizeof res);
+    if (rad_scene_load(&sc, path, &err)) {
+        tap_ok(0, "cornell box: %s", err.message);
+        return;
+    }
+    rad_scene_set_mesh(&sc, 2, 2);
+    rad_pipeline_options_init(&po);
+    if (rad_pipeline_run(&sc, &po, &res, &err) ||
+        rad_render_model_from_mesh(&model, &res.mesh, res.B, res.Bv, &err)) {
+        tap_ok(0, "cornell box: %s", err.message);
+        rad_result_free(&res);
+        rad_scene_free(&sc);
+        return;
+    }
+    const int n = res.mesh.nelements;
+    double wall = 0, lamp = 0;
+    for (int e = 0; e < n; e++) {
+        const double *E = res.mesh.elements[e].emit;
+        const int emits = E[0] > 0 || E[1] > 0 || E[2] > 0;
+        for (int b = 0; b < 3; b++) {
+            const double v = res.B[e + (size_t)b * n];
+            if (emits)
+                lamp = fmax(lamp, v);
+            else
+                wall = fmax(wall, v);
+        }
+    }
+    rad_render_options o;
+    rad_render_options_init(&o);
+    o.camera = sc.camera;
+    o.width = o.height = 96;
+    o.shading = RAD_SHADING_FLAT;
+    rad_image img, all;
+    rad_render(&model, &o, &img, &err);
+    o.exposure_from = RAD_EXPOSURE_ALL;
+    rad_render(&model, &o, &all, &err);
+    tap_ok(lamp > 10 * wall, "cornell box: the lamp (%g) outshines the brightest wall (%g)",
+           lamp, wall);
+    tap_ok(img.exposure == 1 / wall && all.exposure == 1 / lamp,
+           "default exposure 1 / brightest reflector (%g), 'all' 1 / lamp (%g)", img.exposure,
+           all.exposure);
+    tap_ok(rad_mesh_auto_exposure(&res.mesh, res.B, RAD_EXPOSURE_REFLECTORS) == 1 / wall &&
+               rad_mesh_auto_exposure(&res.mesh, res.B, RAD_EXPOSURE_ALL) == 1 / lamp,
+           "the mesh's automatic exposure is the same");
+    unsigned char *rgb = malloc(3 * 96 * 96), *rgb_all = malloc(3 * 96 * 96);
+    rad_image_to_rgb8(&img, rgb);
+    rad_image_to_rgb8(&all, rgb_all);
+    /* every pixel (flat shading: its face's B) is the sRGB curve (IEC
+     * 61966-2-1, 1.055 x^(1/2.4) - 0.055 above 0.0031308, 12.92 x below)
+     * of B times the exposure, clamped to [0, 1], in 8 bits, +-1 */
+    long lamp_px = 0, lamp_white = 0, bad = 0, bad_all = 0;
+    int hi = 0, hi_all = 0;
+    for (int p = 0; p < 96 * 96; p++) {
+        const int f = img.face[p];
+        if (f < 0)
+            continue;
+        const double *E = res.mesh.elements[f].emit;
+        if (E[0] > 0 || E[1] > 0 || E[2] > 0) {
+            lamp_px++;
+            lamp_white += rgb[3 * p] == 255 && rgb[3 * p + 1] == 255 && rgb[3 * p + 2] == 255;
+            continue;
+        }
+        for (int b = 0; b < 3; b++) {
+            const double v = res.B[f + (size_t)b * n];
+            bad += fabs(rgb[3 * p + b] - srgb_byte(v / wall)) > 1;
+            bad_all += fabs(rgb_all[3 * p + b] - srgb_byte(v / lamp)) > 1;
+            hi = rgb[3 * p + b] > hi ? rgb[3 * p + b] : hi;
+            hi_all = rgb_all[3 * p + b] > hi_all ? rgb_all[3 * p + b] : hi_all;
+        }
+    }
+    tap_ok(bad == 0 && bad_all == 0, "every reflector pixel is srgb(B / brightest reflector), "
+           "or with RAD_EXPOSURE_ALL srgb(B / lamp) (%ld, %ld off)", bad, bad_all);
+    tap_ok(lamp_px > 0 && lamp_white == lamp_px, "the lamp clips to white (%ld of %ld pixels)",
+           lamp_white, lamp_px);
+    /* the exposures differ by lamp / wall (17.8); through the power branch
+     * of the curve a byte shrinks by at least that ^ (1 / 2.4) = 3.3 (the
+     * brightest reflector on top of the tall block is out of sight) */
+    tap_ok(hi > 3 * hi_all, "the brightest reflector pixel: %d of 255, %d with "
+           "RAD_EXPOSURE_ALL (no longer nearly black)", hi, hi_all);
+    free(rgb);
+    free(rgb_all);
+    rad_image_free(&img);
+    rad_image_free(&all);
+    rad_render_model_free(&model);
+    rad_result_free(&res);
+    rad_scene_free(&sc);
+}
+
 static int read_file(const char *path, unsigned char **buf, size_t *len)
 {
     FILE *f = fopen(path, "rb");
@@ -800,6 +946,8 @@ int main(void)
     test_centres();
     test_linear();
     test_edges_exposure();
+    test_exposure_cornell();
+    test_errcolour();
     test_determinism();
     test_bad_options();
     test_ply_good();

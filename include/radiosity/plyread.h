@@ -9,7 +9,8 @@
  *     else from the sRGB colours red/green/blue (decoded to linear), else
  *     the mean of the radiosity of the faces around the vertex;
  *   - element face with the list vertex_indices (or vertex_index), an
- *     optional int surface, and face radiosity from radiosity_r/g/b, else
+ *     optional int surface, an optional `emitting` (non-zero: a light
+ *     source, which the automatic exposure leaves out), and face radiosity from radiosity_r/g/b, else
  *     red/green/blue, else the mean of its vertices' radiosity;
  *   - "comment camera eye X Y Z at X Y Z up X Y Z fov F" gives the camera.
  * Properties may come in any order; unknown properties and elements are

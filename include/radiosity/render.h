@@ -45,12 +45,22 @@ typedef struct rad_render_model {
     double *frad;               /* nfaces x RAD_BANDS element radiosity */
     int *face_surface;          /* scene surface of each face, -1 unknown */
     int *face_gi, *face_gj;     /* grid position in its surface, -1 unknown */
+    unsigned char *face_emits;  /* non-zero: the face emits light (E > 0 in
+                                   some band); NULL: not known */
 } rad_render_model;
 
 typedef enum rad_shading {
     RAD_SHADING_FLAT = 0,       /* each face in its element radiosity */
     RAD_SHADING_SMOOTH          /* vertex radiosity interpolated (Gouraud 1971) */
 } rad_shading;
+
+/* What the automatic exposure maps to full scale: the brightest element
+ * that does not emit (so that a small bright lamp does not leave the room
+ * nearly black), or the brightest of all, lamps included. */
+typedef enum rad_exposure_from {
+    RAD_EXPOSURE_REFLECTORS = 0,
+    RAD_EXPOSURE_ALL
+} rad_exposure_from;
 
 #define RAD_RENDER_MAX_SIDE 16384       /* largest width or height */
 #define RAD_RENDER_MAX_PIXELS (1 << 24) /* largest width * height (~37 bytes each) */
@@ -61,8 +71,13 @@ typedef struct rad_render_options {
     rad_shading shading;
     int edges;                  /* non-zero: draw the element edges in black */
     double exposure;            /* > 0: radiosity multiplier before the sRGB
-                                   curve; 0: 1 / the largest element
-                                   radiosity (the brightest element is white) */
+                                   curve; 0: automatic, see exposure_from */
+    rad_exposure_from exposure_from; /* automatic exposure: 1 / the largest
+                                   radiosity (any band) of the faces that do
+                                   not emit (REFLECTORS, the default), or of
+                                   all faces (ALL); REFLECTORS falls back to
+                                   ALL when no face is known to emit or no
+                                   reflector has radiosity above 0 */
 } rad_render_options;
 
 /* A rendered picture, before and after tone mapping. */
@@ -78,7 +93,8 @@ typedef struct rad_image {
     int edges;                  /* whether edge[] is drawn */
 } rad_image;
 
-/* 512 x 512, smooth, no edges, automatic exposure, no camera. */
+/* 512 x 512, smooth, no edges, automatic exposure from the reflectors, no
+ * camera. */
 RAD_API void rad_render_options_init(rad_render_options *opt);
 
 /* The model of a solved mesh: its faces are the elements, its vertices the
@@ -90,6 +106,18 @@ RAD_API void rad_render_model_free(rad_render_model *model);
 
 /* The largest element radiosity over all faces and bands (0 if none). */
 RAD_API double rad_render_max_radiosity(const rad_render_model *model);
+
+/* The automatic exposure of the model (see rad_render_options): 1 / the
+ * largest radiosity counted, or 1 when that is 0. */
+RAD_API double rad_render_auto_exposure(const rad_render_model *model, rad_exposure_from from);
+
+/* The same from a solved mesh and its element radiosity B (nelements x
+ * RAD_BANDS, column-major): an element emits when its E > 0 in a band. */
+RAD_API double rad_mesh_auto_exposure(const rad_mesh *mesh, const double *B,
+                                      rad_exposure_from from);
+
+/* "reflectors" or "all" to *from: 0, or -1 for another name. */
+RAD_API int rad_exposure_from_parse(const char *name, rad_exposure_from *from);
 
 /* Is the camera usable: fov in (0, 180), eye != at, up not parallel to the
  * view direction, all finite? */
