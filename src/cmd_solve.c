@@ -107,6 +107,24 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_ADAPTIVE:
+        s->solve.adaptive = 1;
+        return 0;
+    case OPT_SUBDIVIDE_THRESHOLD:
+        s->given_adaptive_option = 1;
+        if (cli_parse_double(arg, &s->solve.subdivide_threshold) ||
+            !(s->solve.subdivide_threshold >= 0) || !isfinite(s->solve.subdivide_threshold)) {
+            cli_error("--subdivide-threshold takes a number >= 0, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_MAX_DEPTH:
+        s->given_adaptive_option = 1;
+        if (cli_parse_int(arg, 0, 8, &s->solve.max_depth)) {
+            cli_error("--max-depth takes a whole number from 0 to 8, not '%s'", arg);
+            return 2;
+        }
+        return 0;
     case OPT_MATRIX:
         s->given_matrix = 1;
         for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)
@@ -140,6 +158,16 @@ int cli_solve_check(const cli_solve *s)
         bad = "--matrix applies to --solver progressive (the other solvers need F)";
     else if (s->matrix == RAD_MATRIX_NONE && s->form_factors)
         bad = "--matrix none stores no form factors: --form-factors cannot write them";
+    else if (s->given_adaptive_option && !s->solve.adaptive)
+        bad = "--subdivide-threshold and --max-depth apply to --adaptive";
+    else if (s->solve.adaptive && (v != RAD_SOLVER_PROGRESSIVE || s->given_bounces))
+        bad = "--adaptive applies to --solver progressive";
+    else if (s->solve.adaptive && (s->solve.patches || s->solve.patch_p))
+        bad = "--adaptive: the mesh's elements are the patches that shoot; give --mesh, "
+              "not --patches";
+    else if (s->solve.adaptive && (s->matrix == RAD_MATRIX_DENSE || s->form_factors))
+        bad = "--adaptive computes its form factors on the fly (as --matrix none): no "
+              "--matrix dense, no --form-factors";
     else if (s->solve.error_bounds && (v != RAD_SOLVER_GAUSS || s->given_bounces))
         bad = "--error-bounds applies to --solver gauss (LU) only";
     else if ((s->given_tolerance || s->given_max_iterations) &&
@@ -179,7 +207,7 @@ void cli_run_free(cli_run *run)
 static int w_elements(FILE *out, const void *c)
 {
     const cli_run *r = c;
-    return rad_export_elements(out, &r->res.mesh, r->res.B);
+    return rad_export_elements_level(out, &r->res.mesh, r->res.B, r->res.level);
 }
 
 static int w_matrix(FILE *out, const void *c)
