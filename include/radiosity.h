@@ -326,7 +326,8 @@ typedef struct rad_solve_options {
     int adaptive;               /* 1: split elements where B varies */
     double subdivide_threshold; /* split an element whose B differs from an edge
                                    neighbour's by more than this fraction of the
-                                   larger of the two (default 0.2) */
+                                   largest reflected radiosity B - E in the
+                                   scene, per band (default 0.1) */
     int max_depth;              /* levels of splitting below a starting element
                                    (default 3: down to 1/8 of its side) */
 } rad_solve_options;

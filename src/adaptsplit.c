@@ -10,12 +10,18 @@
  * shot to them again.  Here:
  *
  *   test   leaf j (of a quad surface, level < D) is split when, in some
- *          band, |B_j - B_k| > T max(|B_j|, |B_k|) for an edge neighbour k
- *          on the same surface (a leaf whose square shares a segment of
- *          j's boundary); T = opt->subdivide_threshold.  The test is run
- *          again on the new leaves until none exceeds T or all are at
- *          depth D, so one shot can refine a shadow edge to the finest
- *          level.
+ *          band b, |B_j - B_k| > T Bmax_b for an edge neighbour k on the
+ *          same surface (a leaf whose square shares a segment of j's
+ *          boundary), T = opt->subdivide_threshold and Bmax_b the largest
+ *          reflected radiosity B - E of any leaf (the brightest lit
+ *          surface: lamps would make the test blind to everything they
+ *          light).  A difference relative to the pair's own values was
+ *          tried first and refines dark regions where the error is
+ *          small: on data/blocker.scene it needed 736 elements for the
+ *          area-weighted RMS error the scene-relative test reaches with
+ *          667 (tests/adaptive.sh).  The test is run again on the new
+ *          leaves until none exceeds T or all are at depth D, so one shot
+ *          can refine a shadow edge to the finest level.
  *   split  j's four children become leaves.  Each child c receives from
  *          every patch P that has shot so far, with its own factor:
  *              B_c = E_c + rho_c sum_P S_P F_cP                        (1)

@@ -223,8 +223,10 @@ typedef struct cli_solve {
     "                          `level' (0: a starting element); outputs show\n"\
     "                          the adaptive mesh, hanging vertices interpolated\n"\
     "                          along their edge (no cracks)\n"                \
-    "      --subdivide-threshold T  --adaptive: split where |B - B_neighbour| >\n"\
-    "                          T max(B, B_neighbour) in some band (default 0.2)\n"\
+    "      --subdivide-threshold T  --adaptive: split an element where |B -\n"\
+    "                          B_neighbour| > T times the largest reflected\n" \
+    "                          radiosity (B - E) in the scene, in some band\n" \
+    "                          (default 0.1)\n"                                \
     "      --max-depth D       --adaptive: at most D splits below a starting\n"\
     "                          element, 0 to 8 (default 3: sides down to 1/8)\n"\
     "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\

@@ -6,8 +6,14 @@
 #
 # Usage:
 #   adaptive_rms.py rms REF.tsv X.tsv     area-weighted RMS error of X against REF
+#   adaptive_rms.py smooth REF.tsv X.ply  the same for X's smoothed (vertex)
+#                                         radiosity, bilinear in each element
 #   adaptive_rms.py shadow SCENE X.tsv    share of subdivided elements near the
 #                                         shadow boundary (see below)
+#   adaptive_rms.py cracks A.png B.png    background pixels of A that are not
+#                                         background in B (see below)
+#   adaptive_rms.py seams X.ply -         largest jump of the smoothed radiosity
+#                                         across the mesh's T-junctions
 #
 # rms: the reference is a uniform fine mesh (e.g. 32 x 32 per surface); every
 # element of X, uniform or adaptive, is a union of reference elements (its
@@ -39,8 +45,26 @@
 # of it when it is on the receiver and its centroid's distance to the
 # nearest line is at most its parent's side (twice its own).
 # Prints: share near subdivided
+#
+# smooth: as rms, but X is the vertex radiosity of a solution PLY,
+# interpolated bilinearly from each element's four corners (hanging
+# vertices lie on the sides and carry the interpolated value already).
+#
+# seams: a vertex of X that lies on a side of an element but is not one of
+# its corners (a hanging vertex) must carry the value the element's
+# bilinear interpolation has there, or Gouraud shading jumps across that
+# side.  Prints: largest |difference| and the number of such pairs.
+#
+# cracks: both images are 8-bit RGB PNGs (the renderer's); background is
+# exactly black (0, 0, 0), which no surface of data/blocker.scene reaches
+# (its darkest radiosity, about 0.005, tone-maps to a byte near 17).  A is
+# the adaptive picture, B one of the same scene and camera on a uniform
+# mesh (no T-junctions): a pixel black in A but not in B is a crack.
+# Prints: cracks background_pixels_of_A
 import math
+import struct
 import sys
+import zlib
 
 
 def read_table(path):
@@ -83,6 +107,140 @@ def rms(ref, x):
         num += r['a'] * (hit[0]['b'] - r['b']) ** 2
         den += r['a']
     return math.sqrt(num / den)
+
+
+def read_ply(path):
+    """Faces of a solution PLY as elements with their corner vertex values."""
+    return read_ply_all(path)[1]
+
+
+def read_ply_all(path):
+    with open(path) as f:
+        lines = f.read().split('\n')
+    k = lines.index('end_header')
+    nv = int([l for l in lines[:k] if l.startswith('element vertex')][0].split()[2])
+    verts = []
+    for l in lines[k + 1:k + 1 + nv]:
+        v = [float(t) for t in l.split()]
+        verts.append(((v[0], v[1], v[2]), (v[3] + v[4] + v[5]) / 3))
+    faces, vsurf = [], {}
+    for l in lines[k + 1 + nv:]:
+        t = l.split()
+        if not t:
+            continue
+        n = int(t[0])
+        idx = [int(x) for x in t[1:1 + n]]
+        pts = [verts[i] for i in idx]
+        for i in idx:
+            vsurf[i] = int(t[1 + n])
+        lo = [min(p[0][i] for p in pts) for i in range(3)]
+        hi = [max(p[0][i] for p in pts) for i in range(3)]
+        axes = [i for i in range(3) if hi[i] > lo[i]]
+        corner = {}
+        for p, b in pts:  # the box's corners (hanging vertices lie on its sides)
+            key = tuple(p[i] == lo[i] for i in axes)
+            if all(p[i] in (lo[i], hi[i]) for i in axes):
+                corner[key] = b
+        faces.append({'s': int(t[1 + n]), 'lo': lo, 'hi': hi, 'axes': axes, 'corner': corner})
+    return [(p, b, vsurf.get(v)) for v, (p, b) in enumerate(verts)], faces
+
+
+def seams(path):
+    verts, faces = read_ply_all(path)
+    worst, pairs = 0.0, 0
+    for p, b, surf in verts:
+        for f in faces:
+            i, j = f['axes']
+            if f['s'] != surf:
+                continue
+            if not all(f['lo'][k] <= p[k] <= f['hi'][k] for k in (i, j)):
+                continue
+            on_side = p[i] in (f['lo'][i], f['hi'][i]) or p[j] in (f['lo'][j], f['hi'][j])
+            corner = p[i] in (f['lo'][i], f['hi'][i]) and p[j] in (f['lo'][j], f['hi'][j])
+            if not on_side or corner:
+                continue
+            worst = max(worst, abs(smooth_value(f, p) - b))
+            pairs += 1
+    return worst, pairs
+
+
+def smooth_value(f, c):
+    """The bilinear interpolation of the face's corner values at c, or None."""
+    i, j = f['axes']
+    if not all(f['lo'][k] - 1e-12 <= c[k] <= f['hi'][k] + 1e-12 for k in (i, j)):
+        return None
+    u = (c[i] - f['lo'][i]) / (f['hi'][i] - f['lo'][i])
+    v = (c[j] - f['lo'][j]) / (f['hi'][j] - f['lo'][j])
+    q = f['corner']
+    return ((1 - u) * (1 - v) * q[(True, True)] + u * (1 - v) * q[(False, True)] +
+            u * v * q[(False, False)] + (1 - u) * v * q[(True, False)])
+
+
+def rms_smooth(ref, faces):
+    by_surface = {}
+    for f in faces:
+        by_surface.setdefault(f['s'], []).append(f)
+    num = den = 0.0
+    for r in ref:
+        vals = [smooth_value(f, r['c']) for f in by_surface.get(r['s'], [])]
+        vals = [x for x in vals if x is not None]
+        if not vals:
+            sys.exit('adaptive_rms.py: no face of surface %d contains %r' % (r['s'], r['c']))
+        num += r['a'] * (vals[0] - r['b']) ** 2
+        den += r['a']
+    return math.sqrt(num / den)
+
+
+def png_rgb(path):
+    """Width, height and rows of bytes of an 8-bit RGB non-interlaced PNG."""
+    with open(path, 'rb') as f:
+        data = f.read()
+    pos, idat, w = 8, b'', 0
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b'IHDR':
+            w, h, depth, ctype, _, _, lace = struct.unpack('>IIBBBBB', body)
+            if depth != 8 or ctype != 2 or lace != 0:
+                sys.exit('adaptive_rms.py: %s is not 8-bit RGB' % path)
+        elif kind == b'IDAT':
+            idat += body
+        pos += 12 + n
+    raw, stride, rows, prev = zlib.decompress(idat), 3 * w, [], bytearray(3 * w)
+    for y in range(h):
+        ftype, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for x in range(stride):  # PNG filters (PNG specification, section 9)
+            a = line[x - 3] if x >= 3 else 0
+            b, c = prev[x], prev[x - 3] if x >= 3 else 0
+            if ftype == 1:
+                line[x] = (line[x] + a) & 255
+            elif ftype == 2:
+                line[x] = (line[x] + b) & 255
+            elif ftype == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif ftype == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                pred = a if pa <= pb and pa <= pc else b if pb <= pc else c
+                line[x] = (line[x] + pred) & 255
+        rows.append(line)
+        prev = line
+    return w, h, rows
+
+
+def cracks(a_path, b_path):
+    wa, ha, a = png_rgb(a_path)
+    wb, hb, b = png_rgb(b_path)
+    if (wa, ha) != (wb, hb):
+        sys.exit('adaptive_rms.py: the pictures differ in size')
+    bad = bg = 0
+    for y in range(ha):
+        for x in range(wa):
+            black_a = a[y][3 * x:3 * x + 3] == b'\0\0\0'
+            black_b = b[y][3 * x:3 * x + 3] == b'\0\0\0'
+            bg += black_a
+            bad += black_a and not black_b
+    return bad, bg
 
 
 def read_quads(path):
@@ -134,9 +292,19 @@ def shadow_share(scene, x):
 
 
 def main():
-    if len(sys.argv) != 4 or sys.argv[1] not in ('rms', 'shadow'):
-        sys.exit('usage: adaptive_rms.py rms REF.tsv X.tsv | shadow SCENE X.tsv')
-    if sys.argv[1] == 'rms':
+    if len(sys.argv) != 4 or sys.argv[1] not in ('rms', 'smooth', 'shadow', 'cracks', 'seams'):
+        sys.exit('usage: adaptive_rms.py rms|smooth REF.tsv X.tsv|X.ply | shadow SCENE X.tsv'
+                 ' | cracks A.png B.png')
+    if sys.argv[1] == 'seams':
+        print('%.3g %d' % seams(sys.argv[2]))
+        return
+    if sys.argv[1] == 'cracks':
+        print('%d %d' % cracks(sys.argv[2], sys.argv[3]))
+        return
+    if sys.argv[1] == 'smooth':
+        f = read_ply(sys.argv[3])
+        print('%.10g %d' % (rms_smooth(read_table(sys.argv[2]), f), len(f)))
+    elif sys.argv[1] == 'rms':
         x = read_table(sys.argv[3])
         print('%.10g %d' % (rms(read_table(sys.argv[2]), x), len(x)))
     else:
