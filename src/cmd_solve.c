@@ -336,6 +336,19 @@ static void summary(const cli_run *r)
                         "factors %.3g s (%.3g pairs/s, %s), solve %.3g s\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
                 in.ff_pairs_per_second, in.accuracy, in.t_solve);
+    if (r->res.level) {
+        int count[16] = {0}, top = 0;
+        for (int e = 0; e < r->res.mesh.nelements; e++) {
+            const int l = r->res.level[e] < 15 ? r->res.level[e] : 15;
+            count[l]++;
+            top = l > top ? l : top;
+        }
+        fprintf(stderr, "radiosity: adaptive subdivision: %d splits; elements by level",
+                r->res.splits);
+        for (int l = 0; l <= top; l++)
+            fprintf(stderr, " %d", count[l]);
+        fputc('\n', stderr);
+    }
     if (in.ff && in.ff->vis_needed)
         fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
                         "%.0f partly; %.3g s\n",
