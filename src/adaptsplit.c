@@ -121,18 +121,37 @@ static int wants_split(rad_adapt_state *s, int j, const double scale[NB])
     return 0;
 }
 
-void rad_adapt_patch_reset(rad_adapt_state *s, int p)
+/* Add A_k B_k of the leaves under node r (its subtree, level by level). */
+static void subtree_power(rad_adapt_state *s, int r, double sum[NB])
 {
     const rad_adapt_nodes *a = s->a;
-    const int r = a->root[p], surf = a->mesh.elements[r].surface;
-    const double Ap = a->mesh.elements[r].area;
-    double mean[NB] = {0, 0, 0};
-    for (int k = a->mesh.surface_first[surf]; k < a->mesh.surface_first[surf + 1]; k++)
-        if (s->leaf[k] && a->patch[k] == p)
-            for (int b = 0; b < NB; b++)
-                mean[b] += a->mesh.elements[k].area * *rad_adapt_b(s, k, b);
+    const int surf = a->mesh.elements[r].surface;
+    int x0, y0, w;
+    if (!a->splits[surf]) { /* a polygon: one node */
+        for (int b = 0; b < NB; b++)
+            sum[b] += a->mesh.elements[r].area * *rad_adapt_b(s, r, b);
+        return;
+    }
+    rad_adapt_box(a, r, &x0, &y0, &w);
+    for (int l = a->level[r]; l <= a->depth; l++) {
+        const int step = 1 << (a->depth - l);
+        for (int y = y0; y < y0 + w; y += step)
+            for (int x = x0; x < x0 + w; x += step) {
+                const int k = rad_adapt_at(a, surf, l, x, y);
+                for (int b = 0; b < NB && s->leaf[k]; b++)
+                    sum[b] += a->mesh.elements[k].area * *rad_adapt_b(s, k, b);
+            }
+    }
+}
+
+void rad_adapt_patch_reset(rad_adapt_state *s, int p)
+{
+    const int r = s->a->root[p];
+    const double Ap = s->a->mesh.elements[r].area;
+    double power[NB] = {0, 0, 0};
+    subtree_power(s, r, power);
     for (int b = 0; b < NB; b++)
-        s->dB[(size_t)p + (size_t)b * s->np] = mean[b] / Ap - s->S[(size_t)p + (size_t)b * s->np];
+        s->dB[(size_t)p + (size_t)b * s->np] = power[b] / Ap - s->S[(size_t)p + (size_t)b * s->np];
 }
 
 /* The new leaves list[0..k): B = E + rho sum_P S_P F_cP (eq. 1 above). */
