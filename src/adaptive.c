@@ -197,6 +197,17 @@ static int converged(const double U[NB], const double emitted[NB], double tol)
     return 1;
 }
 
+/* How far along, 0 to 1: the unshot fraction's logarithm against the
+ * tolerance's (as progressive.c reports it). */
+static double done_fraction(const double U[NB], const double emitted[NB], double tol)
+{
+    double f = 0;
+    for (int b = 0; b < NB; b++)
+        f = fmax(f, emitted[b] > 0 ? U[b] / emitted[b] : 0);
+    const double done = f > 0 && f < 1 ? log(f) / log(tol) : f >= 1 ? 0 : 1;
+    return fmin(fmax(done, 0), 1);
+}
+
 /* Shoot and subdivide until converged. */
 static rad_status iterate(rad_adapt_state *s, const double emitted[NB], int *steps)
 {
@@ -222,7 +233,7 @@ static rad_status iterate(rad_adapt_state *s, const double emitted[NB], int *ste
         if (st == RAD_OK && o->on_shot && o->on_shot(o->shot_user, &row))
             st = rad_fail(s->err, RAD_ERR_INVALID, "interrupted");
         if (st == RAD_OK && o->progress && *steps % 64 == 0 &&
-            o->progress(o->progress_user, "shoot", 0.5, 1))
+            o->progress(o->progress_user, "shoot", done_fraction(U, emitted, o->tolerance), 1))
             st = rad_fail(s->err, RAD_ERR_INVALID, "interrupted");
     }
     return st;
