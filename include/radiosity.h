@@ -344,6 +344,15 @@ typedef struct rad_solve_options {
                                    unknown: gauss then bounds the error it
                                    causes in B, and calls the system singular
                                    when F's error could make it so */
+    /* adaptive subdivision (Cohen et al. 1988, section 4; pipeline only:
+       progressive, the starting elements shoot as fixed patches) */
+    int adaptive;               /* 1: split elements where B varies */
+    double subdivide_threshold; /* split an element whose B differs from an edge
+                                   neighbour's by more than this fraction of the
+                                   largest reflected radiosity B - E in the
+                                   scene, per band (default 0.1) */
+    int max_depth;              /* levels of splitting below a starting element
+                                   (default 3: down to 1/8 of its side) */
 } rad_solve_options;
 
 RAD_API void rad_solve_options_init(rad_solve_options *opt);

@@ -271,4 +271,5 @@ $rows</body>
 </html>
 EOF
 mv "$out/index.html.tmp" "$out/index.html"
+sh "$(dirname "$0")/figures-adaptive.sh" "$radiosity" "$data" "$out"
 echo "figures: $out/index.html ($(( $(date +%s) - start )) s)"

@@ -186,6 +186,9 @@ enum {
     OPT_PATCHES,
     OPT_VERTEX_RULE,
     OPT_MATRIX,
+    OPT_ADAPTIVE,
+    OPT_SUBDIVIDE_THRESHOLD,
+    OPT_MAX_DEPTH,
     OPT_SOLVE_END
 };
 
@@ -201,6 +204,7 @@ typedef struct cli_solve {
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
     rad_vertex_rule vertex_rule;  /* --vertex-rule */
+    int given_adaptive_option;  /* --subdivide-threshold or --max-depth */
 } cli_solve;
 
 #define CLI_SOLVE_LONGOPTS                                                \
@@ -217,6 +221,9 @@ typedef struct cli_solve {
     {"matrix", required_argument, NULL, OPT_MATRIX},                      \
     {"vertex-rule", required_argument, NULL, OPT_VERTEX_RULE},            \
     CLI_METHOD_LONGOPTS,                                                  \
+    {"adaptive", no_argument, NULL, OPT_ADAPTIVE},                        \
+    {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD}, \
+    {"max-depth", required_argument, NULL, OPT_MAX_DEPTH},                \
     CLI_COMMON_LONGOPTS
 
 #define CLI_SOLVE_HELP                                                             \
@@ -240,6 +247,23 @@ typedef struct cli_solve {
     "                          forgets them: O(N) memory) or auto (default:\n" \
     "                          dense when 16 N^2 bytes fit in half the memory\n"\
     "                          allowed, else none)\n"                           \
+    "      --adaptive          progressive: adaptive subdivision (Cohen et al.\n"\
+    "                          1988 sec. 4): the mesh's elements shoot as fixed\n"\
+    "                          patches; after each shot an element whose B\n"   \
+    "                          differs from an edge neighbour's by more than\n"\
+    "                          the threshold is split into four, and the new\n"\
+    "                          elements receive from every patch that has\n"   \
+    "                          shot; form factors on the fly (as --matrix\n"   \
+    "                          none); the element table gets a last column\n"  \
+    "                          `level' (0: a starting element); outputs show\n"\
+    "                          the adaptive mesh, hanging vertices interpolated\n"\
+    "                          along their edge (no cracks)\n"                \
+    "      --subdivide-threshold T  --adaptive: split an element where |B -\n"\
+    "                          B_neighbour| > T times the largest reflected\n" \
+    "                          radiosity (B - E) in the scene, in some band\n" \
+    "                          (default 0.1)\n"                                \
+    "      --max-depth D       --adaptive: at most D splits below a starting\n"\
+    "                          element, 0 to 8 (default 3: sides down to 1/8)\n"\
     "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\
     "                          bound on the relative error of B is below T\n"   \
     "                          (q/(1-q) times the last change, q the contraction\n"\

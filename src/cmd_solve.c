@@ -107,6 +107,24 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_ADAPTIVE:
+        s->solve.adaptive = 1;
+        return 0;
+    case OPT_SUBDIVIDE_THRESHOLD:
+        s->given_adaptive_option = 1;
+        if (cli_parse_double(arg, &s->solve.subdivide_threshold) ||
+            !(s->solve.subdivide_threshold >= 0) || !isfinite(s->solve.subdivide_threshold)) {
+            cli_error("--subdivide-threshold takes a number >= 0, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_MAX_DEPTH:
+        s->given_adaptive_option = 1;
+        if (cli_parse_int(arg, 0, 8, &s->solve.max_depth)) {
+            cli_error("--max-depth takes a whole number from 0 to 8, not '%s'", arg);
+            return 2;
+        }
+        return 0;
     case OPT_MATRIX:
         s->given_matrix = 1;
         for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)
@@ -146,6 +164,16 @@ int cli_solve_check(const cli_solve *s)
         bad = "--matrix applies to --solver progressive (the other solvers need F)";
     else if (s->matrix == RAD_MATRIX_NONE && s->form_factors)
         bad = "--matrix none stores no form factors: --form-factors cannot write them";
+    else if (s->given_adaptive_option && !s->solve.adaptive)
+        bad = "--subdivide-threshold and --max-depth apply to --adaptive";
+    else if (s->solve.adaptive && (v != RAD_SOLVER_PROGRESSIVE || s->given_bounces))
+        bad = "--adaptive applies to --solver progressive";
+    else if (s->solve.adaptive && (s->solve.patches || s->solve.patch_p))
+        bad = "--adaptive: the mesh's elements are the patches that shoot; give --mesh, "
+              "not --patches";
+    else if (s->solve.adaptive && (s->matrix == RAD_MATRIX_DENSE || s->form_factors))
+        bad = "--adaptive computes its form factors on the fly (as --matrix none): no "
+              "--matrix dense, no --form-factors";
     else if (s->solve.error_bounds && (v != RAD_SOLVER_GAUSS || s->given_bounces))
         bad = "--error-bounds applies to --solver gauss (LU) only";
     else if ((s->given_tolerance || s->given_max_iterations) &&
@@ -185,7 +213,7 @@ void cli_run_free(cli_run *run)
 static int w_elements(FILE *out, const void *c)
 {
     const cli_run *r = c;
-    return rad_export_elements(out, &r->res.mesh, r->res.B);
+    return rad_export_elements_level(out, &r->res.mesh, r->res.B, r->res.level);
 }
 
 static int w_matrix(FILE *out, const void *c)
@@ -321,6 +349,19 @@ static void summary(const cli_run *r)
                         "factors %.3g s (%.3g pairs/s, %s), solve %.3g s\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
                 in.ff_pairs_per_second, in.accuracy, in.t_solve);
+    if (r->res.level) {
+        int count[16] = {0}, top = 0;
+        for (int e = 0; e < r->res.mesh.nelements; e++) {
+            const int l = r->res.level[e] < 15 ? r->res.level[e] : 15;
+            count[l]++;
+            top = l > top ? l : top;
+        }
+        fprintf(stderr, "radiosity: adaptive subdivision: %d splits; elements by level",
+                r->res.splits);
+        for (int l = 0; l <= top; l++)
+            fprintf(stderr, " %d", count[l]);
+        fputc('\n', stderr);
+    }
     if (in.ff && r->s->common.ff.method == RAD_FF_HEMICUBE)
         fprintf(stderr, "radiosity: visibility: the hemicubes' z-buffers\n");
     else if (in.ff && in.ff->vis_needed)

@@ -35,8 +35,14 @@
 
 int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
 {
+    return rad_export_elements_level(out, m, B, NULL);
+}
+
+int rad_export_elements_level(FILE *out, const rad_mesh *m, const double *B, const int *level)
+{
     const int n = m->nelements;
-    fprintf(out, "element\tsurface\tgi\tgj\tcx\tcy\tcz\tnx\tny\tnz\tarea\tr\tg\tb\n");
+    fprintf(out, "element\tsurface\tgi\tgj\tcx\tcy\tcz\tnx\tny\tnz\tarea\tr\tg\tb%s\n",
+            level ? "\tlevel" : "");
     for (int e = 0; e < n; e++) {
         const rad_element *el = &m->elements[e];
         fprintf(out, "%d\t%d\t%d\t%d\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", e,
@@ -44,6 +50,8 @@ int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
                 el->normal.x, el->normal.y, el->normal.z, el->area);
         for (int b = 0; b < RAD_BANDS; b++)
             fprintf(out, "\t%.17g", B[(size_t)e + (size_t)b * n]);
+        if (level)
+            fprintf(out, "\t%d", level[e]);
         fputc('\n', out);
     }
     return ferror(out) ? -1 : 0;

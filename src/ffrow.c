@@ -393,6 +393,47 @@ rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_e
     return RAD_OK;
 }
 
+rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to,
+                           rad_error *err)
+{
+    const double *inv_t = r->inv_t, promise = rad_ff_promise(r->opt.accuracy);
+    const rad_ff_poly *P = r->polys;
+    int failed = 0, bad = -1;
+#pragma omp parallel num_threads(k >= PARALLEL_MIN ? r->threads : 1) reduction(|| : failed)
+    {
+        const int w = omp_get_thread_num();
+        tally *t = &r->t[w];
+#pragma omp for schedule(dynamic, 256)
+        for (int q = 0; q < k; q++) {
+            const int j = js[q];
+            double s, e;
+            if (j == i || failed) {
+                to[q] = 0;
+                continue;
+            }
+            if (pair_sum(r, w, j < i ? j : i, j < i ? i : j, &s, &e) != 0) {
+                failed = 1;
+                continue;
+            }
+            /* as rad_ffrow_column writes F_ji on either side of the diagonal */
+            to[q] = j > i ? s * inv_t[j] : s * inv_t[i] * (P[i].area / P[j].area);
+            if (!isfinite(to[q]))
+#pragma omp critical(rad_ffrow_bad)
+                bad = j;
+            t->pairs++;
+            tally_value(t, to[q]);
+            if (r->opt.accuracy != RAD_ACCURACY_CLASSIC)
+                tally_error(t, s, e, inv_t[i], inv_t[j], promise);
+        }
+    }
+    merge(r);
+    if (failed)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
+    if (bad >= 0)
+        return not_finite(err, bad, i);
+    return RAD_OK;
+}
+
 rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
 {
     const int n = r->n, a = n + p, surf = r->grid.surface[p];

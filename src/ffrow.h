@@ -62,6 +62,12 @@ rad_status rad_ffrow_column(rad_ffrow *row, int i, double *to, double *from, rad
  * creation. */
 rad_status rad_ffrow_patch(rad_ffrow *row, int p, double *to, rad_error *err);
 
+/* to[t] = F_ji for the k receivers j = js[t] and the element i: a few
+ * entries of column i (adaptive.c gathers for new elements this way).
+ * The values are rad_ffrow_column's; the statistics count them. */
+rad_status rad_ffrow_pairs(rad_ffrow *row, int i, const int *js, int k, double *to,
+                           rad_error *err);
+
 /* What the rows computed so far found, in the dense fill's terms: pairs
  * counts the pair integrals done (each repeat counted), extremes and error
  * estimates are over the entries computed, rows_above_one counts distinct

@@ -129,6 +129,17 @@ static rad_vec3 bilinear(const rad_vec3 *q, double u, double v)
     return lerp_ends(a, b, v);
 }
 
+rad_vec3 rad_mesh_bilinear(const rad_vec3 q[4], double u, double v)
+{
+    return bilinear(q, u, v);
+}
+
+void rad_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
+                            rad_vec3 *centroid)
+{
+    polygon_area_centroid(p, n, nrm, area, centroid);
+}
+
 rad_status rad_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
                           size_t *nindex)
 {

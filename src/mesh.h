@@ -38,4 +38,15 @@ rad_vec3 rad_frame_apply(const rad_frame *frame, rad_vec3 p);
 rad_status rad_mesh_normalized(const rad_mesh *mesh, rad_mesh *out, rad_frame *frame,
                                rad_error *err);
 
+/* The point (1-v)((1-u) q0 + u q1) + v((1-u) q3 + u q2) of the quad q,
+ * by the formula rad_mesh_build grids a quad with (exact at the corners):
+ * a finer grid of the same quad repeats the coarse grid's vertices bit
+ * for bit (adaptnodes.c). */
+rad_vec3 rad_mesh_bilinear(const rad_vec3 q[4], double u, double v);
+
+/* Area and centroid of the planar polygon p (n vertices, unit normal nrm)
+ * as rad_mesh_build computes an element's. */
+void rad_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
+                            rad_vec3 *centroid);
+
 #endif /* RAD_MESH_H */

@@ -20,6 +20,7 @@
 
 #include "radiosity/pipeline.h"
 #include "mesh.h"
+#include "adaptive.h"
 #include "solvefree.h"
 #include "status.h"
 
@@ -90,6 +91,22 @@ static rad_status check_size(const rad_scene *scene, const rad_pipeline_options 
                                            opt->solve.bounces >= 0 || opt->keep_form_factors))
         return rad_fail(err, RAD_ERR_INVALID, "--matrix none works with --solver progressive "
                         "only, and cannot write the form factors");
+    if (opt->solve.adaptive &&
+        (opt->solve.solver != RAD_SOLVER_PROGRESSIVE || opt->solve.bounces >= 0 ||
+         opt->keep_form_factors || opt->matrix == RAD_MATRIX_DENSE || opt->solve.patches ||
+         opt->solve.patch_p > 0))
+        return rad_fail(err, RAD_ERR_INVALID, "adaptive subdivision works with --solver "
+                        "progressive only, its elements shooting (no --patches), and "
+                        "computes its form factors on the fly (no --matrix dense, no "
+                        "--form-factors)");
+    if (opt->solve.adaptive) { /* every node a run may make (adaptnodes.h) */
+        const double nodes = n * (ldexp(1, 2 * (opt->solve.max_depth + 1)) - 1) / 3;
+        r->matrix = RAD_MATRIX_NONE;
+        r->memory_available = rad_memory_limit();
+        r->memory_bytes = rad_matrix_free_bytes(nodes, nodes, 0);
+        snprintf(what, sizeof what, "%.0f possible adaptive elements", nodes);
+        return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
+    }
     const double dense = rad_solve_bytes_for((int)n, &opt->solve);
     r->memory_available = rad_memory_limit();
     r->matrix = choose_matrix(opt, dense, r->memory_available);
@@ -149,6 +166,37 @@ static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt
     return st;
 }
 
+/* --adaptive: the solve builds its own mesh of leaves over the starting
+ * one (adaptive.h), with its smoothed vertex radiosity; the result takes
+ * that mesh in place of the starting one. */
+static rad_status run_adaptive(rad_result *r, const rad_pipeline_options *opt, double t1,
+                               rad_error *err)
+{
+    rad_solve_options so = opt->solve;
+    rad_adapt_out out;
+    if (!so.progress) {
+        so.progress = opt->ff.progress;
+        so.progress_user = opt->ff.progress_user;
+    }
+    rad_status st = rad_solve_adaptive(&r->mesh, &opt->ff, &so, &out, &r->solve, &r->ff, err);
+    double t3 = rad_seconds();
+    r->t_solve = t3 - t1;
+    r->ff_done = r->solve_done = 1;
+    if (st != RAD_OK)
+        return st;
+    rad_mesh_free(&r->mesh);
+    free(r->B);
+    free(r->Bv);
+    r->mesh = out.mesh;
+    r->B = out.B;
+    r->Bv = out.Bv;
+    r->level = out.level;
+    r->splits = out.splits;
+    for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
+        r->b_negative += r->B[k] < 0;
+    return RAD_OK;
+}
+
 /* A scene with absent objects is solved without them (radiosity-scene(5)):
  * the run works on the copy of its present surfaces, whose numbering the
  * result's mesh then follows. */
@@ -192,6 +240,8 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     r->t_mesh = t1 - t0;
     if (st == RAD_OK)
         st = allocate(r, err);
+    if (st == RAD_OK && opt->solve.adaptive)
+        return run_adaptive(r, opt, t1, err);
     if (st == RAD_OK && r->matrix == RAD_MATRIX_NONE)
         return run_matrix_free(r, opt, t1, err);
     if (st == RAD_OK)
@@ -225,6 +275,7 @@ void rad_result_free(rad_result *r)
     free(r->F);
     free(r->B);
     free(r->Bv);
+    free(r->level);
     rad_mesh_free(&r->mesh);
     memset(r, 0, sizeof *r);
 }

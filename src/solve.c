@@ -65,6 +65,8 @@ void rad_solve_options_init(rad_solve_options *opt)
     opt->bounces = -1;
     opt->sort = 1;
     opt->ff_row_error = NAN;
+    opt->subdivide_threshold = 0.1;
+    opt->max_depth = 3;
 }
 
 double rad_solve_bytes(int n, int with_errbounds)

@@ -40,6 +40,10 @@ typedef struct rad_run_info {
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */
 RAD_API int rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
+/* The same with a last column `level' (the element's level of adaptive
+ * subdivision, 0 for a starting element) when level is not NULL. */
+RAD_API int rad_export_elements_level(FILE *out, const rad_mesh *mesh, const double *B,
+                                      const int *level);
 /* Matrix Market "array real general", column-major, %.17g. */
 RAD_API int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
 /* The form-factor table (`radiosity formfactor`): header "i j F error",

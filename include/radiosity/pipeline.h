@@ -62,6 +62,11 @@ typedef struct rad_result {
                                    NONE the form factors are computed inside
                                    the solve: t_formfactor is 0, ff counts
                                    the pairs integrated over all shots) */
+    int *level;                 /* --adaptive: each element's level of
+                                   subdivision (0: a starting element), else
+                                   NULL; the mesh is then the conforming mesh
+                                   of the leaves (adaptmesh.h) */
+    int splits;                 /* --adaptive: elements split */
 } rad_result;
 
 /* Mesh, form factors, solve and smooth `scene` (which must outlive the
