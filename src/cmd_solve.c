@@ -171,6 +171,9 @@ int cli_solve_check(const cli_solve *s)
     else if (s->solve.adaptive && (s->solve.patches || s->solve.patch_p))
         bad = "--adaptive: the mesh's elements are the patches that shoot; give --mesh, "
               "not --patches";
+    else if (s->solve.adaptive && s->common.ff.method == RAD_FF_HEMICUBE)
+        bad = "--adaptive integrates the new elements' form factors on their outlines: "
+              "it needs the contour integral, not the hemicube";
     else if (s->solve.adaptive && (s->matrix == RAD_MATRIX_DENSE || s->form_factors))
         bad = "--adaptive computes its form factors on the fly (as --matrix none): no "
               "--matrix dense, no --form-factors";

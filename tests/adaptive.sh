@@ -50,6 +50,7 @@ usage "--adaptive with --solver gauss" --solver gauss --adaptive
 usage "--subdivide-threshold -1" $ad --subdivide-threshold -1
 usage "--subdivide-threshold x" $ad --subdivide-threshold x
 usage "--subdivide-threshold nan" $ad --subdivide-threshold nan
+usage "--adaptive with the hemicube" $ad --form-factors-method hemicube
 usage "--max-depth 9 (0 to 8)" $ad --max-depth 9
 usage "--max-depth -1" $ad --max-depth -1
 usage "--max-depth without --adaptive" --solver progressive --max-depth 2
