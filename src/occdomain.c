@@ -11,8 +11,8 @@
  * some penumbra are integrated: a thin penumbra, or a thin strip that
  * still sees past a silhouette, becomes a piece of its own instead of
  * falling between evaluation points.  Pieces inside an umbra are kept
- * apart (known to be fully hidden there).  In reference mode the pieces
- * are also cut along every event plane (split_events).
+ * apart (known to be fully hidden there).  In default and reference
+ * modes the pieces are also cut along every event plane (split_events).
  */
 #include <config.h>
 
@@ -288,15 +288,18 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
     return 0;
 }
 
-/* Reference mode: split the pieces not known to be hidden along every
- * plane where a blocker's edge passes a vertex of the inner element, or a
- * blocker's vertex one of its edges (the first-derivative discontinuities
- * of hidden(x) that one blocker causes; Heckbert, "Discontinuity meshing
- * for radiosity", Eurographics Workshop on Rendering 1992).  Inside the
- * pieces hidden(x) is then smooth but for events that involve two
- * blockers, and the adaptive rule's error estimate can be trusted; a
- * penumbra narrower than the spacing of the points no longer hides
- * between them. */
+/* Default and reference modes: split the pieces not known to be hidden
+ * along every plane where a blocker's edge passes a vertex of the inner
+ * element, or a blocker's vertex one of its edges (the first-derivative
+ * discontinuities of hidden(x) that one blocker causes; Heckbert,
+ * "Discontinuity meshing for radiosity", Eurographics Workshop on
+ * Rendering 1992), and along each blocker's own plane (where the blocker
+ * is seen edge on, and a closed solid's silhouette changes from one set
+ * of edges to another: the shadow's area has a kink there too).  Inside
+ * the pieces hidden(x) is then smooth but for events that involve two
+ * blockers, the high-order rules of occrule.c converge fast, and their
+ * error estimate can be trusted; a penumbra narrower than the spacing of
+ * the points no longer hides between them. */
 static int split_events(occ_space *sp, const pair_ctx *c)
 {
     if (dom_spheres(sp))
@@ -304,7 +307,7 @@ static int split_events(occ_space *sp, const pair_ctx *c)
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
-        if (split_edge_vertex(sp, c, p, np, c->t, c->nt) ||
+        if (split_dom(sp, c, sp->bn[b], p[0]) || split_edge_vertex(sp, c, p, np, c->t, c->nt) ||
             split_edge_vertex(sp, c, c->t, c->nt, p, np))
             return -1;
     }

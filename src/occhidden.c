@@ -20,13 +20,13 @@
  * unoccluded one.
  *
  * The integral runs over the domain of occdomain.c (the outer element's
- * part of the blockers' penumbras, cut along their umbras): on each
- * piece's fan of triangles hidden(x) is integrated by the 3-point degree-2
- * rule (Strang & Fix 1973) on each triangle and on its four midpoint
- * children; |parent - children| estimates the error, and the triangle
- * with the largest estimate is split until the sum of estimates is below
- * the pair's tolerance (global adaptive subdivision as in QUADPACK's QAG,
- * Piessens et al. 1983).  The outer element is the one that looks
+ * part of the blockers' penumbras, cut along their umbras and, but in
+ * classic mode, along every event plane): on each piece's fan of
+ * triangles hidden(x) is integrated by the rules of occrule.c, the
+ * triangle with the largest estimate has its rule's order raised or is
+ * split into its four midpoint children, until the sum of estimates is
+ * below the pair's tolerance (global adaptive subdivision as in QUADPACK's
+ * QAG, Piessens et al. 1983).  The outer element is the one that looks
  * smaller from the nearest blocker (size / distance): from there the
  * blocker's shadow moves least over the inner element, so hidden(x) is
  * smoothest.  If no piece is left, S is kept as it is (bit for bit); if
@@ -49,23 +49,6 @@
 #include "vec.h"
 
 
-/* The 3-point degree-2 rule on triangle p (Strang & Fix 1973): points at
- * barycentric (2/3, 1/6, 1/6) and its permutations, weights area / 3. */
-static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)
-{
-    double sum = 0;
-    for (int k = 0; k < 3; k++) {
-        rad_vec3 x = v3_add(v3_scale(p[k], 2.0 / 3.0),
-                            v3_scale(v3_add(p[(k + 1) % 3], p[(k + 2) % 3]), 1.0 / 6.0));
-        double h;
-        if (occ_hidden_at(sp, c, x, &h))
-            return -1;
-        sum += h;
-    }
-    *q = area / 3.0 * sum;
-    return 0;
-}
-
 /* The four midpoint children of triangle p. */
 static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
 {
@@ -75,18 +58,68 @@ static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
     memcpy(ch, t, sizeof t);
 }
 
-/* Fill in a node's children values and error; its q must be set. */
+/* A node's value and error estimate from its triangle (t->p, t->area).
+ * With the 3-point rule (c->order 0): the rule on the triangle (q) and on
+ * its four midpoint children (qc), the value their sum and the estimate
+ * |q - sum qc|.  With the collapsed rules (occrule.c): the rules of
+ * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
+ *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
+ * and node_raise goes on from there.  Where hidden(x) is analytic on the
+ * triangle the rule's error falls geometrically with the order, so each
+ * difference bounds the error of the better rule; the larger of the last
+ * two stands in for the case where two rules agree by chance (seen: Q2
+ * and Q3 within 4e-9 of each other and both 5e-8 off, on a triangle
+ * whose Q4 was right). */
 static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
+    if (c->order >= 2) {
+        double q1, q2, q3;
+        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1) ||
+            occ_rule_order(sp, c, 2, t->p, t->area, &q2) ||
+            occ_rule_order(sp, c, 3, t->p, t->area, &q3))
+            return -1;
+        t->q = q2;
+        t->qc[0] = q3;
+        t->qc[1] = t->qc[2] = t->qc[3] = 0;
+        t->dlast = fabs(q3 - q2);
+        t->err = fmax(t->dlast, fabs(q2 - q1));
+        t->order = 3;
+        t->stalled = 0;
+        return 0;
+    }
     rad_vec3 ch[4][3];
     children(t->p, ch);
     double sum = 0;
+    if (occ_rule(sp, c, t->p, t->area, &t->q))
+        return -1;
     for (int k = 0; k < 4; k++) {
-        if (rule3(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
+        if (occ_rule(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
             return -1;
         sum += t->qc[k];
     }
     t->err = fabs(t->q - sum);
+    t->order = 0;
+    t->stalled = 1;
+    return 0;
+}
+
+/* Raise a collapsed node's order by one: the new rule's value, and the
+ * estimate (2) of its last two differences.  When the new difference is
+ * not at most half the one before, hidden(x) is not smooth on the
+ * triangle (a kink of an event that no plane cut, where the order does not
+ * help), and the node is marked to be split instead. */
+static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
+{
+    double q;
+    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q))
+        return -1;
+    double d = fabs(q - t->qc[0]);
+    t->stalled = !(d <= 0.5 * t->dlast);
+    t->q = t->qc[0];
+    t->qc[0] = q;
+    t->err = fmax(d, t->dlast);
+    t->dlast = d;
+    t->order++;
     return 0;
 }
 
@@ -102,7 +135,6 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
         tri_node *t = l == 0 ? &sp->node[k] : &sp->node[(*nleaf)++];
         memcpy(t->p, ch[l], sizeof t->p);
         t->area = 0.25 * parent.area;
-        t->q = parent.qc[l];
         if (node_eval(sp, c, t))
             return -1;
     }
@@ -114,13 +146,10 @@ static double leaf_value(const tri_node *t)
     return t->qc[0] + t->qc[1] + t->qc[2] + t->qc[3];
 }
 
-/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value and its
- * estimated error *error; refined while the error exceeds tau (when
- * `adaptive`) and fewer than max_leaves triangles are in use. */
-static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau, int max_leaves,
-                     double *value, double *error)
+/* The first leaves: the fan triangles of the pieces of sp->dom and
+ * sp->umb, evaluated; *nleaf their count.  0, or -1. */
+static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
 {
-    int nleaf = 0;
     const polyset *sets[2] = {&sp->dom, &sp->umb};
     if (occ_grow_node(&sp->node, &sp->capnode, sp->dom.nv + sp->umb.nv))
         return -1;
@@ -129,36 +158,65 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double tau,
             const rad_vec3 *o = sets[set]->v + sets[set]->first[k];
             int no = sets[set]->first[k + 1] - sets[set]->first[k];
             for (int l = 1; l + 1 < no; l++) {
-                tri_node *t = &sp->node[nleaf];
+                tri_node *t = &sp->node[*nleaf];
                 t->p[0] = o[0];
                 t->p[1] = o[l];
                 t->p[2] = o[l + 1];
                 t->area = 0.5 * v3_norm(v3_cross(v3_sub(o[l], o[0]), v3_sub(o[l + 1], o[0])));
                 if (!(t->area > 0))
                     continue;
-                if (rule3(sp, c, t->p, t->area, &t->q) || node_eval(sp, c, t))
+                if (node_eval(sp, c, t))
                     return -1;
-                nleaf++;
+                ++*nleaf;
             }
         }
-    double err = 0;
-    for (int k = 0; k < nleaf; k++)
-        err += sp->node[k].err;
-    while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
-           nleaf + 3 <= max_leaves) {
+    return 0;
+}
+
+/* The sums of the leaves' values and estimates. */
+static void sum_leaves(const occ_space *sp, int nleaf, double *v, double *err)
+{
+    *v = *err = 0;
+    for (int k = 0; k < nleaf; k++) {
+        *err += sp->node[k].err;
+        *v += leaf_value(&sp->node[k]);
+    }
+}
+
+/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value and its
+ * estimated error *error.  When `adaptive`, the leaf with the largest
+ * estimate is split while the sum of the estimates exceeds
+ *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
+ * and fewer than max_leaves triangles are in use: `whole` is the
+ * unoccluded integral S / (2 pi), so whole - value is the visible part,
+ * the occluded A_o F_ot itself, and the target is relative to it down to
+ * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target
+ * relative to the unoccluded value let a nearly hidden pair's error reach
+ * 1e4 times its value). */
+static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel, double whole,
+                     int max_leaves, double max_evals, double *value, double *error)
+{
+    double v = 0, err = 0;
+    int nleaf = 0;
+    if (first_leaves(sp, c, &nleaf))
+        return -1;
+    sum_leaves(sp, nleaf, &v, &err);
+    /* the occluded value: the integral itself (c->direct), or whole less it */
+    while (adaptive && sp->any_hidden && sp->any_visible &&
+           err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole) &&
+           nleaf + 3 <= max_leaves && sp->evals < max_evals) {
         int worst = 0;
         for (int k = 1; k < nleaf; k++)
             if (sp->node[k].err > sp->node[worst].err)
                 worst = k;
-        if (node_split(sp, c, worst, &nleaf))
+        tri_node *t = &sp->node[worst];
+        if (t->order >= 2 && t->order < c->order && !t->stalled) {
+            if (node_raise(sp, c, t))
+                return -1;
+        } else if (node_split(sp, c, worst, &nleaf))
             return -1;
-        err = 0;
-        for (int k = 0; k < nleaf; k++)
-            err += sp->node[k].err;
+        sum_leaves(sp, nleaf, &v, &err);
     }
-    double v = 0;
-    for (int k = 0; k < nleaf; k++)
-        v += leaf_value(&sp->node[k]);
     *value = v;
     *error = err;
     return 0;
@@ -231,8 +289,10 @@ static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const
 
 /* What integrating in one orientation found. */
 typedef struct orient_result {
-    double value, error;        /* integral of hidden(x) over the outer element */
+    double value, error;        /* integral of hidden(x) over the outer element,
+                                   or of visible(x) when `direct` */
     int hidden, visible;        /* some point saw something hidden / visible */
+    int direct;
 } orient_result;
 
 /* The integral of the hidden part with element i (outer_i) or j as the
@@ -258,7 +318,10 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.nb = kept;
     c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
-    c.events = o->accuracy == RAD_ACCURACY_REFERENCE;
+    c.events = o->accuracy != RAD_ACCURACY_CLASSIC;
+    c.order = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ORDER_REFERENCE
+              : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
+                                                    : 0;
     sp->any_hidden = sp->any_visible = 0;
     if (occ_support_domain(sp, &c, co, no))
         return -1;
@@ -269,8 +332,11 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
         dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
     for (int k = 0; k < sp->umb.np; k++)
         dom_area += poly_area(sp->umb.v + sp->umb.first[k], sp->umb.first[k + 1] - sp->umb.first[k]);
+    c.direct = 0;
     if (dom_area < (1 - 1e-9) * poly_area(co, no))
         sp->any_visible = 1; /* points outside the domain see all of the inner one */
+    else if (sp->dom.np > 0 && o->accuracy != RAD_ACCURACY_CLASSIC)
+        c.direct = res->direct = 1; /* the domain is all of it: integrate visible(x) */
     else if (sp->dom.np == 0) {
         res->hidden = 1; /* every point is in some blocker's umbra */
         res->value = s / (2 * RAD_PI);
@@ -279,7 +345,10 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     const int adaptive = o->accuracy != RAD_ACCURACY_CLASSIC;
     const int leaves =
         o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE : OCC_LEAVES_DEFAULT;
-    if (integrate(sp, &c, adaptive, rel * s / (2 * RAD_PI), leaves, &res->value, &res->error))
+    const double evals =
+        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_EVALS_REFERENCE : OCC_EVALS_DEFAULT;
+    if (integrate(sp, &c, adaptive, rel, s / (2 * RAD_PI), leaves, evals, &res->value,
+                  &res->error))
         return -1;
     res->hidden = sp->any_hidden;
     res->visible = sp->any_visible;
@@ -292,11 +361,12 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
  * hides all, else S less 2 pi times the integral of the hidden part. */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
                      const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
-                     double *errest)
+                     double *errest, int *direct)
 {
     const rad_vec3 *ci = sp->elem.v, *cj = sp->elem.v + sp->elem.first[1];
     int ni = sp->elem.first[1], nj = sp->elem.nv - ni;
     *snew = s;
+    *direct = 0;
     for (int b = 0; b < nb; b++) {
         const rad_vec3 *v = sp->blk.v + sp->blk.first[b];
         int n = sp->blk.first[b + 1] - sp->blk.first[b];
@@ -308,7 +378,7 @@ int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
     }
     /* outer: the element that looks smaller from the nearest blocker */
     int outer_i = apparent_size(o, sp, nb, pi) <= apparent_size(o, sp, nb, pj);
-    const double rel =
+    double rel =
         o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_TOL_REFERENCE : OCC_TOL_DEFAULT;
     orient_result r;
     sp->evals = 0;
@@ -333,8 +403,9 @@ int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
         return 0;
     }
     st->pairs_partial++;
-    double v = s - 2 * RAD_PI * r.value;
-    *snew = v < 0 ? 0 : v > s ? s : v;
+    double v = r.direct ? 2 * RAD_PI * r.value : s - 2 * RAD_PI * r.value;
+    *snew = v < 0 ? 0 : v > s && !r.direct ? s : v;
+    *direct = r.direct;
     if (errest)
         *errest += 2 * RAD_PI * r.error;
     st->max_errest = fmax(st->max_errest, r.error / fmin(pi->area, pj->area));

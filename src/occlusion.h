@@ -58,6 +58,8 @@ typedef struct rad_occ_work {
     const rad_occ *occ;
     rad_occ_stats stats;        /* this thread's counts */
     void *space;                /* growable buffers (occspace.h) */
+    rad_ff_scratch kernel;      /* for the unoccluded sum again (occlusion.c,
+                                   sharper_sum) */
 } rad_occ_work;
 
 void rad_occ_work_init(rad_occ_work *w, const rad_occ *occ);

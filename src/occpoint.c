@@ -172,7 +172,7 @@ static int hidden_last(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, doub
 
 /* hidden(x): the form factor from x to the part of the inner element that
  * the blockers hide.  Sets sp->any_hidden / any_visible. */
-int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
+static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
 {
     double h = 0;
     occ_ps_clear(&sp->cur);
@@ -215,5 +215,20 @@ int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     if (sp->cur.np > 0)
         sp->any_visible = 1;
     *out = h;
+    return 0;
+}
+
+/* hidden(x), or with c->direct the visible part's factor
+ *     visible(x) = F(x -> A_t) - hidden(x)
+ * (occhidden.c integrates it for pairs whose domain is the whole outer
+ * element).  Both terms are exact to round-off, so visible(x) is too, to
+ * a few ulps of F(x -> A_t): no error of the unoccluded contour sum S enters
+ * a nearly hidden pair's value. */
+int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
+{
+    if (hidden_at(sp, c, x, out))
+        return -1;
+    if (c->direct)
+        *out = fabs(ff_point_polygon(x, c->nx, c->t, c->nt)) - *out;
     return 0;
 }

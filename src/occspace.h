@@ -31,12 +31,25 @@
 #define OCC_ROUND 16
 #define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
                                are dropped (round-off slivers of the cuts) */
-/* Per-pair error targets (relative to the unoccluded A_i F_ij) and the
- * largest number of triangles the adaptive rule may use. */
-#define OCC_TOL_DEFAULT 3e-4
-#define OCC_TOL_REFERENCE 1e-6
+/* Per-pair error targets, relative to the occluded A_i F_ij down to
+ * OCC_FLOOR of the unoccluded one (occhidden.c, integrate), half of each
+ * mode's promise (the kernel's error of the unoccluded S adds to it); the
+ * order of the rule on a triangle (occrule.c); the largest number of
+ * triangles the adaptive rule may use. */
+#define OCC_TOL_DEFAULT 5e-7
+#define OCC_TOL_REFERENCE 5e-10
+#define OCC_FLOOR 1e-4
+#define OCC_KERNEL_SHARE 0.25   /* of the promise: see occlusion.c, sharper_sum */
+#define OCC_ORDER_DEFAULT 6
+#define OCC_ORDER_REFERENCE 10
 #define OCC_LEAVES_DEFAULT 256
-#define OCC_LEAVES_REFERENCE 16384
+#define OCC_LEAVES_REFERENCE 2048
+/* ... and the most evaluations of hidden(x) it may spend on a pair: a
+ * pair whose integrand has kinks that no plane cut (events of two
+ * blockers) converges only as h^2 there, and stops here with its estimate
+ * (which the fill then reports as an unmet promise) */
+#define OCC_EVALS_DEFAULT 1e4
+#define OCC_EVALS_REFERENCE 1e5
 
 struct rad_occ {
     rad_occ_mode mode;
@@ -68,7 +81,10 @@ typedef struct tri_node {
     double area;
     double q;                   /* the rule on the triangle */
     double qc[4];               /* the rule on each child */
-    double err;                 /* |q - sum qc| */
+    double err;                 /* its estimated error */
+    double dlast;               /* the last difference of two orders */
+    int order;                  /* the collapsed rule's order (occrule.c), or 0 */
+    int stalled;                /* raising the order did not help: split */
 } tri_node;
 
 /* A list of polygons sharing one vertex array. */
@@ -131,6 +147,10 @@ typedef struct pair_ctx {
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
     double snap, sliver;        /* distance and area tolerances */
     int events;                 /* split the domain along every event plane */
+    int direct;                 /* evaluate visible(x), not hidden(x) (occpoint.c) */
+    int order;                  /* the rule on a triangle (occrule.c): 0 the
+                                   3-point rule, k >= 2 the k x k collapsed
+                                   Gauss product */
 } pair_ctx;
 
 
@@ -162,10 +182,15 @@ int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int 
 /* occpoint.c: hidden(x) */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
+/* occrule.c: the integral of hidden(x) over one triangle */
+int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
+int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
+                   double *q);
+
 /* occhidden.c: how much of a pair is hidden */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
                      const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
-                     double *errest);
+                     double *errest, int *direct);
 
 /* Make room for `need` elements in *p (capacity *cap); 0, or -1 when
  * memory ran out (then *p is untouched).  One per element type, so that
