@@ -8,10 +8,12 @@
 . "${top_srcdir:-.}/tests/lib.sh"
 cube="$top_srcdir/data/goral1984-cube.scene"
 
-# A shell starts background jobs with SIGINT ignored, and the program keeps
-# an ignored signal ignored (as nohup wants); restore its default first.
+# A shell starts background jobs with SIGINT ignored, a run under nohup has
+# SIGHUP ignored, and the program keeps an ignored signal ignored (as nohup
+# wants); restore the defaults first.
 run_bg() { exec python3 -c 'import os, signal, sys
-signal.signal(signal.SIGINT, signal.SIG_DFL)
+for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+    signal.signal(s, signal.SIG_DFL)
 os.execv(sys.argv[1], sys.argv[1:])' "$@"; }
 
 # wait_tmp DIR: until a temporary output appears (at most 120 s)
