@@ -147,6 +147,7 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
         }
         return 0;
     case OPT_QUADRATURE:
+        c->given_accuracy = 1;
         if (cli_parse_int(arg, 1, RAD_GAUSS_MAX, &c->ff.quadrature)) {
             cli_error("--quadrature takes a whole number from 1 to %d, not '%s'",
                       RAD_GAUSS_MAX, arg);
@@ -154,6 +155,7 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
         }
         return 0;
     case OPT_ACCURACY:
+        c->given_accuracy = 1;
         if (strcmp(arg, "classic") == 0)
             c->ff.accuracy = RAD_ACCURACY_CLASSIC;
         else if (strcmp(arg, "default") == 0)
@@ -205,6 +207,11 @@ int cli_common_check(const cli_common *c)
     if (c->given_resolution && c->ff.method != RAD_FF_HEMICUBE) {
         cli_error("--resolution is the hemicube's: give it with --form-factors-method "
                   "hemicube");
+        return 2;
+    }
+    if (c->given_accuracy && c->ff.method == RAD_FF_HEMICUBE) {
+        cli_error("--accuracy and --quadrature are the contour integral's: the hemicube's "
+                  "accuracy is its --resolution");
         return 2;
     }
     return 0;

@@ -24,6 +24,7 @@ typedef struct cli_common {
     int quiet;
     int strict;                 /* --strict: an unmet accuracy promise is an error */
     int given_resolution;       /* --resolution was given */
+    int given_accuracy;         /* --accuracy or --quadrature was given */
 } cli_common;
 
 /* Long-option ids for the common options (above any short option). */
@@ -71,15 +72,18 @@ enum {
 #define CLI_METHOD_HELP                                                             \
     "      --form-factors-method M  contour (the contour integral between\n"        \
     "                          elements, the default) or hemicube (Cohen &\n"       \
-    "                          Greenberg 1985: a z-buffer on each element's centre;\n"\
-    "                          faster for large scenes, less accurate: its pixels\n"\
-    "                          alias and its centre stands for the element)\n"    \
+    "                          Greenberg 1985: a z-buffer on each element's\n"     \
+    "                          centre; faster where surfaces hide each other,\n"   \
+    "                          less accurate: its pixels alias and its centre\n"   \
+    "                          stands for the element; --accuracy and\n"          \
+    "                          --quadrature are the contour's)\n"                 \
     "      --resolution R      hemicube: R x R pixels on the top face, R x R/2 on\n"\
     "                          each side (even, 2-4096; default 64)\n"
 
 void cli_common_init(cli_common *c);
-/* After the options: --resolution without --form-factors-method hemicube
- * is a usage error.  0, or 2 (printed). */
+/* After the options: --resolution without --form-factors-method hemicube,
+ * and --accuracy or --quadrature with it (the contour's), are usage
+ * errors.  0, or 2 (printed). */
 int cli_common_check(const cli_common *c);
 /* Handle a common option: 0 handled, 1 not a common option, 2 usage error
  * (message printed). */

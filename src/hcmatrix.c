@@ -43,13 +43,17 @@ static rad_status fill_rows(const rad_hemicube *hc, int i0, int i1, int threads,
 {
     const int n = rad_hemicube_elements(hc);
     rad_status st = RAD_OK;
+    int failed = 0; /* read by every thread, so atomically */
 #pragma omp parallel num_threads(threads)
     {
         double *row = rows + (size_t)omp_get_thread_num() * (size_t)n;
         rad_error my;
 #pragma omp for schedule(dynamic, 1)
         for (int i = i0; i < i1; i++) {
-            if (st != RAD_OK)
+            int stop;
+#pragma omp atomic read
+            stop = failed;
+            if (stop)
                 continue;
             rad_status s = rad_hemicube_row(hc, i, row, &my);
             if (s != RAD_OK) {
@@ -58,6 +62,8 @@ static rad_status fill_rows(const rad_hemicube *hc, int i0, int i1, int threads,
                     st = s;
                     if (err)
                         *err = my;
+#pragma omp atomic write
+                    failed = 1;
                 }
                 continue;
             }

@@ -32,6 +32,9 @@ for cmd in formfactor solve progress; do
     [ $? -eq 2 ] && grep -q -- "--resolution" "$work/err" || { diag "$cmd $bad"; fails=1; }
   done
   ok $fails "$cmd --resolution 15, 0, 4098, -2, abc, 16x: usage errors"
+  "$RADIOSITY" $cmd $hc --accuracy reference "$cube" > "$work/out" 2> "$work/err"
+  [ $? -eq 2 ] && grep -q -- "--resolution" "$work/err"
+  ok $? "$cmd: --accuracy with the hemicube is a usage error pointing to --resolution"
   "$RADIOSITY" $cmd --form-factors-method hemi "$cube" > "$work/out" 2> "$work/err"
   [ $? -eq 2 ] && grep -q "contour or hemicube" "$work/err"
   ok $? "$cmd --form-factors-method hemi: usage error listing the methods"
