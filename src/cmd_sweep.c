@@ -115,7 +115,11 @@ static void help(void)
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
-static int parse_list(const char *arg, const char *(*name)(int), int nnames, int *out, int max)
+/* A comma-separated list into out[max]: names of name(0..nnames-1), or,
+ * with name NULL, whole numbers from lo to hi (even ones only if even);
+ * their number, or -1. */
+static int parse_list(const char *arg, const char *(*name)(int), int nnames, long lo, long hi,
+                      int even, int *out, int max)
 {
     char buf[256];
     int n = 0;
@@ -128,27 +132,10 @@ static int parse_list(const char *arg, const char *(*name)(int), int nnames, int
             for (int k = 0; k < nnames; k++)
                 if (strcmp(t, name(k)) == 0)
                     v = k;
-        } else if (cli_parse_int(t, 1, 1000, &v)) {
+        } else if (cli_parse_int(t, lo, hi, &v) || (even && v % 2 != 0)) {
             v = -1;
         }
         if (v < 0 || n >= max)
-            return -1;
-        out[n++] = v;
-    }
-    return n > 0 ? n : -1;
-}
-
-/* "16,32,..." into out[MAX_LIST]: even resolutions; their number or -1. */
-static int parse_resolutions(const char *arg, int *out)
-{
-    char buf[256];
-    int n = 0;
-    if (strlen(arg) >= sizeof buf)
-        return -1;
-    strcpy(buf, arg);
-    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        int v;
-        if (n >= MAX_LIST || cli_parse_int(t, 2, RAD_HEMICUBE_MAX, &v) || v % 2 != 0)
             return -1;
         out[n++] = v;
     }
@@ -185,19 +172,19 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             help();
             return 0;
         case OPT_MESHES:
-            if ((a->nmeshes = parse_list(optarg, NULL, 0, a->meshes, MAX_LIST)) < 0) {
+            if ((a->nmeshes = parse_list(optarg, NULL, 0, 1, 1000, 0, a->meshes, MAX_LIST)) < 0) {
                 cli_error("--meshes takes whole numbers from 1 to 1000 separated by commas");
                 return 2;
             }
             break;
         case OPT_ACCURACIES:
-            if ((a->nacc = parse_list(optarg, rad_accuracy_name, 3, a->acc, 3)) < 0) {
+            if ((a->nacc = parse_list(optarg, rad_accuracy_name, 3, 0, 0, 0, a->acc, 3)) < 0) {
                 cli_error("--accuracies takes classic, default, reference separated by commas");
                 return 2;
             }
             break;
         case OPT_SOLVERS:
-            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 6, a->solvers, 6)) < 0) {
+            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 6, 0, 0, 0, a->solvers, 6)) < 0) {
                 cli_error("--solvers takes gauss, cholesky, jacobi, gauss-seidel, cg, progressive "
                           "separated by commas");
                 return 2;
@@ -213,7 +200,8 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             a->plot = optarg;
             break;
         case OPT_RESOLUTIONS:
-            if ((a->nres = parse_resolutions(optarg, a->res)) < 0) {
+            if ((a->nres = parse_list(optarg, NULL, 0, 2, RAD_HEMICUBE_MAX, 1, a->res,
+                                      MAX_LIST)) < 0) {
                 cli_error("--resolutions takes even whole numbers from 2 to %d separated by "
                           "commas, not '%s'", RAD_HEMICUBE_MAX, optarg);
                 return 2;
