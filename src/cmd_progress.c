@@ -290,8 +290,9 @@ static int snapshot_path(char *path, const char *prefix, int method, int step,
     return len < 0 || len >= 4096;
 }
 
-/* Every snapshot goes beside the first: the directory checked, for each
- * method, before the work (as every other output is), so a missing one is
+/* Every snapshot goes beside the first: the directory, and the first
+ * step's picture, error picture and table, checked for each method
+ * before the work (as every other output is), so a missing one is
  * not found after the dense fill.  0, or 1 (printed). */
 static int snapshots_check(const progress_args *a)
 {
@@ -305,11 +306,18 @@ static int snapshots_check(const progress_args *a)
                       prefix);
             return 1;
         }
-        snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
-                      ".png");
-        const cli_output o = {path, write_png, NULL};
-        if (cli_outputs_check(&o, 1))
-            return 1;
+        /* the picture, and its error picture and table when asked for */
+        const char *const suffix[3] = {".png", a->error_images ? "-error.png" : NULL,
+                                       a->snapshot_elements ? ".tsv" : NULL};
+        for (int k = 0; k < 3; k++) {
+            if (!suffix[k])
+                continue;
+            snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
+                          suffix[k]);
+            const cli_output o = {path, write_png, NULL};
+            if (cli_outputs_check(&o, 1))
+                return 1;
+        }
     }
     return 0;
 }
