@@ -214,8 +214,10 @@ static void run_info(const cli_run *r, rad_run_info *in)
     const rad_result *res = &r->res;
     memset(in, 0, sizeof *in);
     in->scene = r->scene.filename;
-    in->accuracy = rad_accuracy_name(r->s->common.ff.accuracy);
-    in->quadrature = r->s->common.ff.quadrature;
+    /* the hemicube reads neither: the report says null, not the defaults */
+    const int contour = r->s->common.ff.method == RAD_FF_CONTOUR;
+    in->accuracy = contour ? rad_accuracy_name(r->s->common.ff.accuracy) : NULL;
+    in->quadrature = contour ? r->s->common.ff.quadrature : 0;
     in->method = rad_ff_method_name(r->s->common.ff.method);
     in->resolution = r->s->common.ff.resolution;
     in->nelements = res->mesh.nelements;

@@ -22,6 +22,16 @@ furnace="$top_srcdir/data/furnace.scene"
 hc="--form-factors-method hemicube"
 
 # ---- usage errors -------------------------------------------------------------
+"$RADIOSITY" solve -q $hc --resolution 8 --mesh 1x1 --report "$work/rep.json" \
+  -o "$work/rep.ply" "$cube"
+grep -q '"accuracy": null,' "$work/rep.json" && grep -q '"quadrature": null,' "$work/rep.json" &&
+  grep -q '"form_factors_method": "hemicube",' "$work/rep.json" &&
+  grep -q '"hemicube_resolution": 8,' "$work/rep.json"
+ok $? "solve --report with the hemicube: accuracy and quadrature null (it reads neither), the method and R"
+"$RADIOSITY" solve -q --mesh 1x1 --report "$work/rep.json" -o "$work/rep.ply" "$cube"
+grep -q '"accuracy": "default",' "$work/rep.json" && grep -q '"quadrature": 3,' "$work/rep.json"
+ok $? "solve --report with the contour: accuracy and quadrature as used"
+
 for cmd in formfactor solve progress; do
   "$RADIOSITY" $cmd --resolution 32 "$cube" > "$work/out" 2> "$work/err"
   [ $? -eq 2 ] && grep -q "hemicube" "$work/err"
