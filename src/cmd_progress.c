@@ -68,6 +68,7 @@ typedef struct progress_args {
     int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
     int steps_given;
     rad_exposure_from exposure_from; /* of the snapshots */
+    int exposure_from_given;
     int error_images;           /* --error-images */
     int snapshot_elements;      /* --snapshot-elements */
     int plot_linear;            /* --plot-axis linear */
@@ -210,6 +211,7 @@ static int parse_option(progress_args *a, int opt, const char *arg)
         a->prefix = arg;
         return 0;
     case OPT_EXPOSURE_FROM:
+        a->exposure_from_given = 1;
         return cli_parse_exposure_from(arg, &a->exposure_from);
     case OPT_ERROR_IMAGES:
         a->error_images = 1;
@@ -714,11 +716,13 @@ int cmd_progress(int argc, char **argv)
     }
     if (cli_common_check(&a.common))
         return cli_usage_hint("progress");
-    if ((a.prefix || a.error_images || a.snapshot_elements) && a.race.snapshot_every == 0 &&
-        a.race.nsnapshot_at == 0) {
+    if ((a.prefix || a.error_images || a.snapshot_elements || a.exposure_from_given) &&
+        a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
         cli_error("%s needs --snapshots K or --snapshots-at LIST",
-                  a.prefix ? "--snapshot-prefix" : a.error_images ? "--error-images"
-                                                                  : "--snapshot-elements");
+                  a.prefix               ? "--snapshot-prefix"
+                  : a.error_images       ? "--error-images"
+                  : a.snapshot_elements  ? "--snapshot-elements"
+                                         : "--exposure-from");
         return cli_usage_hint("progress");
     }
     if ((a.plot_axis_given || a.plot_normalised) && !a.plot) {

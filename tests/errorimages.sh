@@ -88,7 +88,8 @@ done
 
 # ---- usage errors
 cube="$top_srcdir/data/goral1984-cube.scene"
-for bad in "--error-images" "--snapshot-elements" "--plot-axis linear" "--plot-normalised" \
+for bad in "--error-images" "--snapshot-elements" "--exposure-from all" "--plot-axis linear" \
+  "--plot-normalised" \
   "--plot-axis cubic --plot $work/x.png"; do
   # shellcheck disable=SC2086
   "$RADIOSITY" progress -q --mesh 2x2 $bad -o "$work/bad.tsv" "$cube" > /dev/null 2>&1; rc=$?
