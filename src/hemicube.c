@@ -42,9 +42,13 @@
  * the faces kept are drawn in the model's order (ties keep the first).
  * Each of the five pictures then gets only the faces not wholly outside
  * its 90-degree frustum (frustum_cut), and only the vertices they use
- * (the renderer scans all of a model's vertices on every call); its near
- * plane, 1e-6 of the picture's extent (render.c), is then that of the
- * faces kept.  At 2,400 elements and R = 64 the whole matrix took 15 s
+ * (the renderer scans all of a model's vertices on every call).  The
+ * near plane is hc->tol, 1e-9 of the mesh's size, the distance below
+ * which an element counts as on i's plane: the renderer's own, 1e-6 of
+ * the picture's extent, clipped a receiver closer than that to the
+ * centre (two squares 1e-7 apart had F = 0.003, not 1).  The projection
+ * is in doubles, so coordinates of up to R / tol pixels keep their
+ * fraction of a pixel.  At 2,400 elements and R = 64 the whole matrix took 15 s
  * before these cuts and takes 3.6 s with them, on two busy cores.
  */
 #include <config.h>
@@ -318,6 +322,8 @@ static rad_status one_face(const rad_hemicube *hc, const view_set *row, view_set
     o.camera.at = v3_add(hc->centre[i], dir);
     o.camera.up = up;
     o.camera.fov = 90;
+    o.znear = hc->tol; /* the renderer's own, 1e-6 of the scene, clipped
+                          receivers closer than that: F fell to 0 */
     rad_status st = rad_render(&vs->m, &o, &img, err);
     if (st != RAD_OK)
         return st;

@@ -321,6 +321,35 @@ static void test_blocker(void)
     }
 }
 
+/* ---- 5. a receiver closer than the renderer's own near plane --------------- */
+
+/* Two unit squares facing each other a gap g apart (g of the scene's size;
+ * the renderer's default near plane is 1e-6 of it, which once clipped such
+ * a receiver away: F fell from 1 to 0.29 at g = 1e-6 and 0.003 at 1e-7).
+ * From the shooter's centre the receiver covers the whole top face and
+ * each side face up to the height 2g, so its outline there lies along the
+ * four sides' bottom rows: L = 8, K = 8 (as the blocker's).  Lambert's
+ * value at the centre is 1 - O(g). */
+static void test_close(void)
+{
+    const double gaps[] = {1e-5, 1e-7, 1e-8};
+    for (size_t k = 0; k < sizeof gaps / sizeof *gaps; k++) {
+        char text[512];
+        double f, lim, rowmax;
+        const double g = gaps[k];
+        snprintf(text, sizeof text,
+                 "material w reflect 0.5\n"
+                 "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
+                 "quad w 0 0 %.17g  0 1 %.17g  1 1 %.17g  1 0 %.17g\n", g, g, g, g);
+        const int R = 64;
+        const int rc = surface_factor(text, R, &f, &lim, &rowmax);
+        const double b = alias_bound(R, 8, 8);
+        tap_ok(rc == 0 && fabs(f - lim) <= b,
+               "facing unit squares %g apart, R = %d: F = %.12f, Lambert %.12f, within %.3g", g,
+               R, f, lim, b);
+    }
+}
+
 int main(void)
 {
     test_table();
@@ -344,5 +373,6 @@ int main(void)
                 "quad w 0 0 0  0 1 0  0 1 1  0 0 1\n",
                 F_ADJACENT, 26, 16);
     test_blocker();
+    test_close();
     return tap_done();
 }
