@@ -58,6 +58,7 @@
 #include <string.h>
 
 #include "hemicube.h"
+#include "radiosity/pipeline.h"
 #include "radiosity/render.h"
 #include "status.h"
 #include "vec.h"
@@ -83,6 +84,15 @@ typedef struct view_set {
 int rad_hemicube_elements(const rad_hemicube *hc)
 {
     return hc->n;
+}
+
+double rad_hemicube_row_bytes(const rad_hemicube *hc)
+{
+    const double R = hc->tab.res, n = hc->n;
+    /* the picture: rgb (24), depth (8), face (4), edge (1) per pixel;
+     * the row: acc (16 n), two view sets (face lists, items, vertices) */
+    return 40.0 * R * R + 16.0 * n + 2.0 * (24.0 * n + 4.0 * hc->model.face_first[2 * hc->n]) +
+           48.0 * hc->model.nvertices;
 }
 
 void rad_hemicube_free(rad_hemicube *hc)
@@ -289,6 +299,16 @@ rad_status rad_hemicube_create(rad_hemicube **out, const rad_mesh *unit, int res
         rad_hemicube_free(hc);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the hemicube of %d elements",
                         unit->nelements);
+    }
+    /* one row's picture: refused clearly here, not killed halfway */
+    const double need = rad_hemicube_row_bytes(hc), limit = rad_memory_limit();
+    if (limit > 0 && need > limit) {
+        rad_hemicube_free(hc);
+        return rad_fail(err, RAD_ERR_TOOBIG,
+                        "a hemicube picture of %d x %d pixels needs %.0f MiB, but only %.0f "
+                        "MiB are available (the least of free memory, the process limits and "
+                        "the cgroup's); use a lower --resolution",
+                        res, res, need / 1048576.0, limit / 1048576.0);
     }
     make_frames(hc, unit);
     rad_vec3 lo = unit->nvertices ? unit->vertices[0] : v3(0, 0, 0), hi = lo;

@@ -21,6 +21,17 @@ cube="$top_srcdir/data/grey-cube.scene"
 furnace="$top_srcdir/data/furnace.scene"
 hc="--form-factors-method hemicube"
 
+# ---- memory: a picture of R = 4096 takes 640 MiB (37 bytes a pixel)
+if [ -n "${RADIOSITY_SANITIZE-}" ]; then
+  skip "ulimit -v under AddressSanitizer (checked by make check)"
+else
+  (ulimit -v 400000; "$RADIOSITY" formfactor -q $hc --resolution 4096 --mesh 1x1 \
+    -o "$work/big.tsv" "$cube" 2> "$work/err"); rc=$?
+  [ $rc -eq 1 ] && grep -q 'needs 640 MiB, but only [0-9]* MiB are available' "$work/err" &&
+    grep -q -- "--resolution" "$work/err" && [ ! -e "$work/big.tsv" ]
+  ok $? "ulimit -v 400 MB and R = 4096: refused from the limit, naming --resolution (exit $rc)"
+fi
+
 # ---- usage errors -------------------------------------------------------------
 "$RADIOSITY" solve -q $hc --resolution 8 --mesh 1x1 --report "$work/rep.json" \
   -o "$work/rep.ply" "$cube"
