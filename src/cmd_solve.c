@@ -315,8 +315,11 @@ static void summary(const cli_run *r)
     const rad_solve_report *s = in.solve;
     if (r->res.matrix == RAD_MATRIX_NONE)
         fprintf(stderr, "radiosity: %d elements, matrix none (form factors per shot, %.1f MiB "
-                        "estimated); solve %.3g s with %.0f pair integrals (%.3g pairs/s, %s)\n",
+                        "estimated); solve %.3g s with %.0f %s (%.3g pairs/s, %s)\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_solve, in.ff ? in.ff->pairs : 0,
+                /* the hemicube integrates nothing: it reads item buffers */
+                r->s->common.ff.method == RAD_FF_HEMICUBE ? "pairs from hemicube rows"
+                                                          : "pair integrals",
                 in.ff_pairs_per_second, in.accuracy);
     else
         fprintf(stderr, "radiosity: %d elements, matrix dense, %.1f MiB of matrices; form "

@@ -32,6 +32,11 @@ else
   ok $? "ulimit -v 400 MB and R = 4096: refused from the limit, naming --resolution (exit $rc)"
 fi
 
+"$RADIOSITY" solve $hc --resolution 8 --solver progressive --matrix none --mesh 1x1 \
+  -o "$work/mf.ply" "$cube" 2> "$work/err"
+grep -q "pairs from hemicube rows" "$work/err" && ! grep -q "pair integrals" "$work/err"
+ok $? "the matrix-free summary does not call the hemicube's pairs integrals"
+
 # ---- usage errors -------------------------------------------------------------
 "$RADIOSITY" solve -q $hc --resolution 8 --mesh 1x1 --report "$work/rep.json" \
   -o "$work/rep.ply" "$cube"
