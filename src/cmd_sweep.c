@@ -42,6 +42,7 @@ enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT,
        OPT_RESOLUTIONS };
 
 #define MAX_LIST 32
+#define MAX_SERIES 24 /* curves in --plot: (accuracies + resolutions) x solvers */
 
 
 typedef struct sweep_args {
@@ -94,7 +95,7 @@ static void help(void)
            "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
            "  -o, --output FILE       the table (TSV; default standard output)\n"
            "      --plot FILE.png     error against time, log-log, a curve per mode\n"
-           "                          and solver\n"
+           "                          (accuracy or resolution) and solver, at most 24\n"
            "      --quadrature K      Gauss points per edge in classic (default 3)\n"
            "      --threads N         OpenMP threads (default: all cores)\n"
            "  -q, --quiet             no progress lines\n"
@@ -219,6 +220,11 @@ static int parse_args(sweep_args *a, int argc, char **argv)
         cli_error("sweep takes --meshes, not --mesh");
         return 2;
     }
+    if (a->plot && (a->nacc + a->nres) * a->nsolvers > MAX_SERIES) {
+        cli_error("--plot draws at most %d curves, one per accuracy or resolution and solver; "
+                  "this sweep has %d", MAX_SERIES, (a->nacc + a->nres) * a->nsolvers);
+        return 2;
+    }
     if (optind != argc - 1) {
         cli_error(optind >= argc ? "sweep needs a SCENE" : "sweep takes one SCENE");
         return 2;
@@ -328,8 +334,6 @@ static int write_xy(FILE *out, const void *ctx)
     return 0;
 }
 
-#define MAX_SERIES 24
-
 /* Does row r belong to variant v (v < nacc: an accuracy; else a
  * resolution) and solver? */
 static int in_series(const sweep_args *a, const row *r, int v, int solver)
@@ -341,7 +345,7 @@ static int in_series(const sweep_args *a, const row *r, int v, int solver)
 
 static int plot(const sweep_args *a, const row *r, int nr, const char *title)
 {
-    rad_series s[MAX_SERIES]; /* accuracies and resolutions x solvers, the first 24 */
+    rad_series s[MAX_SERIES]; /* accuracies and resolutions x solvers (parse_args) */
     double x[MAX_SERIES][MAX_LIST], y[MAX_SERIES][MAX_LIST];
     char labels[MAX_SERIES][48];
     int ns = 0;

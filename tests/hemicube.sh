@@ -133,6 +133,10 @@ for bad in 15 0 16,abc 8192; do
   [ $? -eq 2 ] && grep -q -- "--resolutions" "$work/err" || { diag "$bad"; fails=1; }
 done
 ok $fails "sweep --resolutions 15, 0, 16,abc, 8192: usage errors"
+"$RADIOSITY" sweep -q --meshes 1 --solvers gauss,cholesky,jacobi,gauss-seidel,cg,progressive \
+  --resolutions 2,4 --plot "$work/sw.png" -o "$work/sw30.tsv" "$furnace" 2> "$work/err"
+[ $? -eq 2 ] && grep -q "at most 24 curves" "$work/err" && [ ! -e "$work/sw30.tsv" ]
+ok $? "sweep --plot with 30 curves (the hemicube's would be dropped): usage error"
 "$RADIOSITY" sweep --help | grep -q -- "--resolutions LIST"
 ok $? "sweep --help describes --resolutions"
 done_testing
