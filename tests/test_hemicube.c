@@ -46,6 +46,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ffrow.h"
 #include "hemicube.h"
 #include "radiosity.h"
 #include "tap.h"
@@ -350,6 +351,37 @@ static void test_close(void)
     }
 }
 
+/* ---- 6. an unknown method is refused by the matrix and the rows alike ------- */
+
+static void test_unknown_method(void)
+{
+    static const char text[] = "material w reflect 0.5\n"
+                               "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
+                               "quad w 0 0 1  0 1 1  1 1 1  1 0 1\n";
+    rad_scene sc;
+    rad_mesh m;
+    rad_error err;
+    rad_ff_options o;
+    rad_ffrow *row = NULL;
+    double F[4];
+    if (rad_scene_parse(&sc, text, strlen(text), "t.scene", &err) != RAD_OK ||
+        rad_mesh_build(&m, &sc, &err) != RAD_OK) {
+        tap_ok(0, "unknown method: %s", err.message);
+        return;
+    }
+    rad_ff_options_init(&o);
+    o.method = (rad_ff_method)7;
+    tap_ok(rad_ff_matrix(&m, &o, F, NULL, NULL, &err) == RAD_ERR_INVALID,
+           "rad_ff_matrix refuses method 7: %s", err.message);
+    err.message[0] = '\0';
+    tap_ok(rad_ffrow_create(&row, &m, &o, RAD_OCC_AUTO, 0, 0, &err) == RAD_ERR_INVALID &&
+               !row,
+           "rad_ffrow_create (matrix-free shooting) refuses it too: %s", err.message);
+    rad_ffrow_free(row);
+    rad_mesh_free(&m);
+    rad_scene_free(&sc);
+}
+
 int main(void)
 {
     test_table();
@@ -374,5 +406,6 @@ int main(void)
                 F_ADJACENT, 26, 16);
     test_blocker();
     test_close();
+    test_unknown_method();
     return tap_done();
 }
