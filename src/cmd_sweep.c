@@ -11,8 +11,10 @@
  * fine element (gi, gj) of an N x M surface lies in coarse element
  * (floor((gi + 1/2) n / N), floor((gj + 1/2) m / M)), so the error measures
  * the piecewise-constant solution against the truth, area-weighted:
- *     rms = sqrt( sum_f A_f (B_c(f) - B_f)^2 / sum_f A_f ),
- * averaged over the colour bands (Cohen et al. 1988, eq. 14), and
+ *     rms = sqrt( sum_f A_f sum_b (B_c(f),b - B_f,b)^2 / (3 sum_f A_f) ),
+ * Cohen et al. 1988, eq. 14, with the squares averaged over the colour
+ * bands (rad_solution_error; not the band-averaged radiosity of
+ * `progress`'s rms, rmserror.c: the two agree on grey scenes), and
  * max = the largest |B_c(f) - B_f|.
  *
  * With --resolutions, each mesh is also solved with the hemicube's form
@@ -79,9 +81,10 @@ static void help(void)
            "the best available truth (the closed form B = E/(1 - rho) for a closed\n"
            "scene of one material; otherwise the reference-mode gauss solution on the\n"
            "finest mesh).  The error is the area-weighted RMS of Cohen et al. 1988,\n"
-           "eq. 14, averaged over the bands, and the maximum, in units of B.  Each\n"
-           "time is the median of up to 9 runs, repeated while they took less than\n"
-           "0.1 s in all.\n"
+           "eq. 14, its squares averaged over the bands (progress's rms averages the\n"
+           "bands' radiosity first: the same on grey scenes), and the maximum, in\n"
+           "units of B.  Each time is the median of up to 9 runs, repeated while\n"
+           "they took less than 0.1 s in all.\n"
            "\n"
            "Options:\n"
            "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
