@@ -91,7 +91,7 @@ double rad_hemicube_row_bytes(const rad_hemicube *hc)
     const double R = hc->tab.res, n = hc->n;
     /* the picture: rgb (24), depth (8), face (4), edge (1) per pixel;
      * the row: acc (16 n), two view sets (face lists, items, vertices) */
-    return 40.0 * R * R + 16.0 * n + 2.0 * (24.0 * n + 4.0 * hc->model.face_first[2 * hc->n]) +
+    return RAD_HEMICUBE_PIXEL_BYTES * R * R + 16.0 * n + 2.0 * (24.0 * n + 4.0 * hc->model.face_first[2 * hc->n]) +
            48.0 * hc->model.nvertices;
 }
 

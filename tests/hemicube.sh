@@ -47,6 +47,13 @@ ok $? "solve --report with the hemicube: accuracy and quadrature null (it reads 
 "$RADIOSITY" solve -q --mesh 1x1 --report "$work/rep.json" -o "$work/rep.ply" "$cube"
 grep -q '"accuracy": "default",' "$work/rep.json" && grep -q '"quadrature": 3,' "$work/rep.json"
 ok $? "solve --report with the contour: accuracy and quadrature as used"
+# memory_bytes counts the hemicube's picture: 40 bytes a pixel (render.h's
+# ~37: rgb 24, depth 8, face 4, edge 1), R x R of them, over the contour's
+mem() { sed -n 's/^  "memory_bytes": \([0-9.e+]*\),$/\1/p' "$1"; }
+"$RADIOSITY" solve -q $hc --resolution 256 --mesh 1x1 --report "$work/rep256.json" \
+  -o "$work/rep.ply" "$cube"
+d=$(awk -v a="$(mem "$work/rep256.json")" -v b="$(mem "$work/rep.json")" 'BEGIN { print a - b }')
+[ "$d" = 2621440 ]; ok $? "memory_bytes of a hemicube of 256 adds its picture, 40 x 256^2 bytes (+$d)"
 
 for cmd in formfactor solve progress; do
   "$RADIOSITY" $cmd --resolution 32 "$cube" > "$work/out" 2> "$work/err"
