@@ -214,6 +214,11 @@ int cli_common_check(const cli_common *c)
                   "accuracy is its --resolution");
         return 2;
     }
+    if (c->strict && c->ff.method == RAD_FF_HEMICUBE) {
+        cli_error("--strict enforces the contour integral's accuracy promise; the hemicube "
+                  "makes none (its error falls with --resolution)");
+        return 2;
+    }
     return 0;
 }
 

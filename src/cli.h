@@ -75,15 +75,15 @@ enum {
     "                          Greenberg 1985: a z-buffer on each element's\n"     \
     "                          centre; faster where surfaces hide each other,\n"   \
     "                          less accurate: its pixels alias and its centre\n"   \
-    "                          stands for the element; --accuracy and\n"          \
-    "                          --quadrature are the contour's)\n"                 \
+    "                          stands for the element; --accuracy,\n"            \
+    "                          --quadrature and --strict are the contour's)\n"    \
     "      --resolution R      hemicube: R x R pixels on the top face, R x R/2 on\n"\
     "                          each side (even, 2-4096; default 64)\n"
 
 void cli_common_init(cli_common *c);
 /* After the options: --resolution without --form-factors-method hemicube,
- * and --accuracy or --quadrature with it (the contour's), are usage
- * errors.  0, or 2 (printed). */
+ * and --accuracy, --quadrature or --strict with it (the contour's), are
+ * usage errors.  0, or 2 (printed). */
 int cli_common_check(const cli_common *c);
 /* Handle a common option: 0 handled, 1 not a common option, 2 usage error
  * (message printed). */

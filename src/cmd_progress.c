@@ -68,6 +68,7 @@ typedef struct progress_args {
     int at[MAX_SNAPSHOTS_AT];   /* --snapshots-at, ascending */
     int steps_given;
     rad_exposure_from exposure_from; /* of the snapshots */
+    int exposure_from_given;
     int error_images;           /* --error-images */
     int snapshot_elements;      /* --snapshot-elements */
     int plot_linear;            /* --plot-axis linear */
@@ -210,6 +211,7 @@ static int parse_option(progress_args *a, int opt, const char *arg)
         a->prefix = arg;
         return 0;
     case OPT_EXPOSURE_FROM:
+        a->exposure_from_given = 1;
         return cli_parse_exposure_from(arg, &a->exposure_from);
     case OPT_ERROR_IMAGES:
         a->error_images = 1;
@@ -290,8 +292,9 @@ static int snapshot_path(char *path, const char *prefix, int method, int step,
     return len < 0 || len >= 4096;
 }
 
-/* Every snapshot goes beside the first: the directory checked, for each
- * method, before the work (as every other output is), so a missing one is
+/* Every snapshot goes beside the first: the directory, and the first
+ * step's picture, error picture and table, checked for each method
+ * before the work (as every other output is), so a missing one is
  * not found after the dense fill.  0, or 1 (printed). */
 static int snapshots_check(const progress_args *a)
 {
@@ -305,11 +308,18 @@ static int snapshots_check(const progress_args *a)
                       prefix);
             return 1;
         }
-        snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
-                      ".png");
-        const cli_output o = {path, write_png, NULL};
-        if (cli_outputs_check(&o, 1))
-            return 1;
+        /* the picture, and its error picture and table when asked for */
+        const char *const suffix[3] = {".png", a->error_images ? "-error.png" : NULL,
+                                       a->snapshot_elements ? ".tsv" : NULL};
+        for (int k = 0; k < 3; k++) {
+            if (!suffix[k])
+                continue;
+            snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
+                          suffix[k]);
+            const cli_output o = {path, write_png, NULL};
+            if (cli_outputs_check(&o, 1))
+                return 1;
+        }
     }
     return 0;
 }
@@ -706,11 +716,13 @@ int cmd_progress(int argc, char **argv)
     }
     if (cli_common_check(&a.common))
         return cli_usage_hint("progress");
-    if ((a.prefix || a.error_images || a.snapshot_elements) && a.race.snapshot_every == 0 &&
-        a.race.nsnapshot_at == 0) {
+    if ((a.prefix || a.error_images || a.snapshot_elements || a.exposure_from_given) &&
+        a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {
         cli_error("%s needs --snapshots K or --snapshots-at LIST",
-                  a.prefix ? "--snapshot-prefix" : a.error_images ? "--error-images"
-                                                                  : "--snapshot-elements");
+                  a.prefix               ? "--snapshot-prefix"
+                  : a.error_images       ? "--error-images"
+                  : a.snapshot_elements  ? "--snapshot-elements"
+                                         : "--exposure-from");
         return cli_usage_hint("progress");
     }
     if ((a.plot_axis_given || a.plot_normalised) && !a.plot) {

@@ -245,8 +245,10 @@ static void run_info(const cli_run *r, rad_run_info *in)
     const rad_result *res = &r->res;
     memset(in, 0, sizeof *in);
     in->scene = r->scene.filename;
-    in->accuracy = rad_accuracy_name(r->s->common.ff.accuracy);
-    in->quadrature = r->s->common.ff.quadrature;
+    /* the hemicube reads neither: the report says null, not the defaults */
+    const int contour = r->s->common.ff.method == RAD_FF_CONTOUR;
+    in->accuracy = contour ? rad_accuracy_name(r->s->common.ff.accuracy) : NULL;
+    in->quadrature = contour ? r->s->common.ff.quadrature : 0;
     in->method = rad_ff_method_name(r->s->common.ff.method);
     in->resolution = r->s->common.ff.resolution;
     in->nelements = res->mesh.nelements;
@@ -344,8 +346,11 @@ static void summary(const cli_run *r)
     const rad_solve_report *s = in.solve;
     if (r->res.matrix == RAD_MATRIX_NONE)
         fprintf(stderr, "radiosity: %d elements, matrix none (form factors per shot, %.1f MiB "
-                        "estimated); solve %.3g s with %.0f pair integrals (%.3g pairs/s, %s)\n",
+                        "estimated); solve %.3g s with %.0f %s (%.3g pairs/s, %s)\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_solve, in.ff ? in.ff->pairs : 0,
+                /* the hemicube integrates nothing: it reads item buffers */
+                r->s->common.ff.method == RAD_FF_HEMICUBE ? "pairs from hemicube rows"
+                                                          : "pair integrals",
                 in.ff_pairs_per_second, in.accuracy);
     else
         fprintf(stderr, "radiosity: %d elements, matrix dense, %.1f MiB of matrices; form "

@@ -11,8 +11,10 @@
  * fine element (gi, gj) of an N x M surface lies in coarse element
  * (floor((gi + 1/2) n / N), floor((gj + 1/2) m / M)), so the error measures
  * the piecewise-constant solution against the truth, area-weighted:
- *     rms = sqrt( sum_f A_f (B_c(f) - B_f)^2 / sum_f A_f ),
- * averaged over the colour bands (Cohen et al. 1988, eq. 14), and
+ *     rms = sqrt( sum_f A_f sum_b (B_c(f),b - B_f,b)^2 / (3 sum_f A_f) ),
+ * Cohen et al. 1988, eq. 14, with the squares averaged over the colour
+ * bands (rad_solution_error; not the band-averaged radiosity of
+ * `progress`'s rms, rmserror.c: the two agree on grey scenes), and
  * max = the largest |B_c(f) - B_f|.
  *
  * With --resolutions, each mesh is also solved with the hemicube's form
@@ -42,6 +44,7 @@ enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT,
        OPT_RESOLUTIONS };
 
 #define MAX_LIST 32
+#define MAX_SERIES 24 /* curves in --plot: (accuracies + resolutions) x solvers */
 
 
 typedef struct sweep_args {
@@ -78,9 +81,10 @@ static void help(void)
            "the best available truth (the closed form B = E/(1 - rho) for a closed\n"
            "scene of one material; otherwise the reference-mode gauss solution on the\n"
            "finest mesh).  The error is the area-weighted RMS of Cohen et al. 1988,\n"
-           "eq. 14, averaged over the bands, and the maximum, in units of B.  Each\n"
-           "time is the median of up to 9 runs, repeated while they took less than\n"
-           "0.1 s in all.\n"
+           "eq. 14, its squares averaged over the bands (progress's rms averages the\n"
+           "bands' radiosity first: the same on grey scenes), and the maximum, in\n"
+           "units of B.  Each time is the median of up to 9 runs, repeated while\n"
+           "they took less than 0.1 s in all.\n"
            "\n"
            "Options:\n"
            "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
@@ -94,7 +98,7 @@ static void help(void)
            "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
            "  -o, --output FILE       the table (TSV; default standard output)\n"
            "      --plot FILE.png     error against time, log-log, a curve per mode\n"
-           "                          and solver\n"
+           "                          (accuracy or resolution) and solver, at most 24\n"
            "      --quadrature K      Gauss points per edge in classic (default 3)\n"
            "      --threads N         OpenMP threads (default: all cores)\n"
            "  -q, --quiet             no progress lines\n"
@@ -115,7 +119,11 @@ static void help(void)
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }
 
-static int parse_list(const char *arg, const char *(*name)(int), int nnames, int *out, int max)
+/* A comma-separated list into out[max]: names of name(0..nnames-1), or,
+ * with name NULL, whole numbers from lo to hi (even ones only if even);
+ * their number, or -1. */
+static int parse_list(const char *arg, const char *(*name)(int), int nnames, long lo, long hi,
+                      int even, int *out, int max)
 {
     char buf[256];
     int n = 0;
@@ -128,27 +136,10 @@ static int parse_list(const char *arg, const char *(*name)(int), int nnames, int
             for (int k = 0; k < nnames; k++)
                 if (strcmp(t, name(k)) == 0)
                     v = k;
-        } else if (cli_parse_int(t, 1, 1000, &v)) {
+        } else if (cli_parse_int(t, lo, hi, &v) || (even && v % 2 != 0)) {
             v = -1;
         }
         if (v < 0 || n >= max)
-            return -1;
-        out[n++] = v;
-    }
-    return n > 0 ? n : -1;
-}
-
-/* "16,32,..." into out[MAX_LIST]: even resolutions; their number or -1. */
-static int parse_resolutions(const char *arg, int *out)
-{
-    char buf[256];
-    int n = 0;
-    if (strlen(arg) >= sizeof buf)
-        return -1;
-    strcpy(buf, arg);
-    for (char *save = NULL, *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        int v;
-        if (n >= MAX_LIST || cli_parse_int(t, 2, RAD_HEMICUBE_MAX, &v) || v % 2 != 0)
             return -1;
         out[n++] = v;
     }
@@ -185,19 +176,19 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             help();
             return 0;
         case OPT_MESHES:
-            if ((a->nmeshes = parse_list(optarg, NULL, 0, a->meshes, MAX_LIST)) < 0) {
+            if ((a->nmeshes = parse_list(optarg, NULL, 0, 1, 1000, 0, a->meshes, MAX_LIST)) < 0) {
                 cli_error("--meshes takes whole numbers from 1 to 1000 separated by commas");
                 return 2;
             }
             break;
         case OPT_ACCURACIES:
-            if ((a->nacc = parse_list(optarg, rad_accuracy_name, 3, a->acc, 3)) < 0) {
+            if ((a->nacc = parse_list(optarg, rad_accuracy_name, 3, 0, 0, 0, a->acc, 3)) < 0) {
                 cli_error("--accuracies takes classic, default, reference separated by commas");
                 return 2;
             }
             break;
         case OPT_SOLVERS:
-            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 6, a->solvers, 6)) < 0) {
+            if ((a->nsolvers = parse_list(optarg, rad_solver_name, 6, 0, 0, 0, a->solvers, 6)) < 0) {
                 cli_error("--solvers takes gauss, cholesky, jacobi, gauss-seidel, cg, progressive "
                           "separated by commas");
                 return 2;
@@ -213,7 +204,8 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             a->plot = optarg;
             break;
         case OPT_RESOLUTIONS:
-            if ((a->nres = parse_resolutions(optarg, a->res)) < 0) {
+            if ((a->nres = parse_list(optarg, NULL, 0, 2, RAD_HEMICUBE_MAX, 1, a->res,
+                                      MAX_LIST)) < 0) {
                 cli_error("--resolutions takes even whole numbers from 2 to %d separated by "
                           "commas, not '%s'", RAD_HEMICUBE_MAX, optarg);
                 return 2;
@@ -229,6 +221,11 @@ static int parse_args(sweep_args *a, int argc, char **argv)
     }
     if (a->common.mesh_n) {
         cli_error("sweep takes --meshes, not --mesh");
+        return 2;
+    }
+    if (a->plot && (a->nacc + a->nres) * a->nsolvers > MAX_SERIES) {
+        cli_error("--plot draws at most %d curves, one per accuracy or resolution and solver; "
+                  "this sweep has %d", MAX_SERIES, (a->nacc + a->nres) * a->nsolvers);
         return 2;
     }
     if (optind != argc - 1) {
@@ -340,8 +337,6 @@ static int write_xy(FILE *out, const void *ctx)
     return 0;
 }
 
-#define MAX_SERIES 24
-
 /* Does row r belong to variant v (v < nacc: an accuracy; else a
  * resolution) and solver? */
 static int in_series(const sweep_args *a, const row *r, int v, int solver)
@@ -353,7 +348,7 @@ static int in_series(const sweep_args *a, const row *r, int v, int solver)
 
 static int plot(const sweep_args *a, const row *r, int nr, const char *title)
 {
-    rad_series s[MAX_SERIES]; /* accuracies and resolutions x solvers, the first 24 */
+    rad_series s[MAX_SERIES]; /* accuracies and resolutions x solvers (parse_args) */
     double x[MAX_SERIES][MAX_LIST], y[MAX_SERIES][MAX_LIST];
     char labels[MAX_SERIES][48];
     int ns = 0;

@@ -344,8 +344,11 @@ int rad_export_report(FILE *out, const rad_run_info *in)
     jstr(out, "scene", in->scene);
     jstr(out, "status", in->status);
     fprintf(out, "  \"elements\": %d,\n", in->nelements);
-    jstr(out, "accuracy", in->accuracy);
-    fprintf(out, "  \"quadrature\": %d,\n", in->quadrature);
+    if (in->accuracy) /* NULL: not the contour's (the hemicube's) */
+        jstr(out, "accuracy", in->accuracy);
+    else
+        fprintf(out, "  \"accuracy\": null,\n");
+    jnum(out, "quadrature", in->quadrature > 0 ? in->quadrature : NAN, 1);
     jnum(out, "memory_bytes", in->memory_bytes, 1);
     jnum(out, "memory_available_bytes", in->memory_available, 1);
     fprintf(out, "  \"seconds\": {\"parse\": %.6g, \"mesh\": %.6g, \"form_factors\": %.6g, "

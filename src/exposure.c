@@ -38,13 +38,19 @@ static double brightest(int nfaces, const double *B, const unsigned char *emits)
     return mx;
 }
 
+/* 1 / the brightest counted value, else 1 / the brightest of all (no
+ * reflector lit), else 1 (nothing lit, or 1 / max not finite). */
+static double inverse_of(double counted, double all)
+{
+    const double mx = counted > 0 ? counted : all;
+    return mx > 0 && isfinite(1 / mx) ? 1 / mx : 1;
+}
+
 static double exposure_of(int nfaces, const double *B, const unsigned char *emits,
                           rad_exposure_from from)
 {
-    double mx = from == RAD_EXPOSURE_REFLECTORS && emits ? brightest(nfaces, B, emits) : 0;
-    if (!(mx > 0))
-        mx = brightest(nfaces, B, NULL);
-    return mx > 0 && isfinite(1 / mx) ? 1 / mx : 1;
+    const double mx = from == RAD_EXPOSURE_REFLECTORS && emits ? brightest(nfaces, B, emits) : 0;
+    return inverse_of(mx, mx > 0 ? mx : brightest(nfaces, B, NULL));
 }
 
 double rad_render_auto_exposure(const rad_render_model *m, rad_exposure_from from)
@@ -67,9 +73,7 @@ double rad_mesh_auto_exposure(const rad_mesh *mesh, const double *B, rad_exposur
                 mx = fmax(mx, v);
         }
     }
-    if (!(mx > 0))
-        mx = all;
-    return mx > 0 && isfinite(1 / mx) ? 1 / mx : 1;
+    return inverse_of(mx, all);
 }
 
 int rad_exposure_from_parse(const char *name, rad_exposure_from *from)

@@ -230,6 +230,9 @@ rad_status rad_ffrow_create(rad_ffrow **out, const rad_mesh *m, const rad_ff_opt
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
+    if (!rad_ff_method_name((int)opt->method)) /* as rad_ff_matrix refuses it */
+        return rad_fail(err, RAD_ERR_INVALID, "unknown form-factor method %d",
+                        (int)opt->method);
     rad_ffrow *r = calloc(1, sizeof *r);
     if (!r)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory");

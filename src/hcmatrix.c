@@ -35,6 +35,7 @@
 #include "ffblock.h"
 #include "hemicube.h"
 #include "mesh.h"
+#include "radiosity/pipeline.h" /* rad_memory_limit */
 #include "status.h"
 
 /* Rows [i0, i1) into F, in parallel; returns the first failure. */
@@ -78,11 +79,17 @@ static rad_status fill(const rad_hemicube *hc, const rad_ff_options *opt, double
                        rad_error *err)
 {
     const int n = rad_hemicube_elements(hc);
-    const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
+    int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
+    /* each thread holds one picture at a time (R = 4096: 640 MiB): as
+     * many threads as fit in the memory allowed (rad_hemicube_create saw
+     * that one does), not an out-of-memory kill halfway */
+    const double one = rad_hemicube_row_bytes(hc) + 8.0 * n, limit = rad_memory_limit();
+    if (limit > 0 && threads > 1 && threads * one > limit)
+        threads = limit / one >= 1 ? (int)(limit / one) : 1;
+    rad_status st = RAD_OK;
     double *rows = malloc(sizeof *rows * (size_t)threads * (size_t)(n ? n : 1));
     if (!rows)
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d hemicube rows", threads);
-    rad_status st = RAD_OK;
     const int block = n / 50 > 16 ? n / 50 : 16;
     for (int i0 = 0; i0 < n && st == RAD_OK; i0 += block) {
         const int i1 = i0 + block < n ? i0 + block : n;

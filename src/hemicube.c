@@ -42,9 +42,13 @@
  * the faces kept are drawn in the model's order (ties keep the first).
  * Each of the five pictures then gets only the faces not wholly outside
  * its 90-degree frustum (frustum_cut), and only the vertices they use
- * (the renderer scans all of a model's vertices on every call); its near
- * plane, 1e-6 of the picture's extent (render.c), is then that of the
- * faces kept.  At 2,400 elements and R = 64 the whole matrix took 15 s
+ * (the renderer scans all of a model's vertices on every call).  The
+ * near plane is hc->tol, 1e-9 of the mesh's size, the distance below
+ * which an element counts as on i's plane: the renderer's own, 1e-6 of
+ * the picture's extent, clipped a receiver closer than that to the
+ * centre (two squares 1e-7 apart had F = 0.003, not 1).  The projection
+ * is in doubles, so coordinates of up to R / tol pixels keep their
+ * fraction of a pixel.  At 2,400 elements and R = 64 the whole matrix took 15 s
  * before these cuts and takes 3.6 s with them, on two busy cores.
  */
 #include <config.h>
@@ -54,6 +58,7 @@
 #include <string.h>
 
 #include "hemicube.h"
+#include "radiosity/pipeline.h"
 #include "radiosity/render.h"
 #include "status.h"
 #include "vec.h"
@@ -79,6 +84,15 @@ typedef struct view_set {
 int rad_hemicube_elements(const rad_hemicube *hc)
 {
     return hc->n;
+}
+
+double rad_hemicube_row_bytes(const rad_hemicube *hc)
+{
+    const double R = hc->tab.res, n = hc->n;
+    /* the picture: rgb (24), depth (8), face (4), edge (1) per pixel;
+     * the row: acc (16 n), two view sets (face lists, items, vertices) */
+    return RAD_HEMICUBE_PIXEL_BYTES * R * R + 16.0 * n + 2.0 * (24.0 * n + 4.0 * hc->model.face_first[2 * hc->n]) +
+           48.0 * hc->model.nvertices;
 }
 
 void rad_hemicube_free(rad_hemicube *hc)
@@ -286,6 +300,16 @@ rad_status rad_hemicube_create(rad_hemicube **out, const rad_mesh *unit, int res
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the hemicube of %d elements",
                         unit->nelements);
     }
+    /* one row's picture: refused clearly here, not killed halfway */
+    const double need = rad_hemicube_row_bytes(hc), limit = rad_memory_limit();
+    if (limit > 0 && need > limit) {
+        rad_hemicube_free(hc);
+        return rad_fail(err, RAD_ERR_TOOBIG,
+                        "a hemicube picture of %d x %d pixels needs %.0f MiB, but only %.0f "
+                        "MiB are available (the least of free memory, the process limits and "
+                        "the cgroup's); use a lower --resolution",
+                        res, res, need / 1048576.0, limit / 1048576.0);
+    }
     make_frames(hc, unit);
     rad_vec3 lo = unit->nvertices ? unit->vertices[0] : v3(0, 0, 0), hi = lo;
     for (int v = 1; v < unit->nvertices; v++) {
@@ -318,6 +342,8 @@ static rad_status one_face(const rad_hemicube *hc, const view_set *row, view_set
     o.camera.at = v3_add(hc->centre[i], dir);
     o.camera.up = up;
     o.camera.fov = 90;
+    o.znear = hc->tol; /* the renderer's own, 1e-6 of the scene, clipped
+                          receivers closer than that: F fell to 0 */
     rad_status st = rad_render(&vs->m, &o, &img, err);
     if (st != RAD_OK)
         return st;

@@ -60,6 +60,11 @@ void rad_hemicube_free(rad_hemicube *hc);
  * of the pixels that show j from i's centre. */
 rad_status rad_hemicube_row(const rad_hemicube *hc, int i, double *row, rad_error *err);
 int rad_hemicube_elements(const rad_hemicube *hc);
+/* The bytes one rad_hemicube_row call holds at its peak: one picture of
+ * R x R pixels (render.h, about 37 bytes each, counted as
+ * RAD_HEMICUBE_PIXEL_BYTES) and the row's buffers. */
+#define RAD_HEMICUBE_PIXEL_BYTES 40.0
+double rad_hemicube_row_bytes(const rad_hemicube *hc);
 
 /* The dense matrix by hemicubes: F[i + j*n] = F_ij, row i from i's
  * centre, rows shared among opt->threads; stats as rad_ff_matrix fills

@@ -22,6 +22,7 @@
 #include "mesh.h"
 #include "adaptive.h"
 #include "solvefree.h"
+#include "hemicube.h"
 #include "status.h"
 
 
@@ -121,6 +122,12 @@ static rad_status check_size(const rad_scene *scene, const rad_pipeline_options 
                                                  : 0;
         r->memory_bytes = rad_matrix_free_bytes(n, (double)nv, np < n ? np : n);
         snprintf(what, sizeof what, "%.0f elements without a stored matrix (O(N))", n);
+    }
+    if (opt->ff.method == RAD_FF_HEMICUBE) { /* and one R x R picture at a time (hemicube.c) */
+        const double R = opt->ff.resolution;
+        const size_t len = strlen(what);
+        r->memory_bytes += RAD_HEMICUBE_PIXEL_BYTES * R * R;
+        snprintf(what + len, sizeof what - len, " and a hemicube picture of %.0f x %.0f", R, R);
     }
     return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
 }

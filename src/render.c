@@ -230,7 +230,7 @@ static view make_view(const rad_render_options *opt, const rad_render_model *m)
         size = v3_norm(v3_sub(hi, lo)) +
                v3_norm(v3_sub(v3_scale(v3_add(lo, hi), 0.5), v.eye));
     }
-    v.znear = ZNEAR_REL * (size > 0 && isfinite(size) ? size : 1.0);
+    v.znear = opt->znear > 0 ? opt->znear : ZNEAR_REL * (size > 0 && isfinite(size) ? size : 1.0);
     return v;
 }
 
@@ -674,6 +674,9 @@ static rad_status check_options(const rad_render_model *m, const rad_render_opti
     if (!(opt->exposure >= 0) || !isfinite(opt->exposure))
         return rad_fail(err, RAD_ERR_INVALID, "exposure must be positive, not %g",
                         opt->exposure);
+    if (!(opt->znear >= 0) || !isfinite(opt->znear))
+        return rad_fail(err, RAD_ERR_INVALID, "the near plane must be at 0 (automatic) or "
+                        "beyond, not %g", opt->znear);
     if (opt->shading == RAD_SHADING_SMOOTH && !m->vrad)
         return rad_fail(err, RAD_ERR_INVALID,
                         "smooth shading needs vertex radiosity; the model has none");

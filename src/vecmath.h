@@ -46,8 +46,6 @@
 #include <stdint.h>
 #include <string.h>
 
-/* sqrt(1/2) as bits: subtracting it shifts the exponent boundary so that
- * the reduced argument lands in [sqrt(1/2), sqrt(2)). */
 /* The instruction-set clones of the form-factor kernels (ffgauss.c,
  * ffcontour.c): an AVX2/FMA (x86-64-v3) clone beside the baseline, picked
  * at load time by the compiler's resolver from what the CPU supports.  The
@@ -61,6 +59,8 @@
 #define RAD_KERNEL_CLONES
 #endif
 
+/* sqrt(1/2) as bits: subtracting it shifts the exponent boundary so that
+ * the reduced argument lands in [sqrt(1/2), sqrt(2)). */
 #define RAD_LOG_SQRT_HALF_BITS 0x3fe6a09e667f3bcdULL
 #define RAD_LOG_EXP_MASK 0xfff0000000000000ULL
 

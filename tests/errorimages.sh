@@ -75,9 +75,21 @@ want=$(awk -F '\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
 got=$(sed -n 's/.*RMS of the converged solution, //p' "$work/err")
 close_to "$got" "$want" 1e-12; ok $? "the curves are divided by eq. 14 of the converged B against 0 ($got, by hand $want)"
 
+# ---- an unwritable error picture or table is found before the work
+for f in d-gathering-000001-error.png d-gathering-000001.tsv; do
+  rm -rf "$work/d-"*; mkdir "$work/$f"
+  "$RADIOSITY" progress -q --mesh 2x2 --snapshots-at 1 --error-images --snapshot-elements \
+    --snapshot-prefix "$work/d" -o "$work/d-race.tsv" "$top_srcdir/data/goral1984-cube.scene" \
+    2> "$work/err"; rc=$?
+  [ $rc -eq 1 ] && [ ! -e "$work/d-race.tsv" ] && [ ! -e "$work/d-gathering-000001.png" ] &&
+    grep -q "$f" "$work/err"
+  ok $? "$f a directory: an error before any snapshot (exit $rc)"
+done
+
 # ---- usage errors
 cube="$top_srcdir/data/goral1984-cube.scene"
-for bad in "--error-images" "--snapshot-elements" "--plot-axis linear" "--plot-normalised" \
+for bad in "--error-images" "--snapshot-elements" "--exposure-from all" "--plot-axis linear" \
+  "--plot-normalised" \
   "--plot-axis cubic --plot $work/x.png"; do
   # shellcheck disable=SC2086
   "$RADIOSITY" progress -q --mesh 2x2 $bad -o "$work/bad.tsv" "$cube" > /dev/null 2>&1; rc=$?

@@ -21,7 +21,40 @@ cube="$top_srcdir/data/grey-cube.scene"
 furnace="$top_srcdir/data/furnace.scene"
 hc="--form-factors-method hemicube"
 
+# ---- memory: a picture of R = 4096 takes 640 MiB (37 bytes a pixel)
+if [ -n "${RADIOSITY_SANITIZE-}" ]; then
+  skip "ulimit -v under AddressSanitizer (checked by make check)"
+else
+  (ulimit -v 400000; "$RADIOSITY" formfactor -q $hc --resolution 4096 --mesh 1x1 \
+    -o "$work/big.tsv" "$cube" 2> "$work/err"); rc=$?
+  [ $rc -eq 1 ] && grep -q 'needs 640 MiB, but only [0-9]* MiB are available' "$work/err" &&
+    grep -q -- "--resolution" "$work/err" && [ ! -e "$work/big.tsv" ]
+  ok $? "ulimit -v 400 MB and R = 4096: refused from the limit, naming --resolution (exit $rc)"
+fi
+
+"$RADIOSITY" solve $hc --resolution 8 --solver progressive --matrix none --mesh 1x1 \
+  -o "$work/mf.ply" "$cube" 2> "$work/err"
+grep -q "pairs from hemicube rows" "$work/err" && ! grep -q "pair integrals" "$work/err"
+ok $? "the matrix-free summary does not call the hemicube's pairs integrals"
+
 # ---- usage errors -------------------------------------------------------------
+"$RADIOSITY" solve -q $hc --resolution 8 --mesh 1x1 --report "$work/rep.json" \
+  -o "$work/rep.ply" "$cube"
+grep -q '"accuracy": null,' "$work/rep.json" && grep -q '"quadrature": null,' "$work/rep.json" &&
+  grep -q '"form_factors_method": "hemicube",' "$work/rep.json" &&
+  grep -q '"hemicube_resolution": 8,' "$work/rep.json"
+ok $? "solve --report with the hemicube: accuracy and quadrature null (it reads neither), the method and R"
+"$RADIOSITY" solve -q --mesh 1x1 --report "$work/rep.json" -o "$work/rep.ply" "$cube"
+grep -q '"accuracy": "default",' "$work/rep.json" && grep -q '"quadrature": 3,' "$work/rep.json"
+ok $? "solve --report with the contour: accuracy and quadrature as used"
+# memory_bytes counts the hemicube's picture: 40 bytes a pixel (render.h's
+# ~37: rgb 24, depth 8, face 4, edge 1), R x R of them, over the contour's
+mem() { sed -n 's/^  "memory_bytes": \([0-9.e+]*\),$/\1/p' "$1"; }
+"$RADIOSITY" solve -q $hc --resolution 256 --mesh 1x1 --report "$work/rep256.json" \
+  -o "$work/rep.ply" "$cube"
+d=$(awk -v a="$(mem "$work/rep256.json")" -v b="$(mem "$work/rep.json")" 'BEGIN { print a - b }')
+[ "$d" = 2621440 ]; ok $? "memory_bytes of a hemicube of 256 adds its picture, 40 x 256^2 bytes (+$d)"
+
 for cmd in formfactor solve progress; do
   "$RADIOSITY" $cmd --resolution 32 "$cube" > "$work/out" 2> "$work/err"
   [ $? -eq 2 ] && grep -q "hemicube" "$work/err"
@@ -35,6 +68,9 @@ for cmd in formfactor solve progress; do
   "$RADIOSITY" $cmd $hc --accuracy reference "$cube" > "$work/out" 2> "$work/err"
   [ $? -eq 2 ] && grep -q -- "--resolution" "$work/err"
   ok $? "$cmd: --accuracy with the hemicube is a usage error pointing to --resolution"
+  "$RADIOSITY" $cmd $hc --strict "$cube" > "$work/out" 2> "$work/err"
+  [ $? -eq 2 ] && grep -q -- "--strict" "$work/err"
+  ok $? "$cmd: --strict with the hemicube (which promises no accuracy) is a usage error"
   "$RADIOSITY" $cmd --form-factors-method hemi "$cube" > "$work/out" 2> "$work/err"
   [ $? -eq 2 ] && grep -q "contour or hemicube" "$work/err"
   ok $? "$cmd --form-factors-method hemi: usage error listing the methods"
@@ -104,6 +140,10 @@ for bad in 15 0 16,abc 8192; do
   [ $? -eq 2 ] && grep -q -- "--resolutions" "$work/err" || { diag "$bad"; fails=1; }
 done
 ok $fails "sweep --resolutions 15, 0, 16,abc, 8192: usage errors"
+"$RADIOSITY" sweep -q --meshes 1 --solvers gauss,cholesky,jacobi,gauss-seidel,cg,progressive \
+  --resolutions 2,4 --plot "$work/sw.png" -o "$work/sw30.tsv" "$furnace" 2> "$work/err"
+[ $? -eq 2 ] && grep -q "at most 24 curves" "$work/err" && [ ! -e "$work/sw30.tsv" ]
+ok $? "sweep --plot with 30 curves (the hemicube's would be dropped): usage error"
 "$RADIOSITY" sweep --help | grep -q -- "--resolutions LIST"
 ok $? "sweep --help describes --resolutions"
 done_testing

@@ -49,6 +49,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ffrow.h"
 #include "hemicube.h"
 #include "radiosity.h"
 #include "tap.h"
@@ -324,6 +325,66 @@ static void test_blocker(void)
     }
 }
 
+/* ---- 5. a receiver closer than the renderer's own near plane --------------- */
+
+/* Two unit squares facing each other a gap g apart (g of the scene's size;
+ * the renderer's default near plane is 1e-6 of it, which once clipped such
+ * a receiver away: F fell from 1 to 0.29 at g = 1e-6 and 0.003 at 1e-7).
+ * From the shooter's centre the receiver covers the whole top face and
+ * each side face up to the height 2g, so its outline there lies along the
+ * four sides' bottom rows: L = 8, K = 8 (as the blocker's).  Lambert's
+ * value at the centre is 1 - O(g). */
+static void test_close(void)
+{
+    const double gaps[] = {1e-5, 1e-7, 1e-8};
+    for (size_t k = 0; k < sizeof gaps / sizeof *gaps; k++) {
+        char text[512];
+        double f, lim, rowmax;
+        const double g = gaps[k];
+        snprintf(text, sizeof text,
+                 "material w reflect 0.5\n"
+                 "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
+                 "quad w 0 0 %.17g  0 1 %.17g  1 1 %.17g  1 0 %.17g\n", g, g, g, g);
+        const int R = 64;
+        const int rc = surface_factor(text, R, &f, &lim, &rowmax);
+        const double b = alias_bound(R, 8, 8);
+        tap_ok(rc == 0 && fabs(f - lim) <= b,
+               "facing unit squares %g apart, R = %d: F = %.12f, Lambert %.12f, within %.3g", g,
+               R, f, lim, b);
+    }
+}
+
+/* ---- 6. an unknown method is refused by the matrix and the rows alike ------- */
+
+static void test_unknown_method(void)
+{
+    static const char text[] = "material w reflect 0.5\n"
+                               "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
+                               "quad w 0 0 1  0 1 1  1 1 1  1 0 1\n";
+    rad_scene sc;
+    rad_mesh m;
+    rad_error err;
+    rad_ff_options o;
+    rad_ffrow *row = NULL;
+    double F[4];
+    if (rad_scene_parse(&sc, text, strlen(text), "t.scene", &err) != RAD_OK ||
+        rad_mesh_build(&m, &sc, &err) != RAD_OK) {
+        tap_ok(0, "unknown method: %s", err.message);
+        return;
+    }
+    rad_ff_options_init(&o);
+    o.method = (rad_ff_method)7;
+    tap_ok(rad_ff_matrix(&m, &o, F, NULL, NULL, &err) == RAD_ERR_INVALID,
+           "rad_ff_matrix refuses method 7: %s", err.message);
+    err.message[0] = '\0';
+    tap_ok(rad_ffrow_create(&row, &m, &o, RAD_OCC_AUTO, 0, 0, &err) == RAD_ERR_INVALID &&
+               !row,
+           "rad_ffrow_create (matrix-free shooting) refuses it too: %s", err.message);
+    rad_ffrow_free(row);
+    rad_mesh_free(&m);
+    rad_scene_free(&sc);
+}
+
 int main(void)
 {
     test_table();
@@ -347,5 +408,7 @@ int main(void)
                 "quad w 0 0 0  0 1 0  0 1 1  0 0 1\n",
                 F_ADJACENT, 26, 16);
     test_blocker();
+    test_close();
+    test_unknown_method();
     return tap_done();
 }

@@ -751,6 +751,13 @@ static void test_bad_options(void)
     o = options(v3(0.5, 0.5, -1), v3(0.5, 0.5, 1), 45, 0, 10, RAD_SHADING_FLAT);
     tap_ok(rad_render(&fx.model, &o, &img, &err) == RAD_ERR_INVALID, "width 0 refused: %s",
            err.message);
+    o = options(v3(0.5, 0.5, -1), v3(0.5, 0.5, 1), 45, 10, 10, RAD_SHADING_FLAT);
+    o.znear = -1;
+    tap_ok(rad_render(&fx.model, &o, &img, &err) == RAD_ERR_INVALID,
+           "a near plane behind the eye refused: %s", err.message);
+    o.znear = NAN;
+    tap_ok(rad_render(&fx.model, &o, &img, &err) == RAD_ERR_INVALID,
+           "a NaN near plane refused: %s", err.message);
     fixture_free(&fx);
 }
 

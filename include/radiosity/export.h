@@ -20,8 +20,9 @@ extern "C" {
 /* Everything the JSON report says about one run. */
 typedef struct rad_run_info {
     const char *scene;
-    const char *accuracy;
-    int quadrature;
+    const char *accuracy;       /* the contour's mode, or NULL (null: the
+                                   hemicube has none) */
+    int quadrature;             /* Gauss points per edge, or 0 (null) */
     int nelements;
     double memory_bytes;        /* peak estimate of the matrices */
     double memory_available;

@@ -78,6 +78,10 @@ typedef struct rad_render_options {
                                    all faces (ALL); REFLECTORS falls back to
                                    ALL when no face is known to emit or no
                                    reflector has radiosity above 0 */
+    double znear;               /* > 0: the near plane's distance from the
+                                   eye; 0: 1e-6 of the scene's size plus the
+                                   eye's distance from it (the hemicube, its
+                                   eye on a surface, sets its own) */
 } rad_render_options;
 
 /* A rendered picture, before and after tone mapping. */
