@@ -57,6 +57,7 @@
 #include "adaptive.h"
 #include "adaptmesh.h"
 #include "adaptstate.h"
+#include "solvefree.h"
 #include "status.h"
 
 #define NB RAD_BANDS
@@ -229,7 +230,7 @@ static rad_status iterate(rad_adapt_state *s, const double emitted[NB], int *ste
             st = rad_adapt_subdivide(s);
         unshot(s, U);
         ++*steps;
-        rad_shot row = {*steps, p, shot, U[0] + U[1] + U[2], NAN, NAN};
+        rad_shot row = {*steps, p, shot, U[0] + U[1] + U[2], NAN, NAN, NAN, NAN};
         if (st == RAD_OK && o->on_shot && o->on_shot(o->shot_user, &row))
             st = rad_fail(s->err, RAD_ERR_INVALID, "interrupted");
         if (st == RAD_OK && o->progress && *steps % 64 == 0 &&
@@ -293,15 +294,8 @@ static rad_status balance(rad_adapt_state *s, rad_solve_report *rep)
 
 static void report_init(rad_solve_report *rep, const rad_adapt_nodes *a)
 {
-    memset(rep, 0, sizeof *rep);
-    rep->solver = RAD_SOLVER_PROGRESSIVE;
-    rep->bounces = -1;
-    rep->residual = rep->rcond = rep->ff_error_bound = NAN;
-    rep->ferr = rep->berr = rep->spectral_radius = NAN;
-    rep->error_bound = rep->contraction = NAN;
-    rep->row_sum_min = rep->row_sum_max = NAN;
+    rad_report_init_shooting(rep);
     for (int b = 0; b < NB; b++) {
-        rep->absorbed[b] = rep->escaped[b] = rep->balance[b] = NAN;
         for (int p = 0; p < a->npatches; p++)
             rep->emitted[b] += a->mesh.elements[a->root[p]].area *
                                fabs(a->mesh.elements[a->root[p]].emit[b]);

@@ -34,7 +34,7 @@
 #include "solvers.h"
 #include "status.h"
 
-static void report_init(rad_solve_report *rep)
+void rad_report_init_shooting(rad_solve_report *rep)
 {
     memset(rep, 0, sizeof *rep);
     rep->solver = RAD_SOLVER_PROGRESSIVE;
@@ -70,7 +70,7 @@ rad_status rad_solve_matrix_free(const rad_mesh *m, const rad_ff_options *ff,
     rad_ffrow *row = NULL;
     if (!rep)
         rep = &local;
-    report_init(rep);
+    rad_report_init_shooting(rep);
     if (opt->bounces >= 0 || opt->solver != RAD_SOLVER_PROGRESSIVE)
         return rad_fail(err, RAD_ERR_INVALID,
                         "without a stored matrix only progressive refinement can solve");

@@ -18,6 +18,10 @@ rad_status rad_solve_matrix_free(const rad_mesh *m, const rad_ff_options *ff,
                                  const rad_solve_options *opt, double *B,
                                  rad_solve_report *rep, rad_ff_stats *ffst, rad_error *err);
 
+/* The report of a shooting run without a matrix before its first shot:
+ * what it does not measure NaN (solvefree.c and adaptive.c). */
+void rad_report_init_shooting(rad_solve_report *rep);
+
 /* An upper estimate of the bytes a matrix-free run of n elements with
  * nvertices vertices and npatches patches holds at its peak, besides the
  * visibility structure's (which grows with the surfaces, not the

@@ -136,4 +136,11 @@ done
 cmp -s "$work/fromply.png" "$work/a-smooth.png"
 ok $? "render SOLUTION.ply of the adaptive mesh = render SCENE --adaptive, byte for byte"
 
+# the trace: no reference on a mesh that changes, so every RMS column is
+# nan (radiosity(1)), not 0
+"$RADIOSITY" solve -q $ad --mesh 2x2 --max-iterations 5 --trace "$work/t.tsv" "$scene" 2> /dev/null
+awk -F'\t' 'NR > 1 { for (k = 5; k <= 8; k++) if ($k != "nan") bad++; n++ }
+  END { exit !(n == 5 && bad == 0) }' "$work/t.tsv"
+ok $? "--trace with --adaptive: rms, rms_ambient, rms_bands, rms_ambient_bands are nan on all 5 rows"
+
 done_testing
