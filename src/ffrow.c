@@ -339,13 +339,28 @@ static rad_status hemicube_column(rad_ffrow *r, int i, double *to, double *from,
     return RAD_OK;
 }
 
+/* F_ji and F_ij of the pair (i, j) from its contour sum s, as the dense
+ * fill writes them: the entry in the column of the lower index, and its
+ * mirror by reciprocity (A_i F_ij = A_j F_ji), so that the values are the
+ * fill's bit for bit. */
+static void pair_factors(const rad_ffrow *r, int i, int j, double s, double *fji, double *fij)
+{
+    const rad_ff_poly *P = r->polys;
+    if (j > i) { /* the fill's column i, and its mirror */
+        *fji = s * r->inv_t[j];
+        *fij = *fji * (P[j].area / P[i].area);
+    } else { /* the fill's column j, and its mirror */
+        *fij = s * r->inv_t[i];
+        *fji = *fij * (P[i].area / P[j].area);
+    }
+}
+
 rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_error *err)
 {
     if (r->hc)
         return hemicube_column(r, i, to, from, err);
     const int n = r->n;
     const double *inv_t = r->inv_t, promise = rad_ff_promise(r->opt.accuracy);
-    const rad_ff_poly *P = r->polys;
     int failed = 0, bad = -1;
     double sum = 0;
 #pragma omp parallel num_threads(n >= PARALLEL_MIN ? r->threads : 1) reduction(|| : failed) \
@@ -366,13 +381,7 @@ rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_e
                 failed = 1;
                 continue;
             }
-            if (j > i) { /* the fill's column i, and its mirror */
-                fji = s * inv_t[j];
-                fij = fji * (P[j].area / P[i].area);
-            } else { /* the fill's column j, and its mirror */
-                fij = s * inv_t[i];
-                fji = fij * (P[i].area / P[j].area);
-            }
+            pair_factors(r, i, j, s, &fji, &fij);
             to[j] = fji;
             if (from)
                 from[j] = fij;
@@ -400,7 +409,6 @@ rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to
                            rad_error *err)
 {
     const double *inv_t = r->inv_t, promise = rad_ff_promise(r->opt.accuracy);
-    const rad_ff_poly *P = r->polys;
     int failed = 0, bad = -1;
 #pragma omp parallel num_threads(k >= PARALLEL_MIN ? r->threads : 1) reduction(|| : failed)
     {
@@ -418,8 +426,8 @@ rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to
                 failed = 1;
                 continue;
             }
-            /* as rad_ffrow_column writes F_ji on either side of the diagonal */
-            to[q] = j > i ? s * inv_t[j] : s * inv_t[i] * (P[i].area / P[j].area);
+            double fij;
+            pair_factors(r, i, j, s, &to[q], &fij);
             if (!isfinite(to[q]))
 #pragma omp critical(rad_ffrow_bad)
                 bad = j;
