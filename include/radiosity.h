@@ -353,6 +353,12 @@ typedef struct rad_solve_options {
                                    scene, per band (default 0.1) */
     int max_depth;              /* levels of splitting below a starting element
                                    (default 3: down to 1/8 of its side) */
+    int subdivide_by_error;     /* 0 (default): the threshold bounds the
+                                   difference itself (Cohen et al. 1988,
+                                   section 4); 1: the difference times the
+                                   element's side over its starting element's
+                                   side, 2^-level (splits ranked by their gain
+                                   in the area-weighted RMS error) */
 } rad_solve_options;
 
 RAD_API void rad_solve_options_init(rad_solve_options *opt);

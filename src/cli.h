@@ -189,6 +189,7 @@ enum {
     OPT_ADAPTIVE,
     OPT_SUBDIVIDE_THRESHOLD,
     OPT_MAX_DEPTH,
+    OPT_SUBDIVIDE_TEST,
     OPT_SOLVE_END
 };
 
@@ -204,7 +205,8 @@ typedef struct cli_solve {
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
     rad_vertex_rule vertex_rule;  /* --vertex-rule */
-    int given_adaptive_option;  /* --subdivide-threshold or --max-depth */
+    int given_adaptive_option;  /* --subdivide-threshold, --max-depth or
+                                   --subdivide-test */
 } cli_solve;
 
 #define CLI_SOLVE_LONGOPTS                                                \
@@ -224,6 +226,7 @@ typedef struct cli_solve {
     {"adaptive", no_argument, NULL, OPT_ADAPTIVE},                        \
     {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD}, \
     {"max-depth", required_argument, NULL, OPT_MAX_DEPTH},                \
+    {"subdivide-test", required_argument, NULL, OPT_SUBDIVIDE_TEST},      \
     CLI_COMMON_LONGOPTS
 
 #define CLI_SOLVE_HELP                                                             \
@@ -264,6 +267,12 @@ typedef struct cli_solve {
     "                          (default 0.1)\n"                                \
     "      --max-depth D       --adaptive: at most D splits below a starting\n"\
     "                          element, 0 to 8 (default 3: sides down to 1/8)\n"\
+    "      --subdivide-test difference|error  --adaptive: what T bounds: the\n"\
+    "                          difference itself (default, the paper's test)\n"\
+    "                          or the difference times the element's side\n" \
+    "                          over its starting element's, 2^-level (error:\n"\
+    "                          the area-weighted RMS error per element\n"    \
+    "                          evened out; fewer elements for the same RMS)\n"\
     "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\
     "                          bound on the relative error of B is below T\n"   \
     "                          (q/(1-q) times the last change, q the contraction\n"\

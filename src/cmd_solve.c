@@ -125,6 +125,14 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_SUBDIVIDE_TEST:
+        s->given_adaptive_option = 1;
+        if (strcmp(arg, "difference") == 0 || strcmp(arg, "error") == 0) {
+            s->solve.subdivide_by_error = arg[0] == 'e';
+            return 0;
+        }
+        cli_error("--subdivide-test takes difference or error, not '%s'", arg);
+        return 2;
     case OPT_MATRIX:
         s->given_matrix = 1;
         for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)
@@ -165,7 +173,7 @@ int cli_solve_check(const cli_solve *s)
     else if (s->matrix == RAD_MATRIX_NONE && s->form_factors)
         bad = "--matrix none stores no form factors: --form-factors cannot write them";
     else if (s->given_adaptive_option && !s->solve.adaptive)
-        bad = "--subdivide-threshold and --max-depth apply to --adaptive";
+        bad = "--subdivide-threshold, --subdivide-test and --max-depth apply to --adaptive";
     else if (s->solve.adaptive && (v != RAD_SOLVER_PROGRESSIVE || s->given_bounces))
         bad = "--adaptive applies to --solver progressive";
     else if (s->solve.adaptive && (s->solve.patches || s->solve.patch_p))

@@ -67,6 +67,7 @@ void rad_solve_options_init(rad_solve_options *opt)
     opt->ff_row_error = NAN;
     opt->subdivide_threshold = 0.1;
     opt->max_depth = 3;
+    opt->subdivide_by_error = 0;
 }
 
 double rad_solve_bytes(int n, int with_errbounds)

@@ -14,6 +14,9 @@
 #                                         background in B (see below)
 #   adaptive_rms.py seams X.ply -         largest jump of the smoothed radiosity
 #                                         across the mesh's T-junctions
+#   adaptive_rms.py oracle REF.tsv S:RMS SCENE  the fewest elements any
+#                                         quadtree from S x S can have at
+#                                         error RMS, and its shadow share
 #
 # rms: the reference is a uniform fine mesh (e.g. 32 x 32 per surface); every
 # element of X, uniform or adaptive, is a union of reference elements (its
@@ -54,6 +57,21 @@
 # its corners (a hanging vertex) must carry the value the element's
 # bilinear interpolation has there, or Gouraud shading jumps across that
 # side.  Prints: largest |difference| and the number of such pairs.
+#
+# oracle: the best any adaptive subdivision can do in the rms measure.
+# The candidates are the quadtrees over each surface's S x S starting
+# elements whose leaves are unions of reference elements (S divides the
+# reference's 32; depth down to the reference's cells: deeper leaves are
+# averaged back onto them by rms, so they cannot help).  Each leaf is given
+# the area average of the reference over it, the value that minimises its
+# share of the squared error (no solver can do better: rms is then the
+# representation error alone).  A leaf's share is sum_r A_r (B_r - mean)^2;
+# the fewest leaves at which the sum over all leaves is at most
+# RMS^2 sum A is found exactly by dynamic programming over the trees
+# (per node: the least error with k leaves, as a leaf or as the best split
+# of k among its four children; then across the starting elements).  The
+# tree it finds is passed to shadow as an element table.  Prints:
+# min_leaves rms_at_min shadow_share near subdivided
 #
 # cracks: both images are 8-bit RGB PNGs (the renderer's); background is
 # exactly black (0, 0, 0), which no surface of data/blocker.scene reaches
@@ -291,7 +309,99 @@ def shadow_share(scene, x):
     return near, len(sub)
 
 
+def ref_grid(path):
+    """Reference elements by surface and grid index (gi, gj)."""
+    grids = {}
+    with open(path) as f:
+        head = f.readline().rstrip('\n').split('\t')
+        col = {name: k for k, name in enumerate(head)}
+        for line in f:
+            v = line.rstrip('\n').split('\t')
+            s = int(v[col['surface']])
+            grids.setdefault(s, {})[(int(v[col['gi']]), int(v[col['gj']]))] = {
+                'c': tuple(float(v[col[k]]) for k in ('cx', 'cy', 'cz')),
+                'a': float(v[col['area']]),
+                'b': sum(float(v[col[k]]) for k in ('r', 'g', 'b')) / 3}
+    return grids
+
+
+def oracle(ref_path, start, target, scene):
+    grids = ref_grid(ref_path)
+    inf = float('inf')
+
+    def cells(g, i, j, n):
+        return [g[(x, y)] for x in range(i, i + n) for y in range(j, j + n)]
+
+    def leaf_error(g, i, j, n):
+        c = cells(g, i, j, n)
+        area = sum(r['a'] for r in c)
+        mean = sum(r['a'] * r['b'] for r in c) / area
+        return sum(r['a'] * (r['b'] - mean) ** 2 for r in c)
+
+    def merge(tables):
+        """Least error with k leaves over several independent subtrees."""
+        acc = {0: (0.0, ())}
+        for t in tables:
+            new = {}
+            for k1, (e1, w1) in acc.items():
+                for k2, (e2, _) in t.items():
+                    if e1 + e2 < new.get(k1 + k2, (inf,))[0]:
+                        new[k1 + k2] = (e1 + e2, w1 + (k2,))
+            acc = new
+        return acc
+
+    def node(g, i, j, n, memo):
+        # memo[(i, j, n)]: k -> (error, children's k or None for a leaf)
+        best = {1: (leaf_error(g, i, j, n), None)}
+        if n > 1:
+            m = n // 2
+            kids = [(i + a * m, j + b * m, m) for a in (0, 1) for b in (0, 1)]
+            split = merge([node(g, *k, memo) for k in kids])
+            for k, (e, w) in split.items():
+                if e < best.get(k, (inf,))[0]:
+                    best[k] = (e, w)
+        memo[(i, j, n)] = best
+        return best
+
+    def leaves(g, i, j, n, k, memo, level, out):
+        e, w = memo[(i, j, n)][k]
+        if w is None:
+            c = cells(g, i, j, n)
+            area = sum(r['a'] for r in c)
+            out.append({'c': tuple(sum(r['c'][d] * r['a'] for r in c) / area for d in range(3)),
+                        'a': area, 'level': level})
+            return
+        m = n // 2
+        for (a, b), kk in zip([(0, 0), (0, 1), (1, 0), (1, 1)], w):
+            leaves(g, i + a * m, j + b * m, m, kk, memo, level + 1, out)
+
+    roots, total_area = [], 0.0
+    for s, g in sorted(grids.items()):
+        size = max(i for i, _ in g) + 1
+        if size % start or max(j for _, j in g) + 1 != size:
+            sys.exit('adaptive_rms.py: the reference is not a square grid %d divides' % start)
+        n = size // start
+        total_area += sum(r['a'] for r in g.values())
+        for I in range(start):
+            for J in range(start):
+                memo = {}
+                roots.append((g, I * n, J * n, n, memo, node(g, I * n, J * n, n, memo)))
+    whole = merge([r[5] for r in roots])
+    bound = target ** 2 * total_area
+    k = min(k for k, (e, _) in whole.items() if e <= bound * (1 + 1e-12))
+    tree = []
+    for (g, i, j, n, memo, _), kk in zip(roots, whole[k][1]):
+        leaves(g, i, j, n, kk, memo, 0, tree)
+    near, sub = shadow_share(scene, tree)
+    return k, math.sqrt(whole[k][0] / total_area), near, sub
+
+
 def main():
+    if len(sys.argv) == 5 and sys.argv[1] == 'oracle':
+        start, target = sys.argv[3].split(':')
+        k, r, near, sub = oracle(sys.argv[2], int(start), float(target), sys.argv[4])
+        print('%d %.10g %.4f %d %d' % (k, r, near / sub if sub else 0.0, near, sub))
+        return
     if len(sys.argv) != 4 or sys.argv[1] not in ('rms', 'smooth', 'shadow', 'cracks', 'seams'):
         sys.exit('usage: adaptive_rms.py rms|smooth REF.tsv X.tsv|X.ply | shadow SCENE X.tsv'
                  ' | cracks A.png B.png')
