@@ -356,9 +356,9 @@ typedef struct rad_solve_options {
     int subdivide_by_error;     /* 0 (default): the threshold bounds the
                                    difference itself (Cohen et al. 1988,
                                    section 4); 1: the difference times the
-                                   element's side over its starting element's
-                                   side, 2^-level (splits ranked by their gain
-                                   in the area-weighted RMS error) */
+                                   element's side over the largest splittable
+                                   patch's (splits ranked by their gain in
+                                   the area-weighted RMS error) */
 } rad_solve_options;
 
 RAD_API void rad_solve_options_init(rad_solve_options *opt);

@@ -9,9 +9,9 @@
 # Usage: scripts/figures-adaptive.sh RADIOSITY DATADIR OUTDIR
 #
 # Blocker: the receiver (z = 1) and the blocker's lower face seen from below
-#          and aside, adaptive from 4x4 (threshold 0.07, depth 3; the run of
-#          tests/adaptive.sh), beside the uniform 16x16 mesh whose error it
-#          beats.
+#          and aside, adaptive from 4x4 (--subdivide-test error, threshold
+#          0.0102, depth 3; the run of tests/adaptive.sh), beside the uniform
+#          16x16 mesh whose error it beats.
 # Cornell: adaptive from 3x3 per quad (default threshold 0.1, depth 3),
 #          converged to 1e-3 of the emitted power; the exposure is set by
 #          hand because the lamp is 10 to 50 times brighter than the walls.
@@ -42,9 +42,9 @@ figure() { # figure FILE CAPTION COMMAND...
 
 view="--eye 0.5,-0.5,0.05 --at 0.5,0.5,0.75 --up 0,0,1 --fov 70 --width $size --height $size"
 # shellcheck disable=SC2086
-figure adaptive-blocker.png "Blocker, adaptive from 4x4 (Cohen et al. 1988, sec. 4): the receiver above, the blocker's lower face below; elements split where the radiosity differs from a neighbour's by more than 7% of the brightest reflected radiosity, down to 1/8 of a patch" \
+figure adaptive-blocker.png "Blocker, adaptive from 4x4 (Cohen et al. 1988, sec. 4): the receiver above, the blocker's lower face below; elements split where the radiosity differs from a neighbour's by more than about 1% of the brightest reflected radiosity times the ratio of the element's side to a patch's (--subdivide-test error), down to 1/8 of a patch; 508 elements" \
   "$radiosity" render "$data/blocker.scene" --solver progressive --adaptive --mesh 4x4 \
-  --subdivide-threshold 0.07 --max-depth 3 --edges $view
+  --subdivide-test error --subdivide-threshold 0.0102 --max-depth 3 --edges $view
 # shellcheck disable=SC2086
 figure adaptive-blocker-uniform.png "Blocker, uniform 16x16 (LU), for comparison: a larger area-weighted RMS error against a 32x32 reference than the adaptive mesh, with more elements (tests/adaptive.sh)" \
   "$radiosity" render "$data/blocker.scene" --mesh 16x16 --edges $view

@@ -20,9 +20,10 @@
  *          small: on data/blocker.scene it needed 736 elements for the
  *          area-weighted RMS error the scene-relative test reaches with
  *          667 (tests/adaptive.sh).
- *          With opt->subdivide_by_error the bound is T Bmax_b 2^l for a
- *          leaf of level l: the difference is weighted by the leaf's side
- *          h relative to its starting element's, |B_j - B_k| h/H.  Why:
+ *          With opt->subdivide_by_error the bound is T Bmax_b sqrt(A0 /
+ *          A_j), A0 the area of the largest starting element that can
+ *          split: the difference is weighted by the leaf's side h
+ *          relative to that element's, |B_j - B_k| h/H.  Why:
  *          B varying linearly with gradient g across a square of side h
  *          has variance g^2 h^2 / 12 about its mean, so the element's
  *          share of the squared area-weighted RMS (Cohen et al. 1988,
@@ -31,11 +32,14 @@
  *          the neighbour difference.  A bound on the difference alone
  *          evens out g h (every element as far from its neighbours), the
  *          weighted one evens out the gain of a split, which is what
- *          spends a given number of elements best on this error: on
- *          data/blocker.scene it reaches the uniform 16 x 16 mesh's RMS
- *          with about 540 elements where the plain test needs about 700
- *          (tests/adaptive.sh, which also computes the best any quadtree
- *          can do).  The test is run again on the new
+ *          spends a given number of elements best on this error (h is
+ *          the side itself, not the level, as surfaces start with
+ *          elements of different sizes).  On data/blocker.scene it
+ *          reaches the uniform 16 x 16 mesh's RMS with 508 elements,
+ *          the plain test with 556, the best quadtree with 439; under a
+ *          small lamp's sharp shadow 400, 460 and 319 (tests/adaptive.sh,
+ *          which computes the best any quadtree can do).
+ *          The test is run again on the new
  *          leaves until none exceeds T or all are at depth D, so one shot
  *          can refine a shadow edge to the finest level.
  *   split  j's four children become leaves.  Each child c receives from
@@ -106,8 +110,21 @@ static void test_scale(rad_adapt_state *s, double scale[NB])
     }
 }
 
-/* Is leaf j to be split: some edge neighbour differs by more than T. */
-static int wants_split(rad_adapt_state *s, int j, const double scale[NB])
+/* The area of the error test: the largest starting element that can split. */
+static double test_area(const rad_adapt_state *s)
+{
+    double A0 = 0;
+    for (int p = 0; p < s->np; p++) {
+        const rad_element *e = &s->a->mesh.elements[s->a->root[p]];
+        if (s->a->splits[e->surface])
+            A0 = fmax(A0, e->area);
+    }
+    return A0;
+}
+
+/* Is leaf j to be split: some edge neighbour differs by more than T
+ * (A0: the area the error test weights against, test_area). */
+static int wants_split(rad_adapt_state *s, int j, const double scale[NB], double A0)
 {
     const rad_adapt_nodes *a = s->a;
     const int surf = a->mesh.elements[j].surface;
@@ -115,9 +132,9 @@ static int wants_split(rad_adapt_state *s, int j, const double scale[NB])
     int x0, y0, w;
     if (!a->splits[surf] || a->level[j] >= a->depth)
         return 0;
-    /* the bound on |B_j - B_k|: T, or T 2^level with subdivide_by_error */
-    const double T = ldexp(s->opt->subdivide_threshold,
-                           s->opt->subdivide_by_error ? a->level[j] : 0);
+    /* the bound on |B_j - B_k|: T, or T sqrt(A0 / A_j) with subdivide_by_error */
+    const double T = s->opt->subdivide_threshold *
+                     (s->opt->subdivide_by_error ? sqrt(A0 / a->mesh.elements[j].area) : 1);
     rad_adapt_box(a, j, &x0, &y0, &w);
     for (int side = 0; side < 4; side++) {
         /* the cells outside the side: a row (sides 0, 2) or a column (1, 3) */
@@ -204,9 +221,10 @@ static rad_status split_round(rad_adapt_state *s, unsigned char *mark, int *any)
     int k = 0;
     double scale[NB];
     *any = 0;
+    const double A0 = test_area(s);
     test_scale(s, scale);
     for (int j = 0; j < s->nn; j++)
-        mark[j] = s->leaf[j] && wants_split(s, j, scale);
+        mark[j] = s->leaf[j] && wants_split(s, j, scale, A0);
     for (int j = 0; j < s->nn; j++) {
         if (!mark[j])
             continue;

@@ -270,9 +270,9 @@ typedef struct cli_solve {
     "      --subdivide-test difference|error  --adaptive: what T bounds: the\n"\
     "                          difference itself (default, the paper's test)\n"\
     "                          or the difference times the element's side\n" \
-    "                          over its starting element's, 2^-level (error:\n"\
-    "                          the area-weighted RMS error per element\n"    \
-    "                          evened out; fewer elements for the same RMS)\n"\
+    "                          over the largest patch's (error: what each\n"  \
+    "                          split gains in area-weighted RMS error evened\n"\
+    "                          out; fewer elements for the same RMS)\n"      \
     "      --tolerance T       jacobi, gauss-seidel, cg, progressive: stop when a\n"\
     "                          bound on the relative error of B is below T\n"   \
     "                          (q/(1-q) times the last change, q the contraction\n"\
