@@ -17,7 +17,11 @@
  * The snapshots are the paper's figures 2-5 (sorted_ambient at 1, 2, 24,
  * 100 steps) and 8 (every method at 2), each with, on request, its
  * pseudo-colour error picture (errcolour.c) and the element table of the
- * radiosity it shows, so that what a picture claims can be checked.
+ * radiosity it shows, so that what a picture claims can be checked
+ * (progress_snap.c writes them).  With --adaptive the shooting methods
+ * run with adaptive subdivision and gathering is left out
+ * (progress_adaptive.c: the table, the plot and the summary here skip
+ * its column).
  */
 #include <config.h>
 
