@@ -44,6 +44,12 @@
  * `--adaptive` is `--matrix none` (auto and none are accepted, dense is
  * a usage error).
  *
+ * The watcher (rad_solve_adaptive_watch): `radiosity progress --adaptive`
+ * follows the run step by step through a callback given the nodes, the
+ * leaves and B after each shot and its subdivision (and at step 0), as
+ * the race follows the non-adaptive shooter; it may end the run early.
+ * The shooting loop is this one in both cases.
+ *
  * The report.  The energy balance is computed after convergence from
  * fresh factors on the final leaves, for each patch P and leaf j:
  *     H_j = sum_P F_jP Bbar_P                          (incident radiosity)
@@ -232,15 +238,32 @@ static int emitters_have_shot(const rad_adapt_state *s)
     return 1;
 }
 
-/* Shoot and subdivide until converged. */
-static rad_status iterate(rad_adapt_state *s, const double emitted[NB], int *steps)
+typedef struct watcher {
+    rad_adapt_watch_fn fn;      /* may be NULL */
+    void *user;
+} watcher;
+
+/* Show the watcher the state after `step` steps; non-zero: it ends the solve. */
+static int watch(const rad_adapt_state *s, const watcher *w, int step, const double U[NB],
+                 int done)
+{
+    if (!w->fn)
+        return 0;
+    const rad_adapt_view v = {s->a, s->leaf, s->B, step, {U[0], U[1], U[2]}, done};
+    return w->fn(w->user, &v);
+}
+
+/* Shoot and subdivide until converged (or the watcher has seen enough). */
+static rad_status iterate(rad_adapt_state *s, const double emitted[NB], const watcher *w,
+                          int *steps)
 {
     const rad_solve_options *o = s->opt;
     double U[NB];
     int next = 0;
     rad_status st = RAD_OK;
     unshot(s, U);
-    while (st == RAD_OK && !converged(U, emitted, o->tolerance)) {
+    int stop = watch(s, w, 0, U, converged(U, emitted, o->tolerance));
+    while (st == RAD_OK && !stop && !converged(U, emitted, o->tolerance)) {
         double shot;
         if (*steps == o->max_iterations)
             return rad_fail(s->err, RAD_ERR_NOCONV,
@@ -259,6 +282,8 @@ static rad_status iterate(rad_adapt_state *s, const double emitted[NB], int *ste
         if (st == RAD_OK && o->progress && *steps % 64 == 0 &&
             o->progress(o->progress_user, "shoot", done_fraction(U, emitted, o->tolerance), 1))
             st = rad_fail(s->err, RAD_ERR_INVALID, "interrupted");
+        if (st == RAD_OK)
+            stop = watch(s, w, *steps, U, converged(U, emitted, o->tolerance));
     }
     return st;
 }
@@ -329,11 +354,21 @@ rad_status rad_solve_adaptive(const rad_mesh *m, const rad_ff_options *ff,
                               const rad_solve_options *opt, rad_adapt_out *out,
                               rad_solve_report *rep, rad_ff_stats *ffst, rad_error *err)
 {
+    return rad_solve_adaptive_watch(m, ff, opt, NULL, NULL, out, rep, ffst, err);
+}
+
+rad_status rad_solve_adaptive_watch(const rad_mesh *m, const rad_ff_options *ff,
+                                    const rad_solve_options *opt, rad_adapt_watch_fn watch_fn,
+                                    void *watch_user, rad_adapt_out *out,
+                                    rad_solve_report *rep, rad_ff_stats *ffst, rad_error *err)
+{
     rad_adapt_nodes a;
     rad_adapt_state s;
     rad_solve_report local;
+    const watcher w = {watch_fn, watch_user};
     int steps = 0;
-    memset(out, 0, sizeof *out);
+    if (out)
+        memset(out, 0, sizeof *out);
     memset(&s, 0, sizeof s);
     if (!rep)
         rep = &local;
@@ -346,16 +381,17 @@ rad_status rad_solve_adaptive(const rad_mesh *m, const rad_ff_options *ff,
     report_init(rep, &a);
     st = state_init(&s, &a, ff, opt, err);
     if (st == RAD_OK)
-        st = iterate(&s, rep->emitted, &steps);
+        st = iterate(&s, rep->emitted, &w, &steps);
     rep->sweeps = steps;
-    if (st == RAD_OK)
+    if (st == RAD_OK && out)
         st = balance(&s, rep);
     if (s.row && ffst)
         rad_ffrow_stats(s.row, ffst, &rep->row_sum_min, &rep->row_sum_max);
-    if (st == RAD_OK)
+    if (st == RAD_OK && out)
         st = rad_adapt_leaf_mesh(&a, s.leaf, s.B, &out->mesh, &out->B, &out->Bv, &out->level,
                                  err);
-    out->splits = s.splits;
+    if (out)
+        out->splits = s.splits;
     if (st == RAD_OK && opt->progress)
         opt->progress(opt->progress_user, "shoot", 1, 1);
     state_free(&s);

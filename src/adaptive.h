@@ -7,6 +7,7 @@
 #ifndef RAD_ADAPTIVE_H
 #define RAD_ADAPTIVE_H
 
+#include "adaptnodes.h"
 #include "radiosity.h"
 
 /* What an adaptive solve hands back: the conforming mesh of its leaves
@@ -30,5 +31,35 @@ rad_status rad_solve_adaptive(const rad_mesh *m, const rad_ff_options *ff,
                               const rad_solve_options *opt, rad_adapt_out *out,
                               rad_solve_report *rep, rad_ff_stats *ffst, rad_error *err);
 void rad_adapt_out_free(rad_adapt_out *out);
+
+/* The state of an adaptive solve as a watcher sees it, at step 0 (B = E,
+ * the starting leaves) and after each shot and its subdivision: every node
+ * a run may make (adaptnodes.h; the same numbering in every run over the
+ * same starting mesh and depth), which are leaves now, B of every node
+ * (nodes x RAD_BANDS, column-major; meaningful on leaves), the unshot
+ * power sum_P A_P |dB_P| per band, and whether the solve's convergence
+ * test holds here (it then ends after this call).  Valid during the call
+ * only. */
+typedef struct rad_adapt_view {
+    const rad_adapt_nodes *nodes;
+    const unsigned char *leaf;
+    const double *B;
+    int step;
+    double unshot[RAD_BANDS];
+    int converged;
+} rad_adapt_view;
+
+/* Called with each step's view; return non-zero to end the solve there
+ * (RAD_OK: the watcher keeps its own reason). */
+typedef int (*rad_adapt_watch_fn)(void *user, const rad_adapt_view *view);
+
+/* rad_solve_adaptive with a watcher (may be NULL) called at every step,
+ * the way `progress` follows the non-adaptive solver step by step.  With
+ * out NULL nothing is built at the end (no leaf mesh, no energy balance):
+ * the watcher has seen what it wanted. */
+rad_status rad_solve_adaptive_watch(const rad_mesh *m, const rad_ff_options *ff,
+                                    const rad_solve_options *opt, rad_adapt_watch_fn watch,
+                                    void *watch_user, rad_adapt_out *out,
+                                    rad_solve_report *rep, rad_ff_stats *ffst, rad_error *err);
 
 #endif /* RAD_ADAPTIVE_H */

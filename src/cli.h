@@ -315,6 +315,10 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg);
 /* Options that contradict each other or that the chosen solver would
  * ignore: 0, or 2 (printed). */
 int cli_solve_check(const cli_solve *s);
+/* --adaptive, --subdivide-threshold, --max-depth, --subdivide-test into
+ * so (cli_adaptive.c; *given_option set by the last three): 0 handled, 1
+ * not one of them, 2 usage error (printed). */
+int cli_adaptive_option(rad_solve_options *so, int *given_option, int opt, const char *arg);
 /* Load the scene and apply --mesh: 0, or 1 (printed). */
 int cli_run_load(cli_run *run, cli_solve *s, const char *path);
 /* The outputs the solve options ask for (--report, --elements,

@@ -17,7 +17,11 @@
  * The snapshots are the paper's figures 2-5 (sorted_ambient at 1, 2, 24,
  * 100 steps) and 8 (every method at 2), each with, on request, its
  * pseudo-colour error picture (errcolour.c) and the element table of the
- * radiosity it shows, so that what a picture claims can be checked.
+ * radiosity it shows, so that what a picture claims can be checked
+ * (progress_snap.c writes them).  With --adaptive the shooting methods
+ * run with adaptive subdivision and gathering is left out
+ * (progress_adaptive.c: the table, the plot and the summary here skip
+ * its column).
  */
 #include <config.h>
 
@@ -29,9 +33,9 @@
 #include "cli.h"
 #include "plotxy.h"
 #include "ffrow.h"
-#include "errcolour.h"
+#include "progress_adaptive.h"
+#include "progress_snap.h"
 #include "progressive.h"
-#include "radiosity/export.h"
 #include "radiosity/render.h"
 #include "rmserror.h"
 
@@ -74,7 +78,14 @@ typedef struct progress_args {
     int plot_linear;            /* --plot-axis linear */
     int plot_axis_given;
     int plot_normalised;        /* --plot-normalised */
+    progress_adaptive adaptive; /* --adaptive and its options */
 } progress_args;
+
+/* The first method of the table: --adaptive leaves gathering out. */
+static int first_method(const progress_args *a)
+{
+    return a->adaptive.solve.adaptive ? RAD_RACE_SHOOTING : RAD_RACE_GATHERING;
+}
 
 static void help(void)
 {
@@ -134,6 +145,7 @@ static void help(void)
            "                          radiosity it shows as an element table (the\n"
            "                          format of 'solve --elements')\n"
            CLI_EXPOSURE_FROM_HELP
+           PROGRESS_ADAPTIVE_HELP
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
@@ -142,6 +154,7 @@ static void help(void)
            "  radiosity progress --mesh 3x3 --snapshots 24 data/cornell-box.scene\n"
            "  radiosity progress --mesh 3x3 --snapshots-at 1,2,24,100 --snapshot-prefix fig data/cornell-box.scene\n"
            "  radiosity progress --matrix none --mesh 5x5 --steps 100 data/goral1984-cube.scene\n"
+           "  radiosity progress --adaptive --mesh 4x4 --snapshots 20 --snapshot-elements data/blocker.scene\n"
            "\n"
            "A regular file is written to a temporary beside it and renamed at the end:\n"
            "a failed or interrupted run leaves the old file whole; a device or FIFO is\n"
@@ -241,141 +254,29 @@ static int parse_option(progress_args *a, int opt, const char *arg)
             }
         cli_error("--matrix takes none, dense or auto, not '%s'", arg);
         return 2;
-    default:
-        return cli_common_option(&a->common, opt, arg);
+    default: {
+        const int r = progress_adaptive_option(&a->adaptive, opt, arg);
+        return r != 1 ? r : cli_common_option(&a->common, opt, arg);
+    }
     }
 }
 
-/* ---- snapshots ------------------------------------------------------------ */
+/* ---- snapshots (progress_snap.c) ------------------------------------------ */
 
+/* The fixed mesh's snapshots: its vertex radiosity smoothed from B. */
 typedef struct snap_ctx {
+    progress_snap snap;
     const rad_mesh *mesh;
-    const char *prefix;
-    rad_render_options ropt;
     double *Bv;
-    const double *Bref;         /* the converged solution (--error-images) */
-    double *field;              /* n x RAD_BANDS: the error colours */
-    int error_images, elements;
-    rad_error err;
-    int failed;
+    const double *Bref;         /* the converged solution */
 } snap_ctx;
-
-static int write_png(FILE *out, const void *img)
-{
-    rad_error err;
-    if (rad_image_write_png(img, out, &err) != RAD_OK) {
-        cli_error_rec(&err);
-        return -1;
-    }
-    return 0;
-}
-
-/* A snapshot's element table: the mesh and the radiosity shown. */
-typedef struct snap_table {
-    const rad_mesh *mesh;
-    const double *B;
-} snap_table;
-
-static int write_elements(FILE *out, const void *ctx)
-{
-    const snap_table *t = ctx;
-    return rad_export_elements(out, t->mesh, t->B);
-}
-
-/* PREFIX-METHOD-STEP[SUFFIX] into path[4096] (SUFFIX ".png", "-error.png"
- * or ".tsv"): 0, or 1 when it does not fit. */
-static int snapshot_path(char *path, const char *prefix, int method, int step,
-                         const char *suffix)
-{
-    const int len = snprintf(path, 4096, "%s-%s-%06d%s", prefix, rad_race_name(method), step,
-                             suffix);
-    return len < 0 || len >= 4096;
-}
-
-/* Every snapshot goes beside the first: the directory, and the first
- * step's picture, error picture and table, checked for each method
- * before the work (as every other output is), so a missing one is
- * not found after the dense fill.  0, or 1 (printed). */
-static int snapshots_check(const progress_args *a)
-{
-    char path[4096];
-    if (a->race.snapshot_every <= 0 && a->race.nsnapshot_at <= 0)
-        return 0;
-    const char *prefix = a->prefix ? a->prefix : "progress";
-    for (int m = 0; m < RAD_RACE_METHODS; m++) {
-        if (snapshot_path(path, prefix, m, MAX_STEPS, "-error.png")) {
-            cli_error("--snapshot-prefix '%.60s...' makes paths of more than 4095 bytes",
-                      prefix);
-            return 1;
-        }
-        /* the picture, and its error picture and table when asked for */
-        const char *const suffix[3] = {".png", a->error_images ? "-error.png" : NULL,
-                                       a->snapshot_elements ? ".tsv" : NULL};
-        for (int k = 0; k < 3; k++) {
-            if (!suffix[k])
-                continue;
-            snapshot_path(path, prefix, m, a->race.nsnapshot_at ? a->race.snapshot_at[0] : 0,
-                          suffix[k]);
-            const cli_output o = {path, write_png, NULL};
-            if (cli_outputs_check(&o, 1))
-                return 1;
-        }
-    }
-    return 0;
-}
-
-/* Draw B (element radiosity, and Bv at the vertices or NULL) with ro to path. */
-static int draw(snap_ctx *c, const double *B, const double *Bv, const rad_render_options *ro,
-                const char *path)
-{
-    rad_render_model model;
-    rad_image img;
-    if (rad_render_model_from_mesh(&model, c->mesh, B, Bv, &c->err) != RAD_OK)
-        return 1;
-    int failed = rad_render(&model, ro, &img, &c->err) != RAD_OK;
-    if (!failed) {
-        failed = cli_write_atomic(path, write_png, &img) != 0;
-        rad_image_free(&img);
-    }
-    rad_render_model_free(&model);
-    return failed;
-}
-
-/* The error picture of B against the converged solution (errcolour.c):
- * flat, at exposure 1, so that the colours come out as their bytes. */
-static int draw_error(snap_ctx *c, const double *B, const char *path)
-{
-    rad_render_options ro = c->ropt;
-    ro.shading = RAD_SHADING_FLAT;
-    ro.exposure = 1;
-    rad_errcolour_field(c->mesh->nelements, B, c->Bref, c->field);
-    return draw(c, c->field, NULL, &ro, path);
-}
 
 static int snapshot(void *user, int method, int step, const double *B)
 {
     snap_ctx *c = user;
-    char path[4096];
-    if (snapshot_path(path, c->prefix, method, step, "-error.png")) { /* snapshots_check saw to it */
-        c->failed = 1;
-        snprintf(c->err.message, sizeof c->err.message, "a snapshot path is too long");
-        return 1;
-    }
     rad_smooth_vertices(c->mesh, B, c->Bv);
-    snapshot_path(path, c->prefix, method, step, ".png");
-    c->failed = draw(c, B, c->Bv, &c->ropt, path);
-    if (!c->failed && c->error_images) {
-        snapshot_path(path, c->prefix, method, step, "-error.png");
-        c->failed = draw_error(c, B, path);
-    }
-    if (!c->failed && c->elements) {
-        const snap_table t = {c->mesh, B};
-        snapshot_path(path, c->prefix, method, step, ".tsv");
-        c->failed = cli_write_atomic(path, write_elements, &t) != 0;
-    }
-    if (c->failed && !c->err.message[0])
-        snprintf(c->err.message, sizeof c->err.message, "the snapshots stop at step %d", step);
-    return c->failed;
+    const progress_frame f = {c->mesh, B, c->Bv, c->Bref, NULL};
+    return progress_snap_write(&c->snap, method, step, &f);
 }
 
 /* ---- outputs --------------------------------------------------------------- */
@@ -383,6 +284,7 @@ static int snapshot(void *user, int method, int step, const double *B)
 typedef struct table_ctx {
     const double *rms, *rms_bands;
     int steps;
+    int first;                  /* the first method written */
 } table_ctx;
 
 static int write_table_to(FILE *out, const void *ctx)
@@ -390,16 +292,16 @@ static int write_table_to(FILE *out, const void *ctx)
     const table_ctx *t = ctx;
     const size_t rows = (size_t)t->steps + 1;
     fprintf(out, "step");
-    for (int m = 0; m < RAD_RACE_METHODS; m++)
+    for (int m = t->first; m < RAD_RACE_METHODS; m++)
         fprintf(out, "\t%s", rad_race_name(m));
-    for (int m = 0; m < RAD_RACE_METHODS; m++)
+    for (int m = t->first; m < RAD_RACE_METHODS; m++)
         fprintf(out, "\t%s_bands", rad_race_name(m));
     fputc('\n', out);
     for (size_t k = 0; k < rows; k++) {
         fprintf(out, "%zu", k);
-        for (int m = 0; m < RAD_RACE_METHODS; m++)
+        for (int m = t->first; m < RAD_RACE_METHODS; m++)
             fprintf(out, "\t%.17g", t->rms[k + (size_t)m * rows]);
-        for (int m = 0; m < RAD_RACE_METHODS; m++)
+        for (int m = t->first; m < RAD_RACE_METHODS; m++)
             fprintf(out, "\t%.17g", t->rms_bands[k + (size_t)m * rows]);
         fputc('\n', out);
     }
@@ -412,6 +314,7 @@ typedef struct plot_ctx {
     const char *title;
     int linear;                 /* a linear error axis, else log */
     double scale;               /* > 0: the curves divided by it */
+    int first;                  /* the first method drawn */
 } plot_ctx;
 
 /* Figure 7 of Cohen et al. 1988: the RMS error of each method against the
@@ -433,7 +336,7 @@ static int write_plot_to(FILE *out, const void *ctx)
     }
     for (size_t k = 0; k < rows; k++)
         x[k] = (double)k;
-    for (int m = 0; m < RAD_RACE_METHODS; m++) {
+    for (int m = p->first; m < RAD_RACE_METHODS; m++) {
         const double *y = p->rms + (size_t)m * rows;
         if (p->scale > 0) { /* normalised: eq. 14 over the converged RMS */
             double *yn = x + rows * (size_t)(1 + m);
@@ -441,13 +344,13 @@ static int write_plot_to(FILE *out, const void *ctx)
                 yn[k] = y[k] / p->scale;
             y = yn;
         }
-        s[m] = (rad_series){label[m], x, y, (int)rows};
+        s[m - p->first] = (rad_series){label[m], x, y, (int)rows};
     }
     const rad_plot_spec spec = {p->title, "shooting or gathering steps",
                                 p->scale > 0 ? "RMS error (eq. 14) / RMS of the converged B"
                                              : "RMS error of B (eq. 14)",
                                 0, !p->linear, PLOT_WIDTH, PLOT_HEIGHT};
-    rad_status st = rad_plot_xy(s, RAD_RACE_METHODS, &spec, out, &err);
+    rad_status st = rad_plot_xy(s, RAD_RACE_METHODS - p->first, &spec, out, &err);
     free(x);
     if (st != RAD_OK) {
         cli_error_rec(&err);
@@ -472,7 +375,7 @@ static int light_sources(const rad_mesh *m, int patches)
 }
 
 static void summary(const rad_mesh *m, const rad_race_options *o, const double *rms,
-                    const int *reached, rad_matrix_mode matrix)
+                    const int *reached, rad_matrix_mode matrix, int first)
 {
     static const char *const label[RAD_RACE_METHODS] = {"gathering", "shooting", "sorted",
                                                         "sorted+ambient"};
@@ -484,15 +387,16 @@ static void summary(const rad_mesh *m, const rad_race_options *o, const double *
             o->patches ? (lights == 1 ? "patch" : "patches") : (lights == 1 ? "element" : "elements"),
             o->steps, rad_matrix_name(matrix));
     fprintf(stderr, "radiosity: RMS error after %d step%s:", k, k == 1 ? "" : "s");
-    for (int j = 0; j < RAD_RACE_METHODS; j++)
-        fprintf(stderr, "%s %s %.6g", j ? "," : "", label[j], rms[(size_t)k + (size_t)j * rows]);
+    for (int j = first; j < RAD_RACE_METHODS; j++)
+        fprintf(stderr, "%s %s %.6g", j > first ? "," : "", label[j],
+                rms[(size_t)k + (size_t)j * rows]);
     fprintf(stderr, "\nradiosity: first step within %g of the %s solution:", o->reach,
             matrix == RAD_MATRIX_NONE ? "converged" : "gauss");
-    for (int j = 0; j < RAD_RACE_METHODS; j++) {
+    for (int j = first; j < RAD_RACE_METHODS; j++) {
         if (reached[j] >= 0)
-            fprintf(stderr, "%s %s %d", j ? "," : "", label[j], reached[j]);
+            fprintf(stderr, "%s %s %d", j > first ? "," : "", label[j], reached[j]);
         else
-            fprintf(stderr, "%s %s > %d", j ? "," : "", label[j], o->steps);
+            fprintf(stderr, "%s %s > %d", j > first ? "," : "", label[j], o->steps);
     }
     fputc('\n', stderr);
 }
@@ -505,7 +409,8 @@ typedef struct pipeline {
                                    without a matrix, the mesh and B converged
                                    by progressive refinement to 1e-12 */
     rad_ffrow *row;             /* matrix-free: the rows and columns */
-    double *rms, *rms_bands, *Bv, *field;
+    progress_adaptive_run ad;   /* --adaptive: res is the sorted run converged */
+    double *rms, *rms_bands, *Bv;
     int reached[RAD_RACE_METHODS];
 } pipeline;
 
@@ -514,8 +419,8 @@ static void pipeline_free(pipeline *p)
     free(p->rms);
     free(p->rms_bands);
     free(p->Bv);
-    free(p->field);
     rad_ffrow_free(p->row);
+    progress_adaptive_run_free(&p->ad);
     rad_result_free(&p->res);
     rad_scene_free(&p->scene);
 }
@@ -541,6 +446,10 @@ static int prepare(progress_args *a, pipeline *p)
     rad_pipeline_options_init(&po);
     cli_progress_attach(&a->common);
     po.ff = a->common.ff;
+    if (a->adaptive.solve.adaptive) {
+        a->matrix = RAD_MATRIX_NONE;
+        return progress_adaptive_prepare(&a->adaptive, &a->common, &p->scene, &p->res, &p->ad);
+    }
     a->matrix = decide_matrix(a, &p->scene);
     if (a->matrix == RAD_MATRIX_NONE) {
         po.solve.solver = RAD_SOLVER_PROGRESSIVE;
@@ -563,13 +472,14 @@ static int prepare(progress_args *a, pipeline *p)
     return 0;
 }
 
-static int race(progress_args *a, pipeline *p)
+/* --steps when not given (2 x the elements; --adaptive: the longer run to
+ * convergence; at least to the last --snapshots-at) and the rms arrays. */
+static int race_arrays(progress_args *a, pipeline *p)
 {
-    rad_error err;
-    snap_ctx sc;
     const int n = p->res.mesh.nelements;
+    const int want = a->adaptive.solve.adaptive ? progress_adaptive_steps(&p->ad, &p->res) : 2 * n;
     if (a->race.steps == 0)
-        a->race.steps = 2 * n < 1 ? 1 : 2 * n > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : 2 * n;
+        a->race.steps = want < 1 ? 1 : want > DEFAULT_STEPS_CAP ? DEFAULT_STEPS_CAP : want;
     const int last = a->race.nsnapshot_at ? a->race.snapshot_at[a->race.nsnapshot_at - 1] : 0;
     if (!a->steps_given && last > a->race.steps)
         a->race.steps = last;
@@ -580,37 +490,56 @@ static int race(progress_args *a, pipeline *p)
         cli_error("out of memory for %d steps", a->race.steps);
         return 1;
     }
-    memset(&sc, 0, sizeof sc);
-    if (a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0) {
-        sc.mesh = &p->res.mesh;
-        sc.prefix = a->prefix ? a->prefix : "progress";
-        rad_render_options_init(&sc.ropt);
-        sc.ropt.camera = p->scene.camera;
-        sc.ropt.exposure = rad_mesh_auto_exposure(&p->res.mesh, p->res.B, a->exposure_from);
-        p->Bv = malloc(sizeof *p->Bv * (size_t)(p->res.mesh.nvertices ? p->res.mesh.nvertices : 1) *
-                       RAD_BANDS);
-        if (!p->Bv) {
-            cli_error("out of memory");
-            return 1;
-        }
-        sc.Bv = p->Bv;
-        sc.Bref = p->res.B;
-        sc.error_images = a->error_images;
-        sc.elements = a->snapshot_elements;
-        if (a->error_images &&
-            !(sc.field = p->field = malloc(sizeof *p->field * (size_t)(n ? n : 1) * RAD_BANDS))) {
-            cli_error("out of memory");
-            return 1;
-        }
-        a->race.snapshot = snapshot;
-        a->race.snapshot_user = &sc;
+    return 0;
+}
+
+static int snapshots_wanted(const progress_args *a)
+{
+    return a->race.snapshot_every > 0 || a->race.nsnapshot_at > 0;
+}
+
+/* The snapshots' files, camera and exposure (the converged solution's),
+ * and for the fixed mesh its callback.  0, or 1 (printed). */
+static int snap_setup(progress_args *a, pipeline *p, snap_ctx *sc)
+{
+    memset(sc, 0, sizeof *sc);
+    if (!snapshots_wanted(a))
+        return 0;
+    sc->snap.prefix = a->prefix ? a->prefix : "progress";
+    rad_render_options_init(&sc->snap.ropt);
+    sc->snap.ropt.camera = p->scene.camera;
+    sc->snap.ropt.exposure = rad_mesh_auto_exposure(&p->res.mesh, p->res.B, a->exposure_from);
+    sc->snap.error_images = a->error_images;
+    sc->snap.elements = a->snapshot_elements;
+    if (a->adaptive.solve.adaptive) /* its frames bring their own mesh */
+        return 0;
+    sc->mesh = &p->res.mesh;
+    sc->Bref = p->res.B;
+    sc->Bv = p->Bv = malloc(sizeof *p->Bv * (size_t)(p->res.mesh.nvertices + 1) * RAD_BANDS);
+    if (!p->Bv) {
+        cli_error("out of memory");
+        return 1;
     }
+    a->race.snapshot = snapshot;
+    a->race.snapshot_user = sc;
+    return 0;
+}
+
+static int race(progress_args *a, pipeline *p)
+{
+    rad_error err;
+    snap_ctx sc;
+    if (race_arrays(a, p) || snap_setup(a, p, &sc))
+        return 1;
+    if (a->adaptive.solve.adaptive)
+        return progress_adaptive_race(&a->adaptive, &a->common, &p->ad, &p->res, &a->race,
+                                      snapshots_wanted(a) ? &sc.snap : NULL, p->rms, p->reached);
     a->race.progress = a->common.ff.progress;
     a->race.progress_user = a->common.ff.progress_user;
     const rad_shoot_source src = {p->res.F, p->row};
     if (rad_race_run_source(&p->res.mesh, &src, p->res.B, &a->race, p->rms, p->reached, &err) !=
         RAD_OK) {
-        cli_error_rec(sc.failed ? &sc.err : &err);
+        cli_error_rec(sc.snap.failed ? &sc.snap.err : &err);
         return 1;
     }
     return 0;
@@ -638,15 +567,18 @@ static int outputs(const progress_args *a, const pipeline *p)
     const char *name = strrchr(p->scene.filename, '/');
     snprintf(title, sizeof title, "Progressive refinement (Cohen et al. 1988, fig. 7): %s",
              name ? name + 1 : p->scene.filename);
-    const table_ctx t = {p->rms, p->rms_bands, a->race.steps};
+    const table_ctx t = {p->rms, p->rms_bands, a->race.steps, first_method(a)};
     const plot_ctx pl = {p->rms, a->race.steps, title, a->plot_linear,
-                         a->plot_normalised ? converged_rms(&p->res.mesh, p->res.B) : 0};
+                         a->plot_normalised ? converged_rms(&p->res.mesh, p->res.B) : 0,
+                         first_method(a)};
     const cli_output o[2] = {{a->output ? a->output : "-", write_table_to, &t},
                              {a->plot, write_plot_to, &pl}};
     if (cli_outputs_write(o, 2))
         return 1;
     if (!a->common.quiet) {
-        summary(&p->res.mesh, &a->race, p->rms, p->reached, a->matrix);
+        summary(&p->res.mesh, &a->race, p->rms, p->reached, a->matrix, first_method(a));
+        if (a->adaptive.solve.adaptive)
+            progress_adaptive_summary(&p->ad, &p->res);
         if (pl.scale > 0)
             fprintf(stderr, "radiosity: --plot-normalised divides by the RMS of the converged "
                             "solution, %.17g\n", pl.scale);
@@ -672,7 +604,8 @@ static int run(progress_args *a, const char *path)
     }
     const cli_output out[2] = {{a->output, write_table_to, NULL},
                                {a->plot, write_plot_to, NULL}};
-    if (cli_outputs_check(out, 2) || snapshots_check(a) || prepare(a, &p) || race(a, &p) || outputs(a, &p))
+    if (cli_outputs_check(out, 2) || progress_snap_check(a->prefix ? a->prefix : "progress", &a->race, a->error_images,
+                           a->snapshot_elements, first_method(a)) || prepare(a, &p) || race(a, &p) || outputs(a, &p))
         goto done;
     status = 0;
 done:
@@ -698,6 +631,10 @@ int cmd_progress(int argc, char **argv)
         {"snapshot-elements", no_argument, NULL, OPT_SNAPSHOT_ELEMENTS},
         {"plot-axis", required_argument, NULL, OPT_PLOT_AXIS},
         {"plot-normalised", no_argument, NULL, OPT_PLOT_NORMALISED},
+        {"adaptive", no_argument, NULL, OPT_ADAPTIVE},
+        {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD},
+        {"max-depth", required_argument, NULL, OPT_MAX_DEPTH},
+        {"subdivide-test", required_argument, NULL, OPT_SUBDIVIDE_TEST},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     progress_args a;
@@ -705,6 +642,7 @@ int cmd_progress(int argc, char **argv)
     memset(&a, 0, sizeof a);
     cli_common_init(&a.common);
     rad_race_options_init(&a.race);
+    progress_adaptive_init(&a.adaptive);
     a.race.steps = 0; /* the default depends on the mesh */
     while ((opt = getopt_long(argc, argv, "ho:q", longopts, NULL)) != -1) {
         if (opt == OPT_HELP || opt == 'h') {
@@ -714,7 +652,8 @@ int cmd_progress(int argc, char **argv)
         if (parse_option(&a, opt, optarg) != 0)
             return cli_usage_hint("progress");
     }
-    if (cli_common_check(&a.common))
+    if (cli_common_check(&a.common) ||
+        progress_adaptive_check(&a.adaptive, &a.common, a.race.patches, a.matrix))
         return cli_usage_hint("progress");
     if ((a.prefix || a.error_images || a.snapshot_elements || a.exposure_from_given) &&
         a.race.snapshot_every == 0 && a.race.nsnapshot_at == 0) {

@@ -108,31 +108,10 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
         }
         return 0;
     case OPT_ADAPTIVE:
-        s->solve.adaptive = 1;
-        return 0;
     case OPT_SUBDIVIDE_THRESHOLD:
-        s->given_adaptive_option = 1;
-        if (cli_parse_double(arg, &s->solve.subdivide_threshold) ||
-            !(s->solve.subdivide_threshold >= 0) || !isfinite(s->solve.subdivide_threshold)) {
-            cli_error("--subdivide-threshold takes a number >= 0, not '%s'", arg);
-            return 2;
-        }
-        return 0;
     case OPT_MAX_DEPTH:
-        s->given_adaptive_option = 1;
-        if (cli_parse_int(arg, 0, 8, &s->solve.max_depth)) {
-            cli_error("--max-depth takes a whole number from 0 to 8, not '%s'", arg);
-            return 2;
-        }
-        return 0;
     case OPT_SUBDIVIDE_TEST:
-        s->given_adaptive_option = 1;
-        if (strcmp(arg, "difference") == 0 || strcmp(arg, "error") == 0) {
-            s->solve.subdivide_by_error = arg[0] == 'e';
-            return 0;
-        }
-        cli_error("--subdivide-test takes difference or error, not '%s'", arg);
-        return 2;
+        return cli_adaptive_option(&s->solve, &s->given_adaptive_option, opt, arg);
     case OPT_MATRIX:
         s->given_matrix = 1;
         for (int m = RAD_MATRIX_AUTO; m <= RAD_MATRIX_NONE; m++)

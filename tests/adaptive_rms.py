@@ -422,4 +422,5 @@ def main():
         print('%.4f %d %d' % (near / sub if sub else 0.0, near, sub))
 
 
-main()
+if __name__ == '__main__':  # importable: tests/progress_adaptive.py reads PNGs with it
+    main()

@@ -9,7 +9,11 @@
  * bilinear formula); and a hand-computed mesh of one split element beside
  * a whole one, whose vertex radiosities follow from the rules of
  * adaptmesh.h by hand (below).  Comparisons are exact: every value is a
- * mean of a few small integers or halves.
+ * mean of a few small integers or halves.  That mesh, taken as a converged
+ * solution, projected onto every node (adaptproject.c): the split
+ * element's node takes the mean of its children's 1..4 (equal areas:
+ * 2.5), the whole one's children its 10; leaves that leave a hole are
+ * refused.
  */
 #include <config.h>
 
@@ -18,6 +22,7 @@
 
 #include "adaptmesh.h"
 #include "adaptnodes.h"
+#include "adaptproject.h"
 #include "radiosity.h"
 #include "tap.h"
 
@@ -81,6 +86,33 @@ static void test_nodes(const rad_mesh *m)
  *     (1,1) (1+2+3+4)/4 = 2.5; (0,2) 3; (1,2) 3.5; (2,2) (4+10)/2 = 7;
  *     (4,0) = (4,2) = 10;
  *   hanging (2,1), halfway along element 1's left side: (6 + 7)/2 = 6.5. */
+/* The leaf mesh o (B, level) of test_leaf_mesh as a converged solution. */
+static void test_project(const rad_adapt_nodes *a, const rad_mesh *o, const double *B,
+                         const int *level, const int kids[4])
+{
+    const int n = a->mesh.nelements;
+    double Rn[30];
+    rad_error err;
+    if (rad_adapt_project(a, o, B, level, Rn, &err) != RAD_OK) {
+        tap_ok(0, "project: %s", err.message);
+        return;
+    }
+    int ok = Rn[0] == 2.5 && Rn[1] == 10;
+    for (int k = 0; k < 4; k++) {
+        ok &= Rn[kids[k]] == k + 1;
+        ok &= Rn[rad_adapt_child(a, 1, k)] == 10; /* below a final leaf */
+    }
+    for (int b = 1; b < 3; b++)
+        for (int j = 0; j < n; j++)
+            ok &= Rn[j + b * n] == Rn[j];
+    tap_ok(ok, "projected: the split node the mean of its children (2.5), the whole "
+               "one's children its value (10), the leaves their own");
+    rad_mesh holed = *o; /* the last child missing: a hole */
+    holed.nelements = o->nelements - 1;
+    tap_ok(rad_adapt_project(a, &holed, B, level, Rn, &err) == RAD_ERR_INVALID,
+           "leaves with a hole are refused: %s", err.message);
+}
+
 static void test_leaf_mesh(const rad_mesh *m)
 {
     rad_adapt_nodes a;
@@ -137,6 +169,7 @@ static void test_leaf_mesh(const rad_mesh *m)
     tap_ok(o.vertices[idx[4]].x == 1 && o.vertices[idx[4]].y == 0.5 &&
                o.vertices[idx[0]].x == 1 && o.vertices[idx[0]].y == 0,
            "counter-clockwise from its first corner, the hanging vertex last (on the left side)");
+    test_project(&a, &o, B, level, kids);
     free(B);
     free(Bv);
     free(level);
