@@ -38,4 +38,58 @@ for case in "default 1e-6" "reference 1e-9"; do
     ok $? "box in a box, $1, --mesh $mesh: rows of F sum to 1 within $2 (min $lo, max $hi)"
   done
 done
+# Two blocks standing on the floor of a closed room, the floor cut into
+# rectangles around their footprints (as the closed Cornell box's is):
+# seen from the walls their shadows overlap, and where a vertex of one
+# block passes an edge of the other the hidden part has a kink that only
+# a cut of the domain along that event plane lets the rules see
+# (src/occdomain.c, split_two_blockers).  Without it rows missed 1 by
+# 1.6e-6 in default mode and 1.9e-8 in reference mode.
+cat > "$work/two.scene" <<'SCENE'
+material w reflect 0.5 emit 1
+quad w 0 0 0  1 0 0  1 1 0  0 1 0
+quad w 0 0 1  0 1 1  1 1 1  1 0 1
+quad w 0 1 0  1 1 0  1 1 1  0 1 1
+quad w 0 0 0  0 1 0  0 1 1  0 0 1
+quad w 1 0 0  1 0 1  1 1 1  1 1 0
+quad w 0 0 0  0 0 1  0.2 0 1  0.2 0 0
+quad w 0.2 0 0  0.2 0 0.3  0.4 0 0.3  0.4 0 0
+quad w 0.2 0 0.5  0.2 0 1  0.4 0 1  0.4 0 0.5
+quad w 0.4 0 0  0.4 0 1  0.6 0 1  0.6 0 0
+quad w 0.6 0 0  0.6 0 0.5  0.8 0 0.5  0.8 0 0
+quad w 0.6 0 0.7  0.6 0 1  0.8 0 1  0.8 0 0.7
+quad w 0.8 0 0  0.8 0 1  1 0 1  1 0 0
+quad w 0.2 0.5 0.3  0.2 0.5 0.5  0.4 0.5 0.5  0.4 0.5 0.3
+quad w 0.4 0 0.3  0.4 0.5 0.3  0.4 0.5 0.5  0.4 0 0.5
+quad w 0.4 0 0.5  0.4 0.5 0.5  0.2 0.5 0.5  0.2 0 0.5
+quad w 0.2 0 0.5  0.2 0.5 0.5  0.2 0.5 0.3  0.2 0 0.3
+quad w 0.2 0 0.3  0.2 0.5 0.3  0.4 0.5 0.3  0.4 0 0.3
+quad w 0.6 0.3 0.5  0.6 0.3 0.7  0.8 0.3 0.7  0.8 0.3 0.5
+quad w 0.8 0 0.5  0.8 0.3 0.5  0.8 0.3 0.7  0.8 0 0.7
+quad w 0.8 0 0.7  0.8 0.3 0.7  0.6 0.3 0.7  0.6 0 0.7
+quad w 0.6 0 0.7  0.6 0.3 0.7  0.6 0.3 0.5  0.6 0 0.5
+quad w 0.6 0 0.5  0.6 0.3 0.5  0.8 0.3 0.5  0.8 0 0.5
+SCENE
+
+# rows SCENE MODE MESH TOL WHAT: solve, and rows of F within TOL of 1
+rows() {
+  "$RADIOSITY" solve -q --accuracy "$2" --mesh "$3" --report "$work/r.json" "$1"
+  ok $? "$5, $2, --mesh $3: solve"
+  lo=$(sed -n 's/^ *"row_sum_min": *\([^,]*\),*$/\1/p' "$work/r.json")
+  hi=$(sed -n 's/^ *"row_sum_max": *\([^,]*\),*$/\1/p' "$work/r.json")
+  close_to "$lo" 1 "$4" && close_to "$hi" 1 "$4"
+  ok $? "$5, $2, --mesh $3: rows of F sum to 1 within $4 (min $lo, max $hi)"
+}
+rows "$work/two.scene" default 1x1 1e-6 "two blocks on the floor"
+rows "$work/two.scene" reference 1x1 1e-9 "two blocks on the floor"
+
+# The closed Cornell box (issue 20), on meshes that make check can afford:
+# default within its 1e-6 (it missed by 6.8e-6 on this mesh before the
+# two-blocker cuts; 1.8e-7 after).  Reference mode on the 2x2 mesh missed
+# by 3.7e-7 before and 3.2e-8 after: the issue's 1e-9 is not met yet (the
+# rest comes from events of three edges, which no plane cuts), so the
+# check holds what the cuts gained.
+closed="${top_srcdir}/data/cornell-box-closed.scene"
+rows "$closed" default 3x3 1e-6 "closed Cornell box"
+rows "$closed" reference 2x2 1e-7 "closed Cornell box"
 done_testing
