@@ -64,8 +64,10 @@ static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
  * |q - sum qc|.  With the collapsed rules (occrule.c): the rules of
  * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
- * and node_raise goes on from there.  Where hidden(x) is analytic on the
- * triangle the rule's error falls geometrically with the order, so each
+ * and node_raise goes on from there (the three rules take 13
+ * evaluations, not 14: orders 1 and 3 share their centre point, and order
+ * 5 reuses it; occrule.c).  Where hidden(x) is analytic on the triangle
+ * the rule's error falls geometrically with the order, so each
  * difference bounds the error of the better rule; the larger of the last
  * two stands in for the case where two rules agree by chance (seen: Q2
  * and Q3 within 4e-9 of each other and both 5e-8 off, on a triangle
@@ -74,9 +76,10 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     if (c->order >= 2) {
         double q1, q2, q3;
-        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1) ||
-            occ_rule_order(sp, c, 2, t->p, t->area, &q2) ||
-            occ_rule_order(sp, c, 3, t->p, t->area, &q3))
+        t->center = NAN;
+        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1, &t->center) ||
+            occ_rule_order(sp, c, 2, t->p, t->area, &q2, NULL) ||
+            occ_rule_order(sp, c, 3, t->p, t->area, &q3, &t->center))
             return -1;
         t->q = q2;
         t->qc[0] = q3;
@@ -111,7 +114,7 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     double q;
-    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q))
+    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q, &t->center))
         return -1;
     double d = fabs(q - t->qc[0]);
     t->stalled = !(d <= 0.5 * t->dlast);

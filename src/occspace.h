@@ -85,6 +85,8 @@ typedef struct tri_node {
     double dlast;               /* the last difference of two orders */
     int order;                  /* the collapsed rule's order (occrule.c), or 0 */
     int stalled;                /* raising the order did not help: split */
+    double center;              /* hidden(x) at the point the odd orders
+                                   share, or NaN (occrule.c) */
 } tri_node;
 
 /* A list of polygons sharing one vertex array. */
@@ -185,7 +187,7 @@ int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 /* occrule.c: the integral of hidden(x) over one triangle */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
-                   double *q);
+                   double *q, double *center);
 
 /* occhidden.c: how much of a pair is hidden */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
