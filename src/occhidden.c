@@ -150,13 +150,20 @@ static double leaf_value(const tri_node *t)
 }
 
 /* The first leaves: the fan triangles of the pieces of sp->dom and
- * sp->umb, evaluated; *nleaf their count.  0, or -1. */
+ * sp->umb, evaluated; *nleaf their count.  0, or -1.  With c->direct the
+ * integrand visible(x) is 0 on sp->umb's pieces (each inside an umbra:
+ * one blocker hides all of the inner element from every point of it), so
+ * they add nothing and are not evaluated; they do say that something is
+ * hidden. */
 static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
 {
     const polyset *sets[2] = {&sp->dom, &sp->umb};
+    const int nsets = c->direct ? 1 : 2;
+    if (c->direct && sp->umb.np > 0)
+        sp->any_hidden = 1;
     if (occ_grow_node(&sp->node, &sp->capnode, sp->dom.nv + sp->umb.nv))
         return -1;
-    for (int set = 0; set < 2; set++)
+    for (int set = 0; set < nsets; set++)
         for (int k = 0; k < sets[set]->np; k++) {
             const rad_vec3 *o = sets[set]->v + sets[set]->first[k];
             int no = sets[set]->first[k + 1] - sets[set]->first[k];
