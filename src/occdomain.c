@@ -12,7 +12,8 @@
  * still sees past a silhouette, becomes a piece of its own instead of
  * falling between evaluation points.  Pieces inside an umbra are kept
  * apart (known to be fully hidden there).  In default and reference
- * modes the pieces are also cut along every event plane (split_events).
+ * modes the pieces are also cut along the event planes (split_events),
+ * everywhere or only where their events happen (occevent.c).
  */
 #include <config.h>
 
@@ -225,12 +226,15 @@ static int dom_spheres(occ_space *sp)
 }
 
 /* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses (their spheres in sp->pcen / prad, kept up to date).  A
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date), but
+ * with a wedge w (not NULL) and c->events OCC_SPLIT_WEDGES only where the
+ * plane's chord of the piece meets w.  A
  * piece whose bounding sphere the plane misses is copied without looking
  * at its vertices: with a K-gon blocker there are O(K) planes and O(K^2)
  * pieces, most of them far from any one plane (issue 20: reference mode
  * slowed as K^4).  Returns 0 or -1. */
-static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
+static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
+                     const occ_wedge *w)
 {
     occ_ps_clear(&sp->db);
     for (int k = 0; k < sp->dom.np; k++) {
@@ -246,7 +250,8 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
             return -1;
         poly_distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
         poly_settle_signs(sp->d, n, &lo, &hi);
-        if (lo >= 0 || hi <= 0) {
+        if (lo >= 0 || hi <= 0 ||
+            (w && c->events == OCC_SPLIT_WEDGES && occ_event_misses(w, p, sp->d, n, c->snap))) {
             if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
@@ -275,14 +280,20 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
     return 0;
 }
 
-/* Split sp->dom along the planes through an edge of e and a vertex of f. */
+/* Split sp->dom along the planes through an edge of e and a vertex of f
+ * (kind OCC_EVENT_EV when e is the blocker, OCC_EVENT_VE when e is the
+ * inner element: their wedges, occevent.c). */
 static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e, int ne,
-                             const rad_vec3 *f, int nf)
+                             const rad_vec3 *f, int nf, int kind)
 {
     for (int k = 0; k < ne; k++)
         for (int l = 0; l < nf && sp->dom.np > 0; l++) {
             rad_vec3 nrm;
-            if (poly_edge_plane(e, ne, k, f[l], &nrm) && split_dom(sp, c, nrm, e[k]))
+            occ_wedge w;
+            if (!poly_edge_plane(e, ne, k, f[l], &nrm))
+                continue;
+            occ_event_wedge(&w, kind, nrm, e[k], e[(k + 1) % ne], f[l]);
+            if (split_dom(sp, c, nrm, e[k], &w))
                 return -1;
         }
     return 0;
@@ -323,7 +334,7 @@ static int split_two_blockers(occ_space *sp, const pair_ctx *c)
                     if (occ_grow_d(&sp->d, &sp->capd, c->nt))
                         return -1;
                     poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
-                    if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k]))
+                    if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL))
                         return -1;
                 }
         }
@@ -342,7 +353,10 @@ static int split_two_blockers(occ_space *sp, const pair_ctx *c)
  * (split_two_blockers).  Inside the pieces hidden(x) is then smooth but
  * for events of three edges, the high-order rules of occrule.c converge
  * fast, and their error estimate can be trusted; a penumbra narrower
- * than the spacing of the points no longer hides between them. */
+ * than the spacing of the points no longer hides between them.  With
+ * c->events OCC_SPLIT_WEDGES a piece is cut only where the plane's event
+ * of a blocker and the inner element happens (occevent.c); the blocker's
+ * own plane and the two-blocker planes are always cut. */
 static int split_events(occ_space *sp, const pair_ctx *c)
 {
     if (dom_spheres(sp))
@@ -350,8 +364,9 @@ static int split_events(occ_space *sp, const pair_ctx *c)
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
-        if (split_dom(sp, c, sp->bn[b], p[0]) || split_edge_vertex(sp, c, p, np, c->t, c->nt) ||
-            split_edge_vertex(sp, c, c->t, c->nt, p, np))
+        if (split_dom(sp, c, sp->bn[b], p[0], NULL) ||
+            split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV) ||
+            split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE))
             return -1;
     }
     return split_two_blockers(sp, c);

@@ -21,8 +21,9 @@
  *
  * The integral runs over the domain of occdomain.c (the outer element's
  * part of the blockers' penumbras, cut along their umbras and, but in
- * classic mode, along every event plane): on each piece's fan of
- * triangles hidden(x) is integrated by the rules of occrule.c, the
+ * classic mode, along the event planes: orient_integral): on each
+ * piece's fan of triangles hidden(x) is integrated by the rules of
+ * occrule.c, the
  * triangle with the largest estimate has its rule's order raised or is
  * split into its four midpoint children, until the sum of estimates is
  * below the pair's tolerance (global adaptive subdivision as in QUADPACK's
@@ -64,8 +65,10 @@ static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
  * |q - sum qc|.  With the collapsed rules (occrule.c): the rules of
  * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
- * and node_raise goes on from there.  Where hidden(x) is analytic on the
- * triangle the rule's error falls geometrically with the order, so each
+ * and node_raise goes on from there (the three rules take 13
+ * evaluations, not 14: orders 1 and 3 share their centre point, and order
+ * 5 reuses it; occrule.c).  Where hidden(x) is analytic on the triangle
+ * the rule's error falls geometrically with the order, so each
  * difference bounds the error of the better rule; the larger of the last
  * two stands in for the case where two rules agree by chance (seen: Q2
  * and Q3 within 4e-9 of each other and both 5e-8 off, on a triangle
@@ -74,9 +77,10 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     if (c->order >= 2) {
         double q1, q2, q3;
-        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1) ||
-            occ_rule_order(sp, c, 2, t->p, t->area, &q2) ||
-            occ_rule_order(sp, c, 3, t->p, t->area, &q3))
+        t->center = NAN;
+        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1, &t->center) ||
+            occ_rule_order(sp, c, 2, t->p, t->area, &q2, NULL) ||
+            occ_rule_order(sp, c, 3, t->p, t->area, &q3, &t->center))
             return -1;
         t->q = q2;
         t->qc[0] = q3;
@@ -111,7 +115,7 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     double q;
-    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q))
+    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q, &t->center))
         return -1;
     double d = fabs(q - t->qc[0]);
     t->stalled = !(d <= 0.5 * t->dlast);
@@ -147,13 +151,20 @@ static double leaf_value(const tri_node *t)
 }
 
 /* The first leaves: the fan triangles of the pieces of sp->dom and
- * sp->umb, evaluated; *nleaf their count.  0, or -1. */
+ * sp->umb, evaluated; *nleaf their count.  0, or -1.  With c->direct the
+ * integrand visible(x) is 0 on sp->umb's pieces (each inside an umbra:
+ * one blocker hides all of the inner element from every point of it), so
+ * they add nothing and are not evaluated; they do say that something is
+ * hidden. */
 static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
 {
     const polyset *sets[2] = {&sp->dom, &sp->umb};
+    const int nsets = c->direct ? 1 : 2;
+    if (c->direct && sp->umb.np > 0)
+        sp->any_hidden = 1;
     if (occ_grow_node(&sp->node, &sp->capnode, sp->dom.nv + sp->umb.nv))
         return -1;
-    for (int set = 0; set < 2; set++)
+    for (int set = 0; set < nsets; set++)
         for (int k = 0; k < sets[set]->np; k++) {
             const rad_vec3 *o = sets[set]->v + sets[set]->first[k];
             int no = sets[set]->first[k + 1] - sets[set]->first[k];
@@ -187,14 +198,15 @@ static void sum_leaves(const occ_space *sp, int nleaf, double *v, double *err)
  * estimated error *error.  When `adaptive`, the leaf with the largest
  * estimate is split while the sum of the estimates exceeds
  *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
- * and fewer than max_leaves triangles are in use: `whole` is the
+ * and fewer than max_leaves triangles are in use (*met: it ended below
+ * tau, or was not adaptive): `whole` is the
  * unoccluded integral S / (2 pi), so whole - value is the visible part,
  * the occluded A_o F_ot itself, and the target is relative to it down to
  * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target
  * relative to the unoccluded value let a nearly hidden pair's error reach
  * 1e4 times its value). */
 static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel, double whole,
-                     int max_leaves, double max_evals, double *value, double *error)
+                     int max_leaves, double max_evals, double *value, double *error, int *met)
 {
     double v = 0, err = 0;
     int nleaf = 0;
@@ -219,6 +231,8 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
     }
     *value = v;
     *error = err;
+    *met = !(adaptive && sp->any_hidden && sp->any_visible &&
+             err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole));
     return 0;
 }
 
@@ -295,8 +309,54 @@ typedef struct orient_result {
     int direct;
 } orient_result;
 
+/* The integral over c's domain (occdomain.c) of the outer element co (no
+ * vertices) into res, with `budget` times the mode's budgets of leaves
+ * and evaluations; *met as for integrate. */
+static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const rad_vec3 *co,
+                           int no, double s, double rel, double budget, orient_result *res,
+                           int *met)
+{
+    *met = 1;
+    sp->any_hidden = sp->any_visible = 0;
+    c->direct = 0;
+    if (occ_support_domain(sp, c, co, no))
+        return -1;
+    if (sp->dom.np == 0 && sp->umb.np == 0)
+        return 0; /* no point of the outer element sees anything hidden */
+    double dom_area = 0;
+    for (int k = 0; k < sp->dom.np; k++)
+        dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
+    for (int k = 0; k < sp->umb.np; k++)
+        dom_area += poly_area(sp->umb.v + sp->umb.first[k], sp->umb.first[k + 1] - sp->umb.first[k]);
+    if (dom_area < (1 - 1e-9) * poly_area(co, no))
+        sp->any_visible = 1; /* points outside the domain see all of the inner one */
+    else if (sp->dom.np > 0 && o->accuracy != RAD_ACCURACY_CLASSIC)
+        c->direct = res->direct = 1; /* the domain is all of it: integrate visible(x) */
+    else if (sp->dom.np == 0) {
+        res->hidden = 1; /* every point is in some blocker's umbra */
+        res->value = s / (2 * RAD_PI);
+        return 0;
+    }
+    const int adaptive = o->accuracy != RAD_ACCURACY_CLASSIC;
+    const int leaves =
+        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE : OCC_LEAVES_DEFAULT;
+    const double evals =
+        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_EVALS_REFERENCE : OCC_EVALS_DEFAULT;
+    return integrate(sp, c, adaptive, rel, s / (2 * RAD_PI), (int)(budget * leaves),
+                     budget * evals, &res->value, &res->error, met);
+}
+
 /* The integral of the hidden part with element i (outer_i) or j as the
- * outer element. */
+ * outer element.  In default and reference modes a pair with few
+ * blockers is first integrated on a domain cut only where each event
+ * happens (OCC_SPLIT_WEDGES, occevent.c: a third of the pieces on the
+ * Cornell box, each with its own evaluations), on a part of the budget; a
+ * pair that misses its target there is done again, with the whole budget,
+ * on the domain cut along every event plane (OCC_SPLIT_ALL).  The extra
+ * cuts are no events of one blocker, but they refine where events of
+ * three edges (which no plane describes, and whose kinks the estimate (2)
+ * can miss) are likely: with more blockers, or where the first try
+ * struggled, every plane is cut. */
 static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
                            const rad_ff_poly *pj, int outer_i, double s, double rel,
                            orient_result *res)
@@ -318,40 +378,28 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.nb = kept;
     c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
-    c.events = o->accuracy != RAD_ACCURACY_CLASSIC;
+    c.events = o->accuracy == RAD_ACCURACY_CLASSIC ? 0
+               : kept <= OCC_WEDGE_BLOCKERS        ? OCC_SPLIT_WEDGES
+                                                   : OCC_SPLIT_ALL;
     c.order = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ORDER_REFERENCE
               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
                                                     : 0;
-    sp->any_hidden = sp->any_visible = 0;
-    if (occ_support_domain(sp, &c, co, no))
+    int met;
+    double before = sp->evals;
+    double budget = c.events == OCC_SPLIT_WEDGES ? OCC_WEDGE_BUDGET : 1;
+    if (domain_integral(o, sp, &c, co, no, s, rel, budget, res, &met))
         return -1;
-    if (sp->dom.np == 0 && sp->umb.np == 0)
-        return 0; /* no point of the outer element sees anything hidden */
-    double dom_area = 0;
-    for (int k = 0; k < sp->dom.np; k++)
-        dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
-    for (int k = 0; k < sp->umb.np; k++)
-        dom_area += poly_area(sp->umb.v + sp->umb.first[k], sp->umb.first[k + 1] - sp->umb.first[k]);
-    c.direct = 0;
-    if (dom_area < (1 - 1e-9) * poly_area(co, no))
-        sp->any_visible = 1; /* points outside the domain see all of the inner one */
-    else if (sp->dom.np > 0 && o->accuracy != RAD_ACCURACY_CLASSIC)
-        c.direct = res->direct = 1; /* the domain is all of it: integrate visible(x) */
-    else if (sp->dom.np == 0) {
-        res->hidden = 1; /* every point is in some blocker's umbra */
-        res->value = s / (2 * RAD_PI);
-        return 0;
+    if (!met && c.events == OCC_SPLIT_WEDGES) {
+        double spent = sp->evals - before;
+        sp->evals = before; /* a fresh budget; the count keeps both tries */
+        memset(res, 0, sizeof *res);
+        c.events = OCC_SPLIT_ALL;
+        if (domain_integral(o, sp, &c, co, no, s, rel, 1, res, &met))
+            return -1;
+        sp->evals += spent;
     }
-    const int adaptive = o->accuracy != RAD_ACCURACY_CLASSIC;
-    const int leaves =
-        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE : OCC_LEAVES_DEFAULT;
-    const double evals =
-        o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_EVALS_REFERENCE : OCC_EVALS_DEFAULT;
-    if (integrate(sp, &c, adaptive, rel, s / (2 * RAD_PI), leaves, evals, &res->value,
-                  &res->error))
-        return -1;
-    res->hidden = sp->any_hidden;
-    res->visible = sp->any_visible;
+    res->hidden |= sp->any_hidden;
+    res->visible |= sp->any_visible;
     if (res->hidden && !res->visible)
         res->value = s / (2 * RAD_PI);
     return 0;

@@ -48,9 +48,14 @@ static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double are
     return 0;
 }
 
-/* The collapsed k x k Gauss product rule (1). */
+/* The collapsed k x k Gauss product rule (1).  Rules of odd order share
+ * one point, u = v = 1/2 (the node 0 of each): with `center` not NULL
+ * its value is taken from *center when that is not NaN, else stored
+ * there, so that a triangle's rules of orders 1, 3 and 5 evaluate it once
+ * (the point is computed by the same expression, so the value is the
+ * same bit for bit). */
 static int rule_collapsed(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p,
-                          double area, double *q)
+                          double area, double *q, double *center)
 {
     const double *t = gl_nodes(k), *w = gl_weights(k);
     const rad_vec3 e1 = v3_sub(p[1], p[0]), e2 = v3_sub(p[2], p[1]);
@@ -62,8 +67,13 @@ static int rule_collapsed(occ_space *sp, const pair_ctx *c, int k, const rad_vec
             const double v = 0.5 * (1 + t[b]);
             rad_vec3 x = v3_add(p[0], v3_add(v3_scale(e1, u), v3_scale(e2, u * v)));
             double h;
-            if (occ_hidden_at(sp, c, x, &h))
+            const int mid = center && t[a] == 0 && t[b] == 0;
+            if (mid && !isnan(*center))
+                h = *center;
+            else if (occ_hidden_at(sp, c, x, &h))
                 return -1;
+            else if (mid)
+                *center = h;
             row += w[b] * h;
         }
         sum += w[a] * u * row;
@@ -73,15 +83,17 @@ static int rule_collapsed(occ_space *sp, const pair_ctx *c, int k, const rad_vec
     return 0;
 }
 
-/* The collapsed rule of order k (1 <= k <= RAD_GAUSS_MAX). */
+/* The collapsed rule of order k (1 <= k <= RAD_GAUSS_MAX); center as
+ * for rule_collapsed (may be NULL). */
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
-                   double *q)
+                   double *q, double *center)
 {
-    return rule_collapsed(sp, c, k, p, area, q);
+    return rule_collapsed(sp, c, k, p, area, q, center);
 }
 
 /* The integral of hidden(x) over triangle p (area `area`) by c's rule. */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)
 {
-    return c->order >= 2 ? rule_collapsed(sp, c, c->order, p, area, q) : rule3(sp, c, p, area, q);
+    return c->order >= 2 ? rule_collapsed(sp, c, c->order, p, area, q, NULL)
+                         : rule3(sp, c, p, area, q);
 }

@@ -45,11 +45,18 @@
 #define OCC_LEAVES_DEFAULT 256
 #define OCC_LEAVES_REFERENCE 2048
 /* ... and the most evaluations of hidden(x) it may spend on a pair: a
- * pair whose integrand has kinks that no plane cut (events of two
- * blockers) converges only as h^2 there, and stops here with its estimate
+ * pair whose integrand has kinks that no plane cut (events of three
+ * edges, two of them blockers') converges only as h^2 there, and stops here with its estimate
  * (which the fill then reports as an unmet promise) */
 #define OCC_EVALS_DEFAULT 1e4
 #define OCC_EVALS_REFERENCE 1e5
+/* A pair with at most OCC_WEDGE_BLOCKERS blockers is first integrated on
+ * a domain cut only where each event happens (occevent.c), with
+ * OCC_WEDGE_BUDGET of the budgets above; if it misses its target there,
+ * it is done again on the domain cut along every event plane, with the
+ * whole budgets (occhidden.c, orient_integral). */
+#define OCC_WEDGE_BLOCKERS 4
+#define OCC_WEDGE_BUDGET 0.25
 
 struct rad_occ {
     rad_occ_mode mode;
@@ -85,6 +92,8 @@ typedef struct tri_node {
     double dlast;               /* the last difference of two orders */
     int order;                  /* the collapsed rule's order (occrule.c), or 0 */
     int stalled;                /* raising the order did not help: split */
+    double center;              /* hidden(x) at the point the odd orders
+                                   share, or NaN (occrule.c) */
 } tri_node;
 
 /* A list of polygons sharing one vertex array. */
@@ -146,7 +155,10 @@ typedef struct pair_ctx {
     int nt;
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
     double snap, sliver;        /* distance and area tolerances */
-    int events;                 /* split the domain along every event plane */
+    int events;                 /* split the domain along the event planes:
+                                   0 not at all (classic), OCC_SPLIT_ALL along
+                                   each plane, OCC_SPLIT_WEDGES only where its
+                                   event happens (occevent.c) */
     int direct;                 /* evaluate visible(x), not hidden(x) (occpoint.c) */
     int order;                  /* the rule on a triangle (occrule.c): 0 the
                                    3-point rule, k >= 2 the k x k collapsed
@@ -154,6 +166,19 @@ typedef struct pair_ctx {
 } pair_ctx;
 
 
+
+enum { OCC_SPLIT_ALL = 1, OCC_SPLIT_WEDGES = 2 };
+
+/* Where on an event plane the event happens (occevent.c): the event
+ * plane's part inside n half-spaces, each with inward unit normal m[h]
+ * through a[h]. */
+typedef struct occ_wedge {
+    rad_vec3 m[3], a[3];
+    int n;
+} occ_wedge;
+
+enum { OCC_EVENT_EV, OCC_EVENT_VE };  /* blocker edge and inner vertex, or
+                                          inner edge and blocker vertex */
 
 /* ---- across the files (each described where it is defined) ------------ */
 
@@ -179,13 +204,18 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
 
+/* occevent.c: the wedges of the event planes */
+void occ_event_wedge(occ_wedge *w, int kind, rad_vec3 nrm, rad_vec3 e0, rad_vec3 e1,
+                     rad_vec3 f);
+int occ_event_misses(const occ_wedge *w, const rad_vec3 *p, const double *d, int n, double tol);
+
 /* occpoint.c: hidden(x) */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
 /* occrule.c: the integral of hidden(x) over one triangle */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
-                   double *q);
+                   double *q, double *center);
 
 /* occhidden.c: how much of a pair is hidden */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,

@@ -17,11 +17,11 @@
  * the plane as far as they can tell, and all are set to 0 (*lo = *hi = 0).
  * Every polygon the occlusion code clips goes through this first, so that
  * its output has at most n + 1 vertices and vertex counts cannot grow with
- * each cut (issue 20: a noisy polygon grew past its n + 1 buffer). */
-void poly_settle_signs(double *d, int n, double *lo, double *hi)
+ * each cut (issue 20: a noisy polygon grew past its n + 1 buffer).
+ * poly_settle_signs (polygon.h) calls this when the distances have both
+ * signs. */
+void poly_settle_signs_both(double *d, int n, double *lo, double *hi)
 {
-    if (*lo >= 0 || *hi <= 0)
-        return; /* one side: no change of sign at all */
     int changes = 0, first = 0, last = 0;
     for (int k = 0; k < n; k++) {
         int s = d[k] > 0 ? 1 : d[k] < 0 ? -1 : 0;

@@ -137,7 +137,14 @@ static inline int poly_edge_plane(const rad_vec3 *p, int n, int k, rad_vec3 q, r
  * more than twice round the polygon, they are round-off: all are set to 0
  * and *lo = *hi = 0 (the polygon is on the plane as far as they can
  * tell), so that a clip under POLY_TOUCH_KEEPS has at most n + 1 vertices. */
-void poly_settle_signs(double *d, int n, double *lo, double *hi);
+void poly_settle_signs_both(double *d, int n, double *lo, double *hi);
+static inline void poly_settle_signs(double *d, int n, double *lo, double *hi)
+{
+    if (*lo >= 0 || *hi <= 0)
+        return; /* one side: no change of sign at all (inline: the usual
+                   case in the occlusion code's hottest loops) */
+    poly_settle_signs_both(d, n, lo, hi);
+}
 
 /* Area (half the length of Newell's vector, vec.h). */
 double poly_area(const rad_vec3 *p, int n);
