@@ -25,9 +25,9 @@
  * Accuracy modes: classic evaluates the pieces once (two levels of the
  * 3-point rule on each fan triangle) and stops.  Default and reference
  * cut the pieces along the event planes of each blocker (occdomain.c,
- * split_events: where the events happen (occevent.c) for a pair with few
- * blockers, along every plane for the others and for a pair that misses
- * its target so; occhidden.c, orient_integral), integrate with collapsed Gauss rules of rising order
+ * split_events; in default mode only where the events happen
+ * (occevent.c) for a pair with few blockers that meets its target so;
+ * occhidden.c, orient_integral), integrate with collapsed Gauss rules of rising order
  * (occrule.c; up to OCC_ORDER_DEFAULT / OCC_ORDER_REFERENCE) and split
  * triangles where the order does not help, until the estimated error is
  * below half the mode's promise (1e-6, 1e-9) of the occluded A_o F_ot

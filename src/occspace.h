@@ -50,7 +50,8 @@
  * (which the fill then reports as an unmet promise) */
 #define OCC_EVALS_DEFAULT 1e4
 #define OCC_EVALS_REFERENCE 1e5
-/* A pair with at most OCC_WEDGE_BLOCKERS blockers is first integrated on
+/* In default mode a pair with at most OCC_WEDGE_BLOCKERS blockers is
+ * first integrated on
  * a domain cut only where each event happens (occevent.c), with
  * OCC_WEDGE_BUDGET of the budgets above; if it misses its target there,
  * it is done again on the domain cut along every event plane, with the
