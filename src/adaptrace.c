@@ -142,17 +142,6 @@ static void leaves_to_nodes(run *r, const rad_adapt_view *v)
         }
 }
 
-/* Is step k one the caller wants a snapshot of? (as progressive.c) */
-static int snapshot_due(const rad_race_options *o, int k)
-{
-    if (o->snapshot_every > 0 && k % o->snapshot_every == 0)
-        return 1;
-    for (int j = 0; j < o->nsnapshot_at; j++)
-        if (o->snapshot_at[j] == k)
-            return 1;
-    return 0;
-}
-
 /* The leaf mesh of the view with the displayed B, to the snapshot callback. */
 static int show(run *r, const rad_adapt_view *v, int m, int k)
 {
@@ -192,7 +181,7 @@ static int record(run *r, const rad_adapt_view *v, int m)
             o->rms_bands[at] = eb;
         if (r->reached[m] < 0 && most <= o->reach * r->scale)
             r->reached[m] = k;
-        if (r->ar->snapshot && snapshot_due(o, k) && show(r, v, m, k))
+        if (r->ar->snapshot && rad_race_snapshot_due(o, k) && show(r, v, m, k))
             return 1;
     }
     return 0;

@@ -692,11 +692,8 @@ typedef struct race {
     rad_status st;              /* a computed row or column that failed */
 } race;
 
-/* Is step k one the caller wants a snapshot of? */
-static int snapshot_due(const rad_race_options *o, int k)
+int rad_race_snapshot_due(const rad_race_options *o, int k)
 {
-    if (!o->snapshot)
-        return 0;
     if (o->snapshot_every > 0 && k % o->snapshot_every == 0)
         return 1;
     for (int j = 0; j < o->nsnapshot_at; j++)
@@ -717,7 +714,7 @@ static int race_record(const race *rc, int m, int k, const double *B)
         o->rms_bands[at] = rad_rms_bands(&in);
     if (rc->reached[m] < 0 && max_diff(B, rc->Bref, n3) <= o->reach * rc->scale)
         rc->reached[m] = k;
-    if (snapshot_due(o, k) && o->snapshot(o->snapshot_user, m, k, B))
+    if (o->snapshot && rad_race_snapshot_due(o, k) && o->snapshot(o->snapshot_user, m, k, B))
         return 1;
     return 0;
 }

@@ -62,6 +62,9 @@ typedef struct rad_race_options {
 } rad_race_options;
 
 void rad_race_options_init(rad_race_options *opt);
+/* Is step k one of opt's snapshot steps (every snapshot_every, or listed
+ * in snapshot_at)?  Whether there is a snapshot callback is not asked. */
+int rad_race_snapshot_due(const rad_race_options *opt, int k);
 
 /* Run the four methods for opt->steps steps each from B = E against the
  * converged solution Bref (n x RAD_BANDS).  rms is (steps + 1) x
