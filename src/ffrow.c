@@ -339,6 +339,19 @@ static rad_status hemicube_column(rad_ffrow *r, int i, double *to, double *from,
     return RAD_OK;
 }
 
+/* After a parallel loop over pairs: the threads' tallies merged, then
+ * its failure (out of memory) or the first pair whose factor is not
+ * finite (bad >= 0, in row `row` as not_finite names it). */
+static rad_status loop_end(rad_ffrow *r, int failed, int bad, int row, rad_error *err)
+{
+    merge(r);
+    if (failed)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
+    if (bad >= 0)
+        return not_finite(err, bad, row);
+    return RAD_OK;
+}
+
 /* F_ji and F_ij of the pair (i, j) from its contour sum s, as the dense
  * fill writes them: the entry in the column of the lower index, and its
  * mirror by reciprocity (A_i F_ij = A_j F_ji), so that the values are the
@@ -396,13 +409,10 @@ rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_e
                 tally_error(t, s, e, inv_t[i], inv_t[j], promise);
         }
     }
-    merge(r);
-    if (failed)
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
-    if (bad >= 0)
-        return not_finite(err, bad, i);
-    row_sum(r, i, sum);
-    return RAD_OK;
+    rad_status st = loop_end(r, failed, bad, i, err);
+    if (st == RAD_OK)
+        row_sum(r, i, sum);
+    return st;
 }
 
 rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to,
@@ -437,12 +447,7 @@ rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to
                 tally_error(t, s, e, inv_t[i], inv_t[j], promise);
         }
     }
-    merge(r);
-    if (failed)
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
-    if (bad >= 0)
-        return not_finite(err, bad, i);
-    return RAD_OK;
+    return loop_end(r, failed, bad, i, err);
 }
 
 rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
@@ -476,12 +481,7 @@ rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
                 tally_error(t, s, e, inv_p, r->inv_t[j], promise);
         }
     }
-    merge(r);
-    if (failed)
-        return rad_fail(err, RAD_ERR_NOMEM, "out of memory in the form-factor kernel");
-    if (bad >= 0)
-        return not_finite(err, bad, -1 - p);
-    return RAD_OK;
+    return loop_end(r, failed, bad, -1 - p, err);
 }
 
 void rad_ffrow_stats(const rad_ffrow *r, rad_ff_stats *st, double *min_row_sum,

@@ -317,27 +317,35 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
  * edges (one of each blocker and one of the inner element: the lines
  * through three edges form a ruled quadric, not a plane) are still not
  * cut. */
+/* The planes through an edge of blocker a and a vertex of blocker b that
+ * cross the inner element (sp->d holds c->nt distances). */
+static int split_blocker_pair(occ_space *sp, const pair_ctx *c, int a, int b)
+{
+    const rad_vec3 *pa = sp->blkc.v + sp->blkc.first[a];
+    const rad_vec3 *pb = sp->blkc.v + sp->blkc.first[b];
+    const int na = sp->blkc.first[a + 1] - sp->blkc.first[a];
+    const int nb = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    for (int k = 0; k < na; k++)
+        for (int l = 0; l < nb && sp->dom.np > 0; l++) {
+            rad_vec3 nrm;
+            double lo, hi;
+            if (!poly_edge_plane(pa, na, k, pb[l], &nrm))
+                continue;
+            poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
+            if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL))
+                return -1;
+        }
+    return 0;
+}
+
 static int split_two_blockers(occ_space *sp, const pair_ctx *c)
 {
+    if (occ_grow_d(&sp->d, &sp->capd, c->nt))
+        return -1;
     for (int a = 0; a < c->nb && sp->dom.np > 0; a++)
-        for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
-            const rad_vec3 *pa = sp->blkc.v + sp->blkc.first[a];
-            const rad_vec3 *pb = sp->blkc.v + sp->blkc.first[b];
-            int na = sp->blkc.first[a + 1] - sp->blkc.first[a];
-            int nb = sp->blkc.first[b + 1] - sp->blkc.first[b];
-            for (int k = 0; k < na && a != b; k++)
-                for (int l = 0; l < nb && sp->dom.np > 0; l++) {
-                    rad_vec3 nrm;
-                    double lo, hi;
-                    if (!poly_edge_plane(pa, na, k, pb[l], &nrm))
-                        continue;
-                    if (occ_grow_d(&sp->d, &sp->capd, c->nt))
-                        return -1;
-                    poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
-                    if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL))
-                        return -1;
-                }
-        }
+        for (int b = 0; b < c->nb && sp->dom.np > 0; b++)
+            if (a != b && split_blocker_pair(sp, c, a, b))
+                return -1;
     return 0;
 }
 
