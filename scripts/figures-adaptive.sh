@@ -17,18 +17,14 @@
 #          hand because the lamp is 10 to 50 times brighter than the walls.
 set -eu
 
-if [ $# -ne 3 ]; then
-  echo "Usage: $0 RADIOSITY DATADIR OUTDIR" >&2
-  exit 2
-fi
+. "$(dirname "$0")/figlib.sh"
+fig_args "$@"
 radiosity=$1
 data=$2
 out=$3
 size=512
-[ -x "$radiosity" ] || { echo "$0: $radiosity is not an executable" >&2; exit 1; }
 mkdir -p "$out"
 
-html_escape() { printf '%s' "$1" | sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g'; }
 rows=""
 figure() { # figure FILE CAPTION COMMAND...
   file=$1 caption=$2

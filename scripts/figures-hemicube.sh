@@ -10,19 +10,14 @@
 # section for the figures page (scripts/figures.sh) on standard output.
 set -eu
 
-if [ $# -ne 3 ]; then
-  echo "Usage: $0 RADIOSITY DATADIR OUTDIR" >&2
-  exit 2
-fi
+. "$(dirname "$0")/figlib.sh"
+fig_args "$@"
 radiosity=$1
 box=$2/cornell-box.scene
 cube=$2/grey-cube.scene
 out=$3
-[ -x "$radiosity" ] || { echo "$0: $radiosity is not an executable" >&2; exit 1; }
 [ -r "$box" ] && [ -r "$cube" ] || { echo "$0: cannot read $box or $cube" >&2; exit 1; }
 mkdir -p "$out"
-
-html_escape() { printf '%s' "$1" | sed 's/&/\&amp;/g; s/</\&lt;/g; s/>/\&gt;/g; s/"/\&quot;/g'; }
 
 # run ARGS...: the program, or a message naming the command and exit 1
 run() {

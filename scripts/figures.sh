@@ -36,10 +36,8 @@
 #           most).
 set -eu
 
-if [ $# -ne 3 ]; then
-  echo "Usage: $0 RADIOSITY DATADIR OUTDIR" >&2
-  exit 2
-fi
+. "$(dirname "$0")/figlib.sh"
+fig_args "$@"
 radiosity=$1
 data=$2
 scene=$2/goral1984-cube.scene
@@ -47,11 +45,8 @@ out=$3
 size=512
 row=$((size / 2))
 
-[ -x "$radiosity" ] || { echo "$0: $radiosity is not an executable" >&2; exit 1; }
 [ -r "$scene" ] || { echo "$0: cannot read $scene" >&2; exit 1; }
 mkdir -p "$out"
-
-html_escape() { printf '%s' "$1" | sed 's/&/\&amp;/g; s/</\&lt;/g; s/>/\&gt;/g; s/"/\&quot;/g'; }
 
 # The command line as a shell would accept it back (quoting what needs it).
 shell_quote() {
