@@ -315,8 +315,8 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
  * 1e-9, and rows of F missed 1 by up to 8e-6 in default mode (mesh 4x4)
  * and 4e-7 in reference mode (mesh 2x2; issue 20).  Events of three
  * edges (one of each blocker and one of the inner element: the lines
- * through three edges form a ruled quadric, not a plane) are still not
- * cut. */
+ * through three edges form a ruled quadric, not a plane) trace conics on
+ * the outer element; occeee.c cuts them by chords. */
 /* The planes through an edge of blocker a and a vertex of blocker b that
  * cross the inner element (sp->d holds c->nt distances). */
 static int split_blocker_pair(occ_space *sp, const pair_ctx *c, int a, int b)
@@ -358,14 +358,16 @@ static int split_two_blockers(occ_space *sp, const pair_ctx *c)
  * is seen edge on, and a closed solid's silhouette changes from one set
  * of edges to another: the shadow's area has a kink there too), and
  * along the planes where one blocker's vertex passes another's edge
- * (split_two_blockers).  Inside the pieces hidden(x) is then smooth but
- * for events of three edges, the high-order rules of occrule.c converge
- * fast, and their error estimate can be trusted; a penumbra narrower
- * than the spacing of the points no longer hides between them.  With
+ * (split_two_blockers), and by chords along the conics of the events of
+ * three edges (occeee.c).  Inside the pieces hidden(x) is then smooth
+ * (but in the thin lens between a chord and its arc), the high-order
+ * rules of occrule.c converge fast, and their error estimate can be
+ * trusted; a penumbra narrower than the spacing of the points no longer
+ * hides between them.  With
  * c->events OCC_SPLIT_WEDGES a piece is cut only where the plane's event
  * of a blocker and the inner element happens (occevent.c); the blocker's
  * own plane and the two-blocker planes are always cut. */
-static int split_events(occ_space *sp, const pair_ctx *c)
+static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
 {
     if (dom_spheres(sp))
         return -1;
@@ -377,7 +379,9 @@ static int split_events(occ_space *sp, const pair_ctx *c)
             split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE))
             return -1;
     }
-    return split_two_blockers(sp, c);
+    if (split_two_blockers(sp, c))
+        return -1;
+    return occ_split_three_edges(sp, c, o, no);
 }
 
 /* The domain of integration: the outer polygon o cut to the union of the
@@ -420,5 +424,5 @@ int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int 
     t = sp->dom;
     sp->dom = sp->da;
     sp->da = t;
-    return c->events ? split_events(sp, c) : 0;
+    return c->events ? split_events(sp, c, o, no) : 0;
 }

@@ -28,15 +28,15 @@
  * is left whole only when its chord on the event plane lies wholly outside
  * one of them by more than the pair's tolerance: when in doubt, cut.
  *
- * The cuts left out are no events of one blocker, but they did refine
- * the domain where events of three edges (an edge of each of two
- * blockers lined up with one of the inner element, seen from x: the
- * lines through three edges make a ruled quadric, not a plane) leave
- * kinks inside a piece, kinks that the adaptive rule's estimate can miss
- * (the events of two blockers where a vertex of one crosses an edge of
- * the other are planes, and occdomain.c cuts them always).
- * So occhidden.c cuts only the wedges for pairs with few blockers, and
- * cuts every plane again for a pair that misses its target so.
+ * The cuts left out are no events of one blocker.  Before occeee.c cut
+ * the events of three edges (an edge of each of two blockers lined up
+ * with one of the inner element, seen from x), the extra cuts did refine
+ * the domain where those left kinks inside a piece, kinks that the
+ * adaptive rule's estimate can miss; the events of two blockers where a
+ * vertex of one crosses an edge of the other are planes, and occdomain.c
+ * cuts them always.  occhidden.c cuts only the wedges for pairs with few
+ * blockers, and cuts every plane again for a pair that misses its target
+ * so.
  */
 #include <config.h>
 

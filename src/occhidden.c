@@ -353,12 +353,13 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
  * box, each with its own evaluations), on a part of the budget; a
  * pair that misses its target there is done again, with the whole budget,
  * on the domain cut along every event plane (OCC_SPLIT_ALL).  The extra
- * cuts are no events of one blocker, but they refine where events of
- * three edges (which no plane describes, and whose kinks the estimate (2)
- * can miss) are likely: with more blockers, or where the first try
- * struggled, every plane is cut.  Reference mode always cuts every plane:
- * with the wedges only, 38 entries of the 6x6 closed Cornell box moved by
- * more than both runs' estimates, and nothing here says which is right. */
+ * cuts are no events of one blocker, but they refine the domain where
+ * kinks may be left inside a piece (the lens between a chord of occeee.c
+ * and its arc; events its filter judged not to happen): with more
+ * blockers, or where the first try struggled, every plane is cut.
+ * Reference mode always cuts every plane: before occeee.c cut the events
+ * of three edges, 38 entries of the 6x6 closed Cornell box moved by more
+ * than both runs' estimates with the wedges only. */
 static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
                            const rad_ff_poly *pj, int outer_i, double s, double rel,
                            orient_result *res)

@@ -1,0 +1,289 @@
+/* occeee.c -- the events of three edges: where, seen from a point x of
+ * the outer element, the corner where the shadows of two blockers' edges
+ * cross passes an edge of the inner element.  occdomain.c cuts the domain
+ * along these curves too (by chords).
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * An edge e1 of blocker a, an edge e2 of blocker b and an edge e3 of the
+ * inner element lie on lines L_k = a_k + s u_k.  From x, the shadows of
+ * e1 and e2 on the inner plane cross at the point where the one line
+ * through x that meets L1 and L2 (their transversal) meets that plane; the
+ * union of the two shadows, and so hidden(x), changes its corner
+ * structure where that point crosses e3: where the transversal also meets
+ * L3 (an EEE event: Gigus, Canny & Seidel, IEEE PAMI 13, 1991; Heckbert
+ * 1992 lists them among the discontinuities of the illumination, of
+ * second order like the edge-vertex events).  The lines that meet three
+ * skew lines sweep a ruled quadric (a regulus), so on the outer plane the
+ * event is a conic, not a line: no plane cuts it.
+ *
+ * With n_k = (a_k - x) x u_k the normal of the plane through x and L_k,
+ * the transversal's direction is d = n1 x n2, and it meets L3 when
+ *     g(x) = [a3 - x, d, u3] = 0                                        (1)
+ * ([p, q, r] the triple product).  By (A x B) x (C x D) = [A, B, D] C -
+ * [A, B, C] D,
+ *     d = [a1 - x, u1, u2] (a2 - x) - [a1 - x, u1, a2 - x] u2,
+ * and the terms [a1 - x, u1, a2 - x], [a3 - x, a2 - x, u3] are linear in
+ * x (the x-x term vanishes), so g is a product of linear forms less
+ * another: a quadratic.  Along an edge of a piece it is a quadratic in
+ * the edge's parameter, found exactly from three values; its roots are
+ * where the conic crosses the piece's boundary.
+ *
+ * A piece that the conic crosses is cut along the chord between the first
+ * two crossings (the plane through the chord at right angles to the outer
+ * element).  The kink is then left in the thin lens between chord and
+ * arc: the arc's sagitta is L^2 k / 8 for a chord of length L on a conic
+ * of curvature k, and a second-order kink inside a strip of width w costs
+ * a rule of order p an error of order w^3 instead of the slow convergence
+ * of a kink across the middle of a piece (on the Cornell box, pairs whose
+ * three rules of occhidden.c (2) agreed to 1e-14 were 2e-5 off).
+ *
+ * Only events that happen are cut: somewhere along the arc the transversal
+ * must meet the segments themselves (within a tenth of their length: when
+ * in doubt, cut) and the two blocker edges must lie between x and the
+ * inner edge (happens).  Edges that share an end meet
+ * there, and their event is the plane through that vertex and e3,
+ * which occdomain.c's vertex-edge cuts already follow.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "occspace.h"
+#include "polygon.h"
+#include "vec.h"
+
+/* One line of an event: a point and a direction. */
+typedef struct line3 {
+    rad_vec3 a, u;
+} line3;
+
+static double triple(rad_vec3 p, rad_vec3 q, rad_vec3 r)
+{
+    return v3_dot(p, v3_cross(q, r));
+}
+
+/* The transversal's direction d(x) of (1). */
+static rad_vec3 transversal(const line3 *l, rad_vec3 x)
+{
+    rad_vec3 w1 = v3_sub(l[0].a, x), w2 = v3_sub(l[1].a, x);
+    return v3_sub(v3_scale(w2, triple(w1, l[0].u, l[1].u)),
+                  v3_scale(l[1].u, triple(w1, l[0].u, w2)));
+}
+
+/* g(x) of (1). */
+static double g_at(const line3 *l, rad_vec3 x)
+{
+    return triple(v3_sub(l[2].a, x), transversal(l, x), l[2].u);
+}
+
+/* Where the line x + lambda d comes nearest line q: *lambda and the
+ * parameter *mu on q (0 and 1 at its segment's ends).  0 when parallel. */
+static int meet(rad_vec3 x, rad_vec3 d, const line3 *q, double *lambda, double *mu)
+{
+    rad_vec3 w0 = v3_sub(x, q->a);
+    double A = v3_dot(d, d), B = v3_dot(d, q->u), C = v3_dot(q->u, q->u);
+    double D = v3_dot(d, w0), E = v3_dot(q->u, w0), den = A * C - B * B;
+    if (!(den > 1e-24 * A * C))
+        return 0;
+    *lambda = (B * E - C * D) / den;
+    *mu = (A * E - B * D) / den;
+    return 1;
+}
+
+/* Might the event of l happen on the arc from x0 to x1 (two points of
+ * the conic)?  At x0, the chord's midpoint and x1 the transversal meets
+ * line k at parameter mu_k (0 and 1 at the segment's ends) and at
+ * lambda_k along the line from x; the event happens where every mu_k lies
+ * in [0, 1] and the blocker edges lie between x and the inner edge
+ * (0 < lambda_k / lambda_3 < 1, k = 1, 2).  These move continuously along
+ * the arc, so a range of a quantity over the three points that misses
+ * its interval by more than a tenth (when in doubt, cut) says the event
+ * does not happen there; an arc whose ends are on either side of a
+ * segment is cut. */
+static int happens(const line3 *l, rad_vec3 x0, rad_vec3 x1)
+{
+    const double slack = 0.1;
+    double mlo[3], mhi[3], rlo[2], rhi[2];
+    for (int k = 0; k < 3; k++) {
+        mlo[k] = HUGE_VAL;
+        mhi[k] = -HUGE_VAL;
+    }
+    rlo[0] = rlo[1] = HUGE_VAL;
+    rhi[0] = rhi[1] = -HUGE_VAL;
+    for (int p = 0; p < 3; p++) {
+        rad_vec3 x = p == 0 ? x0 : p == 1 ? v3_lerp(x0, x1, 0.5) : x1;
+        rad_vec3 d = transversal(l, x);
+        double lam[3], mu;
+        if (!(v3_norm(d) > 0))
+            return 1;
+        for (int k = 0; k < 3; k++) {
+            if (!meet(x, d, &l[k], &lam[k], &mu))
+                return 1;
+            mlo[k] = fmin(mlo[k], mu);
+            mhi[k] = fmax(mhi[k], mu);
+        }
+        if (!(lam[2] != 0))
+            return 1;
+        for (int k = 0; k < 2; k++) {
+            rlo[k] = fmin(rlo[k], lam[k] / lam[2]);
+            rhi[k] = fmax(rhi[k], lam[k] / lam[2]);
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        if (mhi[k] < -slack || mlo[k] > 1 + slack)
+            return 0;
+    for (int k = 0; k < 2; k++)
+        if (rhi[k] <= 0 || rlo[k] >= 1 + slack)
+            return 0;
+    return 1;
+}
+
+/* The crossings of the conic g = 0 with the boundary of convex piece p
+ * (n vertices), at most 4, into x[]; returns their count.  On each edge
+ * g(s) = g0 (1 - s)(1 - 2 s) + 4 gm s (1 - s) + g1 s (2 s - 1) (the
+ * quadratic through s = 0, 1/2, 1); roots in [0, 1), so that a root at a
+ * vertex counts once.  `tiny` is g's round-off scale: an edge where the
+ * three values are below it lies on the conic and gives no crossing. */
+static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, rad_vec3 *x)
+{
+    int nx = 0;
+    double g0 = g_at(l, p[0]), gfirst = g0;
+    for (int k = 0; k < n && nx < 4; k++) {
+        rad_vec3 p0 = p[k], p1 = p[k + 1 < n ? k + 1 : 0];
+        double g1 = k + 1 < n ? g_at(l, p1) : gfirst;
+        double gm = g_at(l, v3_lerp(p0, p1, 0.5));
+        double a = 2 * g0 - 4 * gm + 2 * g1, b = -3 * g0 + 4 * gm - g1, c0 = g0;
+        double g_prev = g0;
+        g0 = g1;
+        if (fabs(g_prev) <= tiny && fabs(gm) <= tiny && fabs(g1) <= tiny)
+            continue;
+        double r[2];
+        int nr = 0;
+        if (fabs(a) <= 1e-12 * (fabs(b) + fabs(c0))) {
+            if (b != 0)
+                r[nr++] = -c0 / b;
+        } else {
+            double disc = b * b - 4 * a * c0;
+            if (disc >= 0) {
+                double q = -0.5 * (b + copysign(sqrt(disc), b));
+                r[nr++] = q / a;
+                if (q != 0)
+                    r[nr++] = c0 / q;
+            }
+        }
+        for (int m = 0; m < nr && nx < 4; m++)
+            if (r[m] >= 0 && r[m] < 1)
+                x[nx++] = v3_lerp(p0, p1, r[m]);
+    }
+    return nx;
+}
+
+/* Cut piece p (n vertices) along the chord x0 x1 into sp->db (both
+ * sides, slivers dropped); 0 or -1. */
+static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 x0,
+                     rad_vec3 x1)
+{
+    rad_vec3 nrm = v3_cross(v3_sub(x1, x0), c->nx);
+    double len = v3_norm(nrm), lo, hi;
+    if (occ_grow_d(&sp->d, &sp->capd, n) || occ_grow_v3(&sp->tmp, &sp->captmp, n + 1))
+        return -1;
+    if (len > 0) {
+        poly_distances(p, n, v3_scale(nrm, 1.0 / len), x0, c->snap, sp->d, &lo, &hi);
+        poly_settle_signs(sp->d, n, &lo, &hi);
+    }
+    if (!(len > 0) || lo >= 0 || hi <= 0)
+        return occ_ps_push(&sp->db, p, n);
+    for (int side = -1; side <= 1; side += 2) {
+        int m = poly_clip_side(p, sp->d, n, side, sp->tmp, n + 1);
+        if (m >= 3 && poly_area(sp->tmp, m) > c->sliver && occ_ps_push(&sp->db, sp->tmp, m))
+            return -1;
+    }
+    return 0;
+}
+
+/* Cut every piece of sp->dom that the conic of l crosses where its event
+ * happens; 0 or -1. */
+static int cut_event(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny)
+{
+    occ_ps_clear(&sp->db);
+    for (int k = 0; k < sp->dom.np; k++) {
+        const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
+        int n = sp->dom.first[k + 1] - sp->dom.first[k];
+        rad_vec3 x[4];
+        int nx = crossings(l, p, n, tiny, x);
+        int cut = nx >= 2 && happens(l, x[0], x[1]);
+        if (cut ? cut_chord(sp, c, p, n, x[0], x[1]) : occ_ps_push(&sp->db, p, n))
+            return -1;
+    }
+    polyset t = sp->dom;
+    sp->dom = sp->db;
+    sp->db = t;
+    return 0;
+}
+
+/* Do segments p0 p1 and q0 q1 share an end (within tol)? */
+static int share_end(rad_vec3 p0, rad_vec3 p1, rad_vec3 q0, rad_vec3 q1, double tol)
+{
+    return v3_norm(v3_sub(p0, q0)) <= tol || v3_norm(v3_sub(p0, q1)) <= tol ||
+           v3_norm(v3_sub(p1, q0)) <= tol || v3_norm(v3_sub(p1, q1)) <= tol;
+}
+
+/* Are two of the three lines parallel?  Then no conic: the shadows of
+ * two parallel edges cross at the direction's vanishing point on the inner
+ * plane, which x does not move, and the events left are the planes
+ * through one edge and the other (or the inner edge) that occdomain.c
+ * cuts already. */
+static int any_parallel(const line3 *l)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (v3_norm(v3_cross(l[i].u, l[j].u)) <= 1e-9 * v3_norm(l[i].u) * v3_norm(l[j].u))
+                return 1;
+    return 0;
+}
+
+/* Is the conic of l crossed by outer polygon o's boundary where its event
+ * happens?  (The test before the pieces are looked at.) */
+static int crosses_outer(const line3 *l, const rad_vec3 *o, int no, double tiny)
+{
+    rad_vec3 x[4];
+    int nx = crossings(l, o, no, tiny, x);
+    for (int k = 0; k + 1 < nx; k++)
+        if (happens(l, x[k], x[k + 1]))
+            return 1;
+    return 0;
+}
+
+int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
+{
+    for (int a = 0; a < c->nb; a++)
+        for (int b = a + 1; b < c->nb; b++) {
+            const rad_vec3 *pa = sp->blkc.v + sp->blkc.first[a];
+            const rad_vec3 *pb = sp->blkc.v + sp->blkc.first[b];
+            const int na = sp->blkc.first[a + 1] - sp->blkc.first[a];
+            const int nb = sp->blkc.first[b + 1] - sp->blkc.first[b];
+            for (int i = 0; i < na; i++)
+                for (int j = 0; j < nb; j++) {
+                    rad_vec3 a0 = pa[i], a1 = pa[(i + 1) % na], b0 = pb[j], b1 = pb[(j + 1) % nb];
+                    if (share_end(a0, a1, b0, b1, c->snap))
+                        continue;
+                    for (int k = 0; k < c->nt && sp->dom.np > 0; k++) {
+                        rad_vec3 t0 = c->t[k], t1 = c->t[(k + 1) % c->nt];
+                        line3 l[3] = {{a0, v3_sub(a1, a0)}, {b0, v3_sub(b1, b0)},
+                                      {t0, v3_sub(t1, t0)}};
+                        if (any_parallel(l))
+                            continue;
+                        /* g's round-off scale: its terms' sizes at o[0] */
+                        double s = v3_norm(v3_sub(a0, o[0])) * v3_norm(v3_sub(b0, o[0])) *
+                                   v3_norm(v3_sub(t0, o[0])) * v3_norm(l[0].u) *
+                                   v3_norm(l[1].u) * v3_norm(l[2].u);
+                        double tiny = 1e-12 * s;
+                        if (crosses_outer(l, o, no, tiny) && cut_event(sp, c, l, tiny))
+                            return -1;
+                    }
+                }
+        }
+    return 0;
+}
