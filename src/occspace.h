@@ -43,16 +43,18 @@
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
 #define OCC_LEAVES_DEFAULT 1024
-#define OCC_LEAVES_REFERENCE 2048
+#define OCC_LEAVES_REFERENCE 8192
 /* ... and the most evaluations of hidden(x) it may spend on a pair: a
  * pair whose integrand keeps a kink inside a piece (in the lens a chord of
  * occeee.c leaves) converges slowly there, and stops here with its
  * estimate (which the fill then reports as an unmet promise).  Default's
  * budgets were 256 leaves and 1e4 evaluations: on the 6x6 Cornell box 14
  * entries above 1e-6 stopped there more than 1e-6 from reference mode's
- * value; with these none do. */
+ * value; with these none do.  Reference's were 2048 and 1e5: with the
+ * strips of occeee.c its rows of the closed Cornell box (2x2) missed 1 by
+ * 5e-8 there, and by 6e-10 with these. */
 #define OCC_EVALS_DEFAULT 4e4
-#define OCC_EVALS_REFERENCE 1e5
+#define OCC_EVALS_REFERENCE 4e5
 /* In default mode a pair with at most OCC_WEDGE_BLOCKERS blockers is
  * first integrated on
  * a domain cut only where each event happens (occevent.c), with
@@ -61,6 +63,12 @@
  * whole budgets (occhidden.c, orient_integral). */
 #define OCC_WEDGE_BLOCKERS 4
 #define OCC_WEDGE_BUDGET 0.25
+/* The events of three edges (occeee.c) are cut for pairs with at most
+ * OCC_EEE_BLOCKERS blockers: their number grows as the square of the
+ * blockers' (64 edge triples per pair of quads), and a pair with more
+ * (seen: 34 with shaft culling off) spent minutes there.  On the Cornell
+ * box with culling no pair has more than 9. */
+#define OCC_EEE_BLOCKERS 12
 
 struct rad_occ {
     rad_occ_mode mode;
