@@ -11,8 +11,10 @@
 # 0.001 to 179.999 degrees, nearly coplanar facing plates, blockers
 # between plates (centred, off-centre, touching, nearly complete), long
 # thin strips, tiny elements beside large ones, a panel's two faces with a
-# tiny twist, each at a random orientation, scale (1e-6 .. 1e6) and
-# translation (up to 1e6 times the scene's size).  Each scene runs through
+# tiny twist, two to four blockers at random angles between plates (edges
+# of two blockers not parallel: the events of three edges, src/occeee.c),
+# each at a random orientation, scale (1e-6 .. 1e6) and translation (up to
+# 1e6 times the scene's size).  Each scene runs through
 # `formfactor` in classic, default and reference mode and `solve` in
 # default mode.  Findings (each fails the run; the scene is kept):
 #
@@ -181,7 +183,109 @@ def fam_twist(rng, sc):
     sc.quad(rect((0, 0, -0.5), (1, 0, 0), (0, 1, 0)))
 
 
-FAMILIES = [fam_hinge, fam_coplanar, fam_blocker, fam_strips, fam_tiny, fam_twist]
+# the six faces of the unit cube, each counter-clockwise about its outward
+# normal
+CUBE = [rect((0, 0, 0), (0, 1, 0), (1, 0, 0)), rect((0, 0, 1), (1, 0, 0), (0, 1, 0)),
+        rect((0, 0, 0), (1, 0, 0), (0, 0, 1)), rect((0, 1, 0), (0, 0, 1), (1, 0, 0)),
+        rect((0, 0, 0), (0, 0, 1), (0, 1, 0)), rect((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+
+
+def ring(rng, k, rx, ry):
+    """k points counter-clockwise on an ellipse in z = 0 (so a convex
+    polygon), no two less than 120/k degrees apart."""
+    while True:
+        a = sorted(rng.uniform(0, 360) for _ in range(k))
+        if min([a[i + 1] - a[i] for i in range(k - 1)] + [a[0] + 360 - a[-1]]) > 120.0 / k:
+            break
+    return [(rx * math.cos(math.radians(t)), ry * math.sin(math.radians(t)), 0.0) for t in a]
+
+
+def any_rot(rng):
+    ax = [rng.gauss(0, 1) for _ in range(3)]
+    nrm = math.sqrt(sum(x * x for x in ax)) or 1
+    return rot(tuple(x / nrm for x in ax), rng.uniform(0, 360))
+
+
+def fam_crossed(rng, sc):
+    """Two to four blockers between facing plates at random angles, so
+    that edges of two blockers are not parallel (the events of three
+    edges, src/occeee.c): convex quads or triangles (panels: both faces),
+    sometimes a closed box (6 quads; 5 when it stands on a plate or hangs
+    from it, the plate closing it), overlapping as seen from the plates,
+    stacked in z so that they never cross, sometimes touching each other
+    (a lowest vertex on the highest one below) or a plate."""
+    sc.quad(rect((0, 0, 0), (1, 0, 0), (0, 1, 0)), mesh(rng), "e")
+    sc.quad(rect((0, 0, 1), (0, 1, 0), (1, 0, 0)), mesh(rng))
+    box = rng.random() < 0.3
+    n = rng.randint(2, 3 if box else 4)  # a box and three panels take minutes under ASan
+    blk = []  # (faces, open): faces centred on the z axis; open: "floor", "ceiling" or None
+    for i in range(n):
+        if i == 0 and box:
+            h = [rng.uniform(0.05, 0.25) for _ in range(3)]
+            faces = [[tuple((c - 0.5) * 2 * e for c, e in zip(p, h)) for p in f] for f in CUBE]
+            opn = rng.choice([None, None, "floor", "ceiling"])
+            m = rot((0, 0, 1), rng.uniform(0, 360)) if opn else any_rot(rng)
+            if opn:  # the face on the plate is left out
+                faces = faces[1:] if opn == "floor" else faces[:1] + faces[2:]
+            blk.append(([[apply(m, p) for p in f] for f in faces], opn))
+        else:
+            pts = ring(rng, rng.choice([3, 4]), rng.uniform(0.1, 0.4), rng.uniform(0.1, 0.4))
+            tilt = 0.0 if rng.random() < 0.2 else rng.uniform(0, 70)
+            b = rng.uniform(0, 2 * math.pi)
+            m = rot((math.cos(b), math.sin(b), 0), tilt)
+            mz = rot((0, 0, 1), rng.uniform(0, 360))
+            blk.append(([[apply(m, apply(mz, p)) for p in pts]], None))
+    # the box standing on the floor comes first, one hanging from the
+    # ceiling last
+    if blk[0][1] == "ceiling":
+        blk.append(blk.pop(0))
+    zlo = lambda fs: min(p[2] for f in fs for p in f)
+    zhi = lambda fs: max(p[2] for f in fs for p in f)
+    hs = [zhi(f) - zlo(f) for f, _ in blk]
+    # n + 1 gaps: below the first, between, above the last; 0 is touching
+    # (a box open on a plate touches it; one gap at least is free)
+    opn = [blk[0][1] == "floor"] + [False] * (n - 1) + [blk[-1][1] == "ceiling"]
+    touch = [o or rng.random() < 0.25 for o in opn]
+    touch[rng.choice([i for i in range(n + 1) if not opn[i]])] = False
+    for i in range(1, n):  # two flat panels would touch in a plane
+        touch[i] = touch[i] and (hs[i - 1] > 0 or hs[i] > 0)
+    # fit the stack into 0.8 of the height (scaling z keeps faces planar
+    # and convex)
+    f = min(1.0, 0.8 / sum(hs)) if sum(hs) > 0 else 1.0
+    blk = [([[(p[0], p[1], p[2] * f) for p in fc] for fc in fs], o) for fs, o in blk]
+    hs = [h * f for h in hs]
+    gaps = [0.0] * (n + 1)
+    for i, b in ((0, 0), (n, n - 1)):  # touching a plate: exactly, or nearly
+        if touch[i] and not opn[i]:
+            gaps[i] = rng.choice([0.0, 1e-9, 1e-6]) if hs[b] > 0 else 1e-9
+    w = [0.0 if t else rng.uniform(0.2, 1) for t in touch]
+    free = 1 - sum(hs) - sum(gaps)
+    gaps = [g + free * x / sum(w) for g, x in zip(gaps, w)]
+    z, prev = gaps[0], None
+    for i, (fs, o) in enumerate(blk):
+        lo = min((p for fc in fs for p in fc), key=lambda p: p[2])
+        if i > 0 and touch[i] and prev is not None:
+            # the lowest vertex on the highest vertex of the one below
+            t = (prev[0] - lo[0], prev[1] - lo[1], prev[2] - lo[2])
+        else:
+            t = (0.5 + rng.uniform(-0.15, 0.15), 0.5 + rng.uniform(-0.15, 0.15), z - lo[2])
+        if i == n - 1 and touch[n]:  # against the ceiling, from the top
+            t = (t[0], t[1], 1 - gaps[n] - zhi(fs))
+        fs = [[add(p, t) for p in fc] for fc in fs]
+        for fc in fs:
+            if len(fs) > 1:  # a box's face: one-sided, outward
+                sc.quad(fc)
+            elif len(fc) == 4:
+                sc.both_sides(fc)
+            else:
+                sc.polys.append(("w", fc))
+                sc.polys.append(("w", list(reversed(fc))))
+        prev = max((p for fc in fs for p in fc), key=lambda p: p[2])
+        z = prev[2] + gaps[i + 1]
+
+
+FAMILIES = [fam_hinge, fam_coplanar, fam_blocker, fam_strips, fam_tiny, fam_twist,
+            fam_crossed]
 
 
 def make_scene(seed, idx):
