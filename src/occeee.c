@@ -54,10 +54,20 @@
 #include "polygon.h"
 #include "vec.h"
 
-/* One line of an event: a point and a direction. */
+/* One line of an event: a point and a direction, in the event's own
+ * units: x in the pair's frame is x * inv there (inv a power of two, the
+ * same for the three lines, so the scaling is exact), so that g and its
+ * tolerances do not depend on the scene's scale (g is a product of six
+ * lengths: at a scale of 1e-100 it underflowed, and the cuts moved). */
 typedef struct line3 {
     rad_vec3 a, u;
+    double inv;
 } line3;
+
+static rad_vec3 to_event(const line3 *l, rad_vec3 x)
+{
+    return v3_scale(x, l->inv);
+}
 
 static double triple(rad_vec3 p, rad_vec3 q, rad_vec3 r)
 {
@@ -72,9 +82,10 @@ static rad_vec3 transversal(const line3 *l, rad_vec3 x)
                   v3_scale(l[1].u, triple(w1, l[0].u, w2)));
 }
 
-/* g(x) of (1). */
+/* g(x) of (1), x in the pair's frame. */
 static double g_at(const line3 *l, rad_vec3 x)
 {
+    x = to_event(l, x);
     return triple(v3_sub(l[2].a, x), transversal(l, x), l[2].u);
 }
 
@@ -113,7 +124,7 @@ static int happens(const line3 *l, rad_vec3 x0, rad_vec3 x1)
     rlo[0] = rlo[1] = HUGE_VAL;
     rhi[0] = rhi[1] = -HUGE_VAL;
     for (int p = 0; p < 3; p++) {
-        rad_vec3 x = p == 0 ? x0 : p == 1 ? v3_lerp(x0, x1, 0.5) : x1;
+        rad_vec3 x = to_event(l, p == 0 ? x0 : p == 1 ? v3_lerp(x0, x1, 0.5) : x1);
         rad_vec3 d = transversal(l, x);
         double lam[3], mu;
         if (!(v3_norm(d) > 0))
@@ -370,13 +381,21 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
                         continue;
                     for (int k = 0; k < c->nt && sp->dom.np > 0; k++) {
                         rad_vec3 t0 = c->t[k], t1 = c->t[(k + 1) % c->nt];
-                        line3 l[3] = {{a0, v3_sub(a1, a0)}, {b0, v3_sub(b1, b0)},
-                                      {t0, v3_sub(t1, t0)}};
+                        /* the event's units: about the distance to the
+                         * inner edge, a power of two */
+                        const double len = v3_norm(v3_sub(t0, o[0]));
+                        if (!(len > 0) || !isfinite(len))
+                            continue;
+                        const double inv = ldexp(1.0, -ilogb(len));
+                        line3 l[3] = {{v3_scale(a0, inv), v3_scale(v3_sub(a1, a0), inv), inv},
+                                      {v3_scale(b0, inv), v3_scale(v3_sub(b1, b0), inv), inv},
+                                      {v3_scale(t0, inv), v3_scale(v3_sub(t1, t0), inv), inv}};
                         if (any_parallel(l))
                             continue;
                         /* g's round-off scale: its terms' sizes at o[0] */
-                        double s = v3_norm(v3_sub(a0, o[0])) * v3_norm(v3_sub(b0, o[0])) *
-                                   v3_norm(v3_sub(t0, o[0])) * v3_norm(l[0].u) *
+                        const rad_vec3 oo = v3_scale(o[0], inv);
+                        double s = v3_norm(v3_sub(l[0].a, oo)) * v3_norm(v3_sub(l[1].a, oo)) *
+                                   v3_norm(v3_sub(l[2].a, oo)) * v3_norm(l[0].u) *
                                    v3_norm(l[1].u) * v3_norm(l[2].u);
                         double tiny = 1e-12 * s;
                         if (crosses_outer(l, o, no, tiny) && cut_event(sp, c, l, tiny))

@@ -196,7 +196,12 @@ ok $? "furnace emitting 8e307: B = E / (1 - rho) = 1.6e308 within 1e-9"
 # and 1e100, 2x2 per quad, against unit scale.  Decimal scales round the
 # corners (relative 1e-16), and the visibility clipping's tolerances are
 # relative to the scene, so B agrees to round-off amplified by the
-# clipping, far below 1e-9.
+# clipping.  Since the events of three edges are cut (src/occeee.c), where
+# the conics cross a piece's vertices and whether an event "happens" there
+# can turn on round-off, so the two runs can cut their domains differently
+# and agree only within their integration error, not round-off: 1.25e-9
+# at 1e-100 was seen.  The check allows 1e-8, under the 2e-8 that the
+# default mode's own error of F may move B by (the first check above).
 box="$top_srcdir/data/cornell-box.scene"
 "$RADIOSITY" solve -q --mesh 2x2 --elements "$work/box.tsv" "$box"
 ok $? "solve the Cornell box, 2x2 per quad (visibility needed)"
@@ -209,9 +214,9 @@ for s in 1e-100 1e100; do
     NR == 1 { for (k = 1; k <= NF / 2; k++) col[$k] = k; h = NF / 2; next }
     { for (c = 0; c < 3; c++) { k = col[c == 0 ? "r" : c == 1 ? "g" : "b"]
         d = $k - $(k + h); if (d < 0) d = -d; r = $k > 0 ? d / $k : d
-        if (r > w) w = r; if (!(r <= 1e-9)) bad = 1 }; n++ }
+        if (r > w) w = r; if (!(r <= 1e-8)) bad = 1 }; n++ }
     END { printf "%.3g\n", w; exit bad || n < 100 }')
-  ok $? "Cornell box scaled by $s: B as at unit scale within 1e-9 (worst $w)"
+  ok $? "Cornell box scaled by $s: B as at unit scale within 1e-8 (worst $w)"
 done
 
 # the race of Cohen et al. 1988 weighs errors by area: the same curves at
