@@ -151,6 +151,27 @@ static int happens(const line3 *l, rad_vec3 x0, rad_vec3 x1)
     return 1;
 }
 
+/* The real roots of a t^2 + b t + c = 0 into r (0, 1 or 2 of them; the
+ * linear equation when a is negligible), by the stable form q = -(b +
+ * sign(b) sqrt(b^2 - 4 a c)) / 2, t = q / a and c / q. */
+static int quad_roots(double a, double b, double c, double r[2])
+{
+    int nr = 0;
+    if (fabs(a) <= 1e-12 * (fabs(b) + fabs(c))) {
+        if (b != 0)
+            r[nr++] = -c / b;
+    } else {
+        double disc = b * b - 4 * a * c;
+        if (disc >= 0) {
+            double q = -0.5 * (b + copysign(sqrt(disc), b));
+            r[nr++] = q / a;
+            if (q != 0)
+                r[nr++] = c / q;
+        }
+    }
+    return nr;
+}
+
 /* The crossings of the conic g = 0 with the boundary of convex piece p
  * (n vertices), at most 4, into x[]; returns their count.  On each edge
  * g(s) = g0 (1 - s)(1 - 2 s) + 4 gm s (1 - s) + g1 s (2 s - 1) (the
@@ -171,19 +192,7 @@ static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, rad_
         if (fabs(g_prev) <= tiny && fabs(gm) <= tiny && fabs(g1) <= tiny)
             continue;
         double r[2];
-        int nr = 0;
-        if (fabs(a) <= 1e-12 * (fabs(b) + fabs(c0))) {
-            if (b != 0)
-                r[nr++] = -c0 / b;
-        } else {
-            double disc = b * b - 4 * a * c0;
-            if (disc >= 0) {
-                double q = -0.5 * (b + copysign(sqrt(disc), b));
-                r[nr++] = q / a;
-                if (q != 0)
-                    r[nr++] = c0 / q;
-            }
-        }
+        const int nr = quad_roots(a, b, c0, r);
         for (int m = 0; m < nr && nx < 4; m++)
             if (r[m] >= 0 && r[m] < 1)
                 x[nx++] = v3_lerp(p0, p1, r[m]);
@@ -245,19 +254,10 @@ static double sagitta(const line3 *l, const pair_ctx *c, rad_vec3 x0, rad_vec3 x
     w = v3_scale(w, h / len);
     rad_vec3 mid = v3_lerp(x0, x1, 0.5);
     double gm = g_at(l, v3_sub(mid, w)), g0 = g_at(l, mid), gp = g_at(l, v3_add(mid, w));
-    double a = 0.5 * (gp + gm) - g0, b = 0.5 * (gp - gm), best = HUGE_VAL;
-    if (fabs(a) <= 1e-12 * (fabs(b) + fabs(g0))) {
-        if (b != 0)
-            best = fabs(g0 / b);
-    } else {
-        double disc = b * b - 4 * a * g0;
-        if (disc >= 0) {
-            double q = -0.5 * (b + copysign(sqrt(disc), b));
-            best = fabs(q / a);
-            if (q != 0)
-                best = fmin(best, fabs(g0 / q));
-        }
-    }
+    double r[2], best = HUGE_VAL;
+    const int nr = quad_roots(0.5 * (gp + gm) - g0, 0.5 * (gp - gm), g0, r);
+    for (int k = 0; k < nr; k++)
+        best = fmin(best, fabs(r[k]));
     return isfinite(best) ? best * h : 0;
 }
 
@@ -282,21 +282,19 @@ static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double t
     int nr = n;
     for (int k = 1; k <= m && nr >= 3; k++) {
         int ns = nr;
+        hi = 0; /* the last strip is all that is left */
         if (k < m) { /* strip k: the side of the plane across the chord toward x0 */
             poly_distances(sp->pj0, nr, v3_scale(u, 1.0 / len),
                            v3_add(x0, v3_scale(u, (double)k / m)), c->snap, sp->d, &lo, &hi);
             poly_settle_signs(sp->d, nr, &lo, &hi);
             if (lo >= 0)
                 continue;
-            if (hi > 0) {
-                ns = poly_clip_side(sp->pj0, sp->d, nr, -1.0, sp->pj1, cap);
-                nr = poly_clip_side(sp->pj0, sp->d, nr, 1.0, sp->rem, cap);
-                occ_swap_v3(&sp->pj0, &sp->cappj0, &sp->rem, &sp->caprem);
-            } else {
-                occ_swap_v3(&sp->pj0, &sp->cappj0, &sp->pj1, &sp->cappj1);
-                nr = 0;
-            }
-        } else {
+        }
+        if (hi > 0) {
+            ns = poly_clip_side(sp->pj0, sp->d, nr, -1.0, sp->pj1, cap);
+            nr = poly_clip_side(sp->pj0, sp->d, nr, 1.0, sp->rem, cap);
+            occ_swap_v3(&sp->pj0, &sp->cappj0, &sp->rem, &sp->caprem);
+        } else { /* all of it on x0's side */
             occ_swap_v3(&sp->pj0, &sp->cappj0, &sp->pj1, &sp->cappj1);
             nr = 0;
         }
@@ -364,6 +362,31 @@ static int crosses_outer(const line3 *l, const rad_vec3 *o, int no, double tiny)
     return 0;
 }
 
+/* The event of blocker edges a0 a1, b0 b1 and inner edge t0 t1: cut
+ * sp->dom along its conic where it crosses the outer polygon o and
+ * happens; 0 or -1. */
+static int cut_triple(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no, rad_vec3 a0,
+                      rad_vec3 a1, rad_vec3 b0, rad_vec3 b1, rad_vec3 t0, rad_vec3 t1)
+{
+    /* the event's units: about the distance to the inner edge, a power
+     * of two */
+    const double len = v3_norm(v3_sub(t0, o[0]));
+    if (!(len > 0) || !isfinite(len))
+        return 0;
+    const double inv = ldexp(1.0, -ilogb(len));
+    line3 l[3] = {{v3_scale(a0, inv), v3_scale(v3_sub(a1, a0), inv), inv},
+                  {v3_scale(b0, inv), v3_scale(v3_sub(b1, b0), inv), inv},
+                  {v3_scale(t0, inv), v3_scale(v3_sub(t1, t0), inv), inv}};
+    if (any_parallel(l))
+        return 0;
+    /* g's round-off scale: its terms' sizes at o[0] */
+    const rad_vec3 oo = v3_scale(o[0], inv);
+    double s = v3_norm(v3_sub(l[0].a, oo)) * v3_norm(v3_sub(l[1].a, oo)) *
+               v3_norm(v3_sub(l[2].a, oo)) * v3_norm(l[0].u) * v3_norm(l[1].u) * v3_norm(l[2].u);
+    double tiny = 1e-12 * s;
+    return crosses_outer(l, o, no, tiny) ? cut_event(sp, c, l, tiny) : 0;
+}
+
 int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
 {
     if (c->nb > OCC_EEE_BLOCKERS)
@@ -379,28 +402,10 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
                     rad_vec3 a0 = pa[i], a1 = pa[(i + 1) % na], b0 = pb[j], b1 = pb[(j + 1) % nb];
                     if (share_end(a0, a1, b0, b1, c->snap))
                         continue;
-                    for (int k = 0; k < c->nt && sp->dom.np > 0; k++) {
-                        rad_vec3 t0 = c->t[k], t1 = c->t[(k + 1) % c->nt];
-                        /* the event's units: about the distance to the
-                         * inner edge, a power of two */
-                        const double len = v3_norm(v3_sub(t0, o[0]));
-                        if (!(len > 0) || !isfinite(len))
-                            continue;
-                        const double inv = ldexp(1.0, -ilogb(len));
-                        line3 l[3] = {{v3_scale(a0, inv), v3_scale(v3_sub(a1, a0), inv), inv},
-                                      {v3_scale(b0, inv), v3_scale(v3_sub(b1, b0), inv), inv},
-                                      {v3_scale(t0, inv), v3_scale(v3_sub(t1, t0), inv), inv}};
-                        if (any_parallel(l))
-                            continue;
-                        /* g's round-off scale: its terms' sizes at o[0] */
-                        const rad_vec3 oo = v3_scale(o[0], inv);
-                        double s = v3_norm(v3_sub(l[0].a, oo)) * v3_norm(v3_sub(l[1].a, oo)) *
-                                   v3_norm(v3_sub(l[2].a, oo)) * v3_norm(l[0].u) *
-                                   v3_norm(l[1].u) * v3_norm(l[2].u);
-                        double tiny = 1e-12 * s;
-                        if (crosses_outer(l, o, no, tiny) && cut_event(sp, c, l, tiny))
+                    for (int k = 0; k < c->nt && sp->dom.np > 0; k++)
+                        if (cut_triple(sp, c, o, no, a0, a1, b0, b1, c->t[k],
+                                       c->t[(k + 1) % c->nt]))
                             return -1;
-                    }
                 }
         }
     return 0;
