@@ -346,6 +346,30 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
                      budget * evals, &res->value, &res->error, met);
 }
 
+/* domain_integral again, on c's new domain, from scratch and with the
+ * whole budget (before: sp->evals when the pair's first try began; the
+ * count keeps every try). */
+static int try_again(const rad_occ *o, occ_space *sp, pair_ctx *c, const rad_vec3 *co, int no,
+                     double s, double rel, double before, orient_result *res, int *met)
+{
+    const double spent = sp->evals - before;
+    sp->evals = before;
+    memset(res, 0, sizeof *res);
+    if (domain_integral(o, sp, c, co, no, s, rel, 1, res, met))
+        return -1;
+    sp->evals += spent;
+    return 0;
+}
+
+/* Is the occluded value below OCC_NEAR_HIDDEN of the unoccluded one (S /
+ * (2 pi)), with something hidden and something visible? */
+static int nearly_hidden(const occ_space *sp, const orient_result *res, double s)
+{
+    const double whole = s / (2 * RAD_PI);
+    const double occluded = res->direct ? res->value : whole - res->value;
+    return sp->any_hidden && sp->any_visible && occluded < OCC_NEAR_HIDDEN * whole;
+}
+
 /* The integral of the hidden part with element i (outer_i) or j as the
  * outer element.  In default mode a pair with few blockers is first
  * integrated on a domain cut only where each event happens
@@ -359,7 +383,9 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
  * blockers, or where the first try struggled, every plane is cut.
  * Reference mode always cuts every plane: before occeee.c cut the events
  * of three edges, 38 entries of the 6x6 closed Cornell box moved by more
- * than both runs' estimates with the wedges only. */
+ * than both runs' estimates with the wedges only.  A nearly hidden pair
+ * whose chords of occeee.c left wide lenses is done once more with
+ * narrower ones (OCC_ARC_TOL_HIDDEN, occspace.h). */
 static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
                            const rad_ff_poly *pj, int outer_i, double s, double rel,
                            orient_result *res)
@@ -388,19 +414,22 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.order = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ORDER_REFERENCE
               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
                                                     : 0;
+    c.arc_tol = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ARC_TOL_REFERENCE : OCC_ARC_TOL_DEFAULT;
     int met;
-    double before = sp->evals;
+    const double before = sp->evals;
     double budget = c.events == OCC_SPLIT_WEDGES ? OCC_WEDGE_BUDGET : 1;
+    sp->loose_arcs = 0;
     if (domain_integral(o, sp, &c, co, no, s, rel, budget, res, &met))
         return -1;
     if (!met && c.events == OCC_SPLIT_WEDGES) {
-        double spent = sp->evals - before;
-        sp->evals = before; /* a fresh budget; the count keeps both tries */
-        memset(res, 0, sizeof *res);
         c.events = OCC_SPLIT_ALL;
-        if (domain_integral(o, sp, &c, co, no, s, rel, 1, res, &met))
+        if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
             return -1;
-        sp->evals += spent;
+    }
+    if (o->accuracy == RAD_ACCURACY_DEFAULT && sp->loose_arcs && nearly_hidden(sp, res, s)) {
+        c.arc_tol = OCC_ARC_TOL_HIDDEN;
+        if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
+            return -1;
     }
     res->hidden |= sp->any_hidden;
     res->visible |= sp->any_visible;

@@ -69,6 +69,19 @@
  * (seen: 34 with shaft culling off) spent minutes there.  On the Cornell
  * box with culling no pair has more than 9. */
 #define OCC_EEE_BLOCKERS 12
+/* The chords along the conics of occeee.c leave lenses of the outer
+ * element with a kink inside: where a lens is wider than the pair's
+ * arc_tol of its chord, the piece is cut into strips first (occeee.c,
+ * follow_arc, with the measurements).  Default mode uses
+ * OCC_ARC_TOL_DEFAULT; a pair whose occluded value comes out below
+ * OCC_NEAR_HIDDEN of its unoccluded one while some lens was wider than
+ * OCC_ARC_TOL_HIDDEN is integrated again with that (occhidden.c,
+ * orient_integral): relative to such a pair's small value the kink in a
+ * lens weighs most. */
+#define OCC_ARC_TOL_DEFAULT 1e-2
+#define OCC_ARC_TOL_HIDDEN 2e-3
+#define OCC_ARC_TOL_REFERENCE 5e-4
+#define OCC_NEAR_HIDDEN 0.1
 
 struct rad_occ {
     rad_occ_mode mode;
@@ -155,6 +168,8 @@ typedef struct occ_space {
     double snap;                /* the pair's tolerance: o->snap plus the
                                    twists of its surfaces and candidates */
     int any_hidden, any_visible;/* over the pair's evaluations */
+    int loose_arcs;             /* some chord of occeee.c left a lens wider
+                                   than OCC_ARC_TOL_HIDDEN of it */
     double evals;
 } occ_space;
 
@@ -175,6 +190,8 @@ typedef struct pair_ctx {
     int order;                  /* the rule on a triangle (occrule.c): 0 the
                                    3-point rule, k >= 2 the k x k collapsed
                                    Gauss product */
+    double arc_tol;             /* the widest lens a chord of occeee.c may
+                                   leave, a part of the chord (OCC_ARC_TOL_*) */
 } pair_ctx;
 
 
