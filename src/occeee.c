@@ -229,22 +229,28 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
  * where that is more than c->arc_tol of the chord (OCC_ARC_TOL_*,
  * occspace.h), the piece is first cut into m strips across the chord
  * (m^2 >= sagitta / (arc_tol chord), at most ARC_STRIPS), so that each
- * strip's chord is m^2 times closer to its arc.  A second-order kink in a lens of width w moves the
- * integral by about w^3 times the second derivative's jump: the error
- * falls as the cube of the sagitta.  Seen on the Cornell box (a floor
- * element whose visible part of a ceiling element vanishes along a conic
- * with a sagitta of 0.2 mm on a 4 mm chord): F changed by 4e-8 with the
- * mesh after a plain chord, 2e-9 with ARC_TOL 1e-3, 2e-10 with 5e-4 and
- * 3e-12 with 1e-4; default mode was within 2e-7 of it with 1e-2.  But
- * on a pair hidden to 1.3e-4 past both blocks (tests/occeee.sh) default
- * mode was 1.9e-6 off with 1e-2, the same at every mesh, its estimate
- * 0.08 of that (the rules converge on either side of a kink they cannot
- * see); 3e-8 off with 4e-3 and 5e-10 with 2e-3.  Each strip adds pieces
- * to integrate: 2e-3 for every pair spent the budget of some pairs of
- * large elements on the pieces alone (rows of the closed Cornell box at
- * --mesh 3x3 then summed to 1 only within 7e-6), so default mode takes
- * 2e-3 only for nearly hidden pairs (occhidden.c, orient_integral), and
- * sp->loose_arcs says whether that would cut anything more. */
+ * strip's chord is m^2 times closer to its arc.  A second-order kink in
+ * a lens of width w moves the integral by about w^3 times the second
+ * derivative's jump: the error falls as the cube of the sagitta.  Seen on
+ * the Cornell box (a floor element whose visible part of a ceiling
+ * element vanishes along a conic with a sagitta of 0.2 mm on a 4 mm
+ * chord): F changed by 4e-8 with the mesh after a plain chord, 2e-9 with
+ * a tolerance of 1e-3, 2e-10 with 5e-4 and 3e-12 with 1e-4; default mode
+ * was within 2e-7 of it with 1e-2.
+ *
+ * The rules converge on either side of a kink they cannot see, so the
+ * lens's error escapes the estimates, and it weighs most against the
+ * small value of a nearly hidden pair.  Two pairs of the 6x6 Cornell box
+ * (tests/occeee.sh): one hidden to 1.3e-4, 1.9e-6 off with 1e-2 (the
+ * same at every mesh, its estimate 0.08 of that), 3e-8 with 4e-3, 5e-10
+ * with 2e-3; one hidden to 6e-4, 2.7e-7 off with 2e-3 (a lens of 1.5e-3
+ * of its chord; estimate 0.2 of the error), 1e-16 with 5e-4.  Each strip
+ * adds pieces to integrate, and a narrow tolerance for every pair spent
+ * the budget of some pairs of large elements on the pieces alone (with
+ * 2e-3, rows of the closed Cornell box at --mesh 3x3 summed to 1 only
+ * within 7e-6): so default mode narrows the lenses to
+ * OCC_ARC_TOL_HIDDEN only for nearly hidden pairs (occhidden.c,
+ * orient_integral), where sp->loose_arcs says that would cut more. */
 #define ARC_STRIPS 16
 
 /* The sagitta of the arc of l's conic over chord x0 x1: along the chord's

@@ -427,9 +427,18 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
             return -1;
     }
     if (o->accuracy == RAD_ACCURACY_DEFAULT && sp->loose_arcs && nearly_hidden(sp, res, s)) {
+        /* the narrower lenses may spend the budget on pieces: if they
+         * miss the target with a larger estimate, the first try stays */
+        const orient_result first = *res;
+        const int hidden = sp->any_hidden, visible = sp->any_visible;
         c.arc_tol = OCC_ARC_TOL_HIDDEN;
         if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
             return -1;
+        if (!met && res->error > first.error) {
+            *res = first;
+            sp->any_hidden = hidden;
+            sp->any_visible = visible;
+        }
     }
     res->hidden |= sp->any_hidden;
     res->visible |= sp->any_visible;

@@ -77,9 +77,9 @@
  * OCC_NEAR_HIDDEN of its unoccluded one while some lens was wider than
  * OCC_ARC_TOL_HIDDEN is integrated again with that (occhidden.c,
  * orient_integral): relative to such a pair's small value the kink in a
- * lens weighs most. */
+ * lens weighs most (the measurements are in occeee.c). */
 #define OCC_ARC_TOL_DEFAULT 1e-2
-#define OCC_ARC_TOL_HIDDEN 2e-3
+#define OCC_ARC_TOL_HIDDEN 5e-4
 #define OCC_ARC_TOL_REFERENCE 5e-4
 #define OCC_NEAR_HIDDEN 0.1
 
