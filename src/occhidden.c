@@ -145,11 +145,6 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
     return 0;
 }
 
-static double leaf_value(const tri_node *t)
-{
-    return t->qc[0] + t->qc[1] + t->qc[2] + t->qc[3];
-}
-
 /* The first leaves: the fan triangles of the pieces of sp->dom and
  * sp->umb, evaluated; *nleaf their count.  0, or -1.  With c->direct the
  * integrand visible(x) is 0 on sp->umb's pieces (each inside an umbra:
@@ -184,16 +179,6 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
     return 0;
 }
 
-/* The sums of the leaves' values and estimates. */
-static void sum_leaves(const occ_space *sp, int nleaf, double *v, double *err)
-{
-    *v = *err = 0;
-    for (int k = 0; k < nleaf; k++) {
-        *err += sp->node[k].err;
-        *v += leaf_value(&sp->node[k]);
-    }
-}
-
 /* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value and its
  * estimated error *error.  When `adaptive`, the leaf with the largest
  * estimate is split while the sum of the estimates exceeds
@@ -208,26 +193,31 @@ static void sum_leaves(const occ_space *sp, int nleaf, double *v, double *err)
 static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel, double whole,
                      int max_leaves, double max_evals, double *value, double *error, int *met)
 {
-    double v = 0, err = 0;
+    occ_leaves *lt = &sp->leaves;
     int nleaf = 0;
-    if (first_leaves(sp, c, &nleaf))
+    if (first_leaves(sp, c, &nleaf) || occ_leaves_build(lt, sp->node, nleaf))
         return -1;
-    sum_leaves(sp, nleaf, &v, &err);
+    double v = lt->val[1], err = lt->err[1];
     /* the occluded value: the integral itself (c->direct), or whole less it */
     while (adaptive && sp->any_hidden && sp->any_visible &&
            err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole) &&
-           nleaf + 3 <= max_leaves && sp->evals < max_evals) {
-        int worst = 0;
-        for (int k = 1; k < nleaf; k++)
-            if (sp->node[k].err > sp->node[worst].err)
-                worst = k;
+           nleaf + 3 <= max_leaves && sp->evals < max_evals && lt->best[1] >= 0) {
+        const int worst = lt->best[1];
         tri_node *t = &sp->node[worst];
         if (t->order >= 2 && t->order < c->order && !t->stalled) {
-            if (node_raise(sp, c, t))
+            if (node_raise(sp, c, t) || occ_leaves_set(lt, sp->node, worst, nleaf))
                 return -1;
-        } else if (node_split(sp, c, worst, &nleaf))
-            return -1;
-        sum_leaves(sp, nleaf, &v, &err);
+        } else {
+            if (node_split(sp, c, worst, &nleaf))
+                return -1;
+            for (int k = nleaf - 3; k < nleaf; k++)
+                if (occ_leaves_set(lt, sp->node, k, nleaf))
+                    return -1;
+            if (occ_leaves_set(lt, sp->node, worst, nleaf))
+                return -1;
+        }
+        v = lt->val[1];
+        err = lt->err[1];
     }
     *value = v;
     *error = err;

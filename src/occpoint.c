@@ -155,14 +155,18 @@ static int hidden_last(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, doub
         int m = shadow_in_piece(sp, c, q, nq, n);
         if (m < 0)
             return -1;
-        double aq = poly_area(q, nq), am = m ? poly_area(sp->pj0, m) : 0;
+        double am = m ? poly_area(sp->pj0, m) : 0;
         if (am > c->sliver) {
             *h += fabs(ff_point_polygon(x, c->nx, sp->pj0, m));
             sp->any_hidden = 1;
         } else {
             am = 0;
         }
-        visible |= aq - am > c->sliver;
+        /* q's area only while nothing visible has been seen (the flag
+         * stays for the pair: an area per piece and point was a tenth of
+         * the evaluations' time) */
+        if (!visible && !sp->any_visible)
+            visible = poly_area(q, nq) - am > c->sliver;
     }
     if (visible)
         sp->any_visible = 1;

@@ -131,6 +131,7 @@ void occ_space_free(occ_space *sp)
     free(sp->hn);
     free(sp->ha);
     free(sp->node);
+    occ_leaves_free(&sp->leaves);
     memset(sp, 0, sizeof *sp);
 }
 

@@ -121,6 +121,17 @@ typedef struct tri_node {
                                    share, or NaN (occrule.c) */
 } tri_node;
 
+/* The leaves of the adaptive rule as a tournament tree (occleaves.c):
+ * best[1] the leaf with the largest estimate (-1: none), err[1] and
+ * val[1] the sums of the leaves' estimates and values. */
+typedef struct occ_leaves {
+    int *best;
+    double *err, *val;
+    int cap;                    /* leaves the tree holds (a power of 2) */
+    int alloc;                  /* leaves the arrays can hold */
+    int n;                      /* leaves in use */
+} occ_leaves;
+
 /* A list of polygons sharing one vertex array. */
 typedef struct polyset {
     rad_vec3 *v;
@@ -165,6 +176,7 @@ typedef struct occ_space {
     int caphn, capha;
     tri_node *node;
     int capnode;
+    occ_leaves leaves;          /* the tree of sp->node's leaves */
     double snap;                /* the pair's tolerance: o->snap plus the
                                    twists of its surfaces and candidates */
     int any_hidden, any_visible;/* over the pair's evaluations */
@@ -248,6 +260,13 @@ int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
                    double *q, double *center);
+
+/* occleaves.c: the worst leaf and the sums, O(log n) per change.  Build
+ * from node[0 .. n); set: node[k] changed and n leaves are in use (the
+ * tree grows when n passes its capacity).  0, or -1 on memory. */
+int occ_leaves_build(occ_leaves *lt, const tri_node *node, int n);
+int occ_leaves_set(occ_leaves *lt, const tri_node *node, int k, int n);
+void occ_leaves_free(occ_leaves *lt);
 
 /* occhidden.c: how much of a pair is hidden */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
