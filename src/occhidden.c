@@ -21,11 +21,11 @@
  *
  * The integral runs over the domain of occdomain.c (the outer element's
  * part of the blockers' penumbras, cut along their umbras and, but in
- * classic mode, along the event planes: orient_integral): on each
- * piece's fan of triangles hidden(x) is integrated by the rules of
- * occrule.c, the
- * triangle with the largest estimate has its rule's order raised or is
- * split into its four midpoint children, until the sum of estimates is
+ * classic mode, along the event planes: orient_integral): each piece is
+ * a fan of cells (quadrilaterals and at most one triangle; triangles
+ * alone in classic mode), hidden(x) is integrated on each by the rules of
+ * occrule.c, and the cell with the largest estimate has its rule's order
+ * raised or is split into its four children, until the sum of estimates is
  * below the pair's tolerance (global adaptive subdivision as in QUADPACK's
  * QAG, Piessens et al. 1983).  The outer element is the one that looks
  * smaller from the nearest blocker (size / distance): from there the
@@ -59,7 +59,20 @@ static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
     memcpy(ch, t, sizeof t);
 }
 
-/* A node's value and error estimate from its triangle (t->p, t->area).
+/* The four children of quadrilateral p: the images of the unit square's
+ * quarters under its bilinear map (occrule.c, (2)), whose corners are the
+ * edges' midpoints and the mean of the four vertices. */
+static void quad_children(const rad_vec3 *p, rad_vec3 ch[4][4])
+{
+    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
+             m23 = v3_lerp(p[2], p[3], 0.5), m30 = v3_lerp(p[3], p[0], 0.5),
+             mid = v3_lerp(m01, m23, 0.5);
+    rad_vec3 t[4][4] = {{p[0], m01, mid, m30}, {m01, p[1], m12, mid},
+                        {mid, m12, p[2], m23}, {m30, mid, m23, p[3]}};
+    memcpy(ch, t, sizeof t);
+}
+
+/* A node's value and error estimate from its cell (t->p, t->nv, t->area).
  * With the 3-point rule (c->order 0): the rule on the triangle (q) and on
  * its four midpoint children (qc), the value their sum and the estimate
  * |q - sum qc|.  With the collapsed rules (occrule.c): the rules of
@@ -78,9 +91,9 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
     if (c->order >= 2) {
         double q1, q2, q3;
         t->center = NAN;
-        if (occ_rule_order(sp, c, 1, t->p, t->area, &q1, &t->center) ||
-            occ_rule_order(sp, c, 2, t->p, t->area, &q2, NULL) ||
-            occ_rule_order(sp, c, 3, t->p, t->area, &q3, &t->center))
+        if (occ_rule_order(sp, c, 1, t->p, t->nv, t->area, &q1, &t->center) ||
+            occ_rule_order(sp, c, 2, t->p, t->nv, t->area, &q2, NULL) ||
+            occ_rule_order(sp, c, 3, t->p, t->nv, t->area, &q3, &t->center))
             return -1;
         t->q = q2;
         t->qc[0] = q3;
@@ -115,7 +128,7 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
 static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     double q;
-    if (occ_rule_order(sp, c, t->order + 1, t->p, t->area, &q, &t->center))
+    if (occ_rule_order(sp, c, t->order + 1, t->p, t->nv, t->area, &q, &t->center))
         return -1;
     double d = fabs(q - t->qc[0]);
     t->stalled = !(d <= 0.5 * t->dlast);
@@ -133,12 +146,21 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
     if (occ_grow_node(&sp->node, &sp->capnode, *nleaf + 3))
         return -1;
     tri_node parent = sp->node[k];
-    rad_vec3 ch[4][3];
-    children(parent.p, ch);
+    rad_vec3 ch[4][3], cq[4][4];
+    if (parent.nv == 4)
+        quad_children(parent.p, cq);
+    else
+        children(parent.p, ch);
     for (int l = 0; l < 4; l++) {
         tri_node *t = l == 0 ? &sp->node[k] : &sp->node[(*nleaf)++];
-        memcpy(t->p, ch[l], sizeof t->p);
-        t->area = 0.25 * parent.area;
+        t->nv = parent.nv;
+        if (parent.nv == 4) {
+            memcpy(t->p, cq[l], sizeof cq[l]);
+            t->area = poly_area(t->p, 4);
+        } else {
+            memcpy(t->p, ch[l], sizeof ch[l]);
+            t->area = 0.25 * parent.area;
+        }
         if (node_eval(sp, c, t))
             return -1;
     }
@@ -163,12 +185,19 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
         for (int k = 0; k < sets[set]->np; k++) {
             const rad_vec3 *o = sets[set]->v + sets[set]->first[k];
             int no = sets[set]->first[k + 1] - sets[set]->first[k];
-            for (int l = 1; l + 1 < no; l++) {
+            /* the piece as a fan of quadrilaterals o0 o_l o_l+1 o_l+2
+             * (convex, as the piece is) and at most one triangle, or of
+             * triangles alone for the 3-point rule */
+            for (int l = 1; l + 1 < no;) {
                 tri_node *t = &sp->node[*nleaf];
+                t->nv = c->order >= 2 && l + 2 < no ? 4 : 3;
                 t->p[0] = o[0];
-                t->p[1] = o[l];
-                t->p[2] = o[l + 1];
-                t->area = 0.5 * v3_norm(v3_cross(v3_sub(o[l], o[0]), v3_sub(o[l + 1], o[0])));
+                for (int v = 1; v < t->nv; v++)
+                    t->p[v] = o[l + v - 1];
+                l += t->nv - 2;
+                t->area = t->nv == 4 ? poly_area(t->p, 4)
+                                     : 0.5 * v3_norm(v3_cross(v3_sub(t->p[1], t->p[0]),
+                                                              v3_sub(t->p[2], t->p[0])));
                 if (!(t->area > 0))
                     continue;
                 if (node_eval(sp, c, t))

@@ -27,9 +27,10 @@
  * cut the pieces along the event planes of each blocker (occdomain.c,
  * split_events; in default mode only where the events happen
  * (occevent.c) for a pair with few blockers that meets its target so;
- * occhidden.c, orient_integral), integrate with collapsed Gauss rules of rising order
- * (occrule.c; up to OCC_ORDER_DEFAULT / OCC_ORDER_REFERENCE) and split
- * triangles where the order does not help, until the estimated error is
+ * occhidden.c, orient_integral), integrate with Gauss product rules of
+ * rising order on quadrilateral and triangular cells (occrule.c; up to
+ * OCC_ORDER_DEFAULT / OCC_ORDER_REFERENCE) and split cells where the
+ * order does not help, until the estimated error is
  * below half the mode's promise (1e-6, 1e-9) of the occluded A_o F_ot
  * itself, down to pairs hidden to OCC_FLOOR = 1e-4 of their unoccluded
  * value (occhidden.c, integrate), or a pair's budget of leaves and

@@ -1,5 +1,6 @@
 /* occrule.c -- the quadrature rules of the hidden-part integral
- * (occhidden.c) on one triangle of the outer element.
+ * (occhidden.c) on one cell (triangle or quadrilateral) of the outer
+ * element.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -18,7 +19,11 @@
  * (A the triangle's area), and the k-point Gauss-Legendre rule (A & S
  * 25.4.29, gausstab.h) runs in u and in v.  A polynomial of degree d in x
  * becomes one of degree d + 1 in u (with the Jacobian's u) and d in v, so
- * the rule is exact for d <= 2k - 2.  Where hidden(x) is smooth (inside
+ * the rule is exact for d <= 2k - 2.  A convex quadrilateral piece of the
+ * domain is one cell, not two triangles: the product rule on its bilinear
+ * map (2, below) has the same exactness with the same k^2 points, so it
+ * halves the first evaluations of a quadrilateral piece and of its
+ * children.  Where hidden(x) is smooth (inside
  * the pieces that the event planes cut: occdomain.c) its error falls as
  * h^(2k - 1) with the triangle's size h, against h^3 for the 3-point rule,
  * so the adaptive rule of occhidden.c reaches 1e-9 of a pair's value with
@@ -48,52 +53,94 @@ static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double are
     return 0;
 }
 
-/* The collapsed k x k Gauss product rule (1).  Rules of odd order share
- * one point, u = v = 1/2 (the node 0 of each): with `center` not NULL
- * its value is taken from *center when that is not NaN, else stored
- * there, so that a triangle's rules of orders 1, 3 and 5 evaluate it once
- * (the point is computed by the same expression, so the value is the
- * same bit for bit). */
-static int rule_collapsed(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p,
-                          double area, double *q, double *center)
+/* The points and weights of the collapsed k x k Gauss product rule (1)
+ * on triangle p of area `area`. */
+static void points_collapsed(int k, const rad_vec3 *p, double area, rad_vec3 *x, double *w)
 {
-    const double *t = gl_nodes(k), *w = gl_weights(k);
+    const double *t = gl_nodes(k), *g = gl_weights(k);
     const rad_vec3 e1 = v3_sub(p[1], p[0]), e2 = v3_sub(p[2], p[1]);
-    double sum = 0;
     for (int a = 0; a < k; a++) {
         const double u = 0.5 * (1 + t[a]); /* [-1, 1] to [0, 1] */
-        double row = 0;
         for (int b = 0; b < k; b++) {
             const double v = 0.5 * (1 + t[b]);
-            rad_vec3 x = v3_add(p[0], v3_add(v3_scale(e1, u), v3_scale(e2, u * v)));
-            double h;
-            const int mid = center && t[a] == 0 && t[b] == 0;
-            if (mid && !isnan(*center))
-                h = *center;
-            else if (occ_hidden_at(sp, c, x, &h))
-                return -1;
-            else if (mid)
-                *center = h;
-            row += w[b] * h;
+            x[a * k + b] = v3_add(p[0], v3_add(v3_scale(e1, u), v3_scale(e2, u * v)));
+            /* (1) with du dv = (1/2)(1/2) of the weights' [-1, 1] measure */
+            w[a * k + b] = 2 * area * 0.25 * g[a] * u * g[b];
         }
-        sum += w[a] * u * row;
     }
-    /* (1) with du dv = (1/2)(1/2) of the weights' [-1, 1] measure */
-    *q = 2 * area * 0.25 * sum;
-    return 0;
 }
 
-/* The collapsed rule of order k (1 <= k <= RAD_GAUSS_MAX); center as
- * for rule_collapsed (may be NULL). */
-int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
-                   double *q, double *center)
+/* The points and weights of the k x k Gauss product rule on the convex
+ * planar quadrilateral p0 p1 p2 p3, the image of the unit square under
+ * the bilinear map
+ *     x(u, v) = (1-u)(1-v) p0 + u(1-v) p1 + u v p2 + (1-u) v p3
+ *             = p0 + u a + v b + u v e,                                 (2)
+ * a = p1 - p0, b = p3 - p0, e = p2 - p3 - p1 + p0, with
+ *     dx = |x_u x x_v| du dv = |(a + v e) x (b + u e)| du dv
+ * (Stroud 1971, sec. 1.6; the isoparametric quadrilateral of finite
+ * elements, Zienkiewicz & Taylor, "The Finite Element Method", vol. 1,
+ * sec. 8.4).  On a plane e x e = 0 leaves the Jacobian affine in u and v,
+ * so the rule is exact, as (1) is, for polynomials of degree <= 2k - 2 in
+ * x; it spends none of its points crowding a collapsed corner, and one
+ * quadrilateral takes the points that two fan triangles would. */
+static void points_quad(int k, const rad_vec3 *p, rad_vec3 *x, double *w)
 {
-    return rule_collapsed(sp, c, k, p, area, q, center);
+    const double *t = gl_nodes(k), *g = gl_weights(k);
+    const rad_vec3 a = v3_sub(p[1], p[0]), b = v3_sub(p[3], p[0]),
+                   e = v3_sub(v3_sub(p[2], p[3]), a);
+    for (int i = 0; i < k; i++) {
+        const double u = 0.5 * (1 + t[i]);
+        const rad_vec3 xv = v3_add(b, v3_scale(e, u));
+        for (int j = 0; j < k; j++) {
+            const double v = 0.5 * (1 + t[j]);
+            x[i * k + j] = v3_add(p[0], v3_add(v3_add(v3_scale(a, u), v3_scale(b, v)),
+                                               v3_scale(e, u * v)));
+            w[i * k + j] = 0.25 * g[i] * g[j] * v3_norm(v3_cross(v3_add(a, v3_scale(e, v)), xv));
+        }
+    }
+}
+
+int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w)
+{
+    if (nv == 4)
+        points_quad(k, p, x, w);
+    else
+        points_collapsed(k, p, area, x, w);
+    return k * k;
+}
+
+/* The rule of order k (1 <= k <= RAD_GAUSS_MAX) on the cell p of nv (3 or
+ * 4) vertices: (1) on a triangle, (2) on a quadrilateral.  Rules of odd
+ * order share one point, u = v = 1/2 (the middle node of each): with
+ * `center` not NULL its value is taken from *center when that is not NaN,
+ * else stored there, so that a cell's rules of orders 1, 3 and 5 evaluate
+ * it once (the point is computed by the same expression, so the value is
+ * the same bit for bit). */
+int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, int nv,
+                   double area, double *q, double *center)
+{
+    rad_vec3 x[RAD_GAUSS_MAX * RAD_GAUSS_MAX];
+    double w[RAD_GAUSS_MAX * RAD_GAUSS_MAX];
+    const int n = occ_rule_points(k, p, nv, area, x, w);
+    const int mid = center && k % 2 ? (k / 2) * k + k / 2 : -1;
+    double sum = 0;
+    for (int l = 0; l < n; l++) {
+        double h;
+        if (l == mid && !isnan(*center))
+            h = *center;
+        else if (occ_hidden_at(sp, c, x[l], &h))
+            return -1;
+        else if (l == mid)
+            *center = h;
+        sum += w[l] * h;
+    }
+    *q = sum;
+    return 0;
 }
 
 /* The integral of hidden(x) over triangle p (area `area`) by c's rule. */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)
 {
-    return c->order >= 2 ? rule_collapsed(sp, c, c->order, p, area, q, NULL)
+    return c->order >= 2 ? occ_rule_order(sp, c, c->order, p, 3, area, q, NULL)
                          : rule3(sp, c, p, area, q);
 }

@@ -34,8 +34,8 @@
 /* Per-pair error targets, relative to the occluded A_i F_ij down to
  * OCC_FLOOR of the unoccluded one (occhidden.c, integrate), half of each
  * mode's promise (the kernel's error of the unoccluded S adds to it); the
- * order of the rule on a triangle (occrule.c); the largest number of
- * triangles the adaptive rule may use. */
+ * order of the rule on a cell (occrule.c); the largest number of cells
+ * the adaptive rule may use. */
 #define OCC_TOL_DEFAULT 5e-7
 #define OCC_TOL_REFERENCE 5e-10
 #define OCC_FLOOR 1e-4
@@ -106,12 +106,14 @@ static inline size_t pair_index(int a, int b, int ns)
     return (size_t)a * (size_t)(2 * ns - a - 1) / 2 + (size_t)(b - a - 1);
 }
 
-/* One triangle of the adaptive rule: its own 3-point value and those of its
- * four midpoint children. */
+/* One cell of the adaptive rule, a triangle or (default and reference
+ * modes) a convex quadrilateral: its own 3-point value and those of its
+ * four midpoint children (classic), or its product rules' values. */
 typedef struct tri_node {
-    rad_vec3 p[3];
+    rad_vec3 p[4];
+    int nv;                     /* its vertices, 3 or 4 */
     double area;
-    double q;                   /* the rule on the triangle */
+    double q;                   /* the rule on the cell */
     double qc[4];               /* the rule on each child */
     double err;                 /* its estimated error */
     double dlast;               /* the last difference of two orders */
@@ -199,9 +201,9 @@ typedef struct pair_ctx {
                                    each plane, OCC_SPLIT_WEDGES only where its
                                    event happens (occevent.c) */
     int direct;                 /* evaluate visible(x), not hidden(x) (occpoint.c) */
-    int order;                  /* the rule on a triangle (occrule.c): 0 the
-                                   3-point rule, k >= 2 the k x k collapsed
-                                   Gauss product */
+    int order;                  /* the rule on a cell (occrule.c): 0 the
+                                   3-point rule, k >= 2 the k x k Gauss
+                                   product (collapsed on a triangle) */
     double arc_tol;             /* the widest lens a chord of occeee.c may
                                    leave, a part of the chord (OCC_ARC_TOL_*) */
 } pair_ctx;
@@ -256,10 +258,13 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
 /* occpoint.c: hidden(x) */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
-/* occrule.c: the integral of hidden(x) over one triangle */
+/* occrule.c: the integral of hidden(x) over one cell */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
-int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, double area,
-                   double *q, double *center);
+/* The n = k^2 points x and weights w of occ_rule_order's rule of order k
+ * on cell p (nv 3 or 4 vertices, area `area`); returns n. */
+int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w);
+int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, int nv,
+                   double area, double *q, double *center);
 
 /* occleaves.c: the worst leaf and the sums, O(log n) per change.  Build
  * from node[0 .. n); set: node[k] changed and n leaves are in use (the
