@@ -59,28 +59,15 @@ static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
     memcpy(ch, t, sizeof t);
 }
 
-/* The four children of quadrilateral p: the images of the unit square's
- * quarters under its bilinear map (occrule.c, (2)), whose corners are the
- * edges' midpoints and the mean of the four vertices. */
-static void quad_children(const rad_vec3 *p, rad_vec3 ch[4][4])
-{
-    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
-             m23 = v3_lerp(p[2], p[3], 0.5), m30 = v3_lerp(p[3], p[0], 0.5),
-             mid = v3_lerp(m01, m23, 0.5);
-    rad_vec3 t[4][4] = {{p[0], m01, mid, m30}, {m01, p[1], m12, mid},
-                        {mid, m12, p[2], m23}, {m30, mid, m23, p[3]}};
-    memcpy(ch, t, sizeof t);
-}
-
 /* A node's value and error estimate from its cell (t->p, t->nv, t->area).
  * With the 3-point rule (c->order 0): the rule on the triangle (q) and on
  * its four midpoint children (qc), the value their sum and the estimate
- * |q - sum qc|.  With the collapsed rules (occrule.c): the rules of
+ * |q - sum qc|.  With the product rules (occrule.c): the rules of
  * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
  * and node_raise goes on from there (the three rules take 13
  * evaluations, not 14: orders 1 and 3 share their centre point, and order
- * 5 reuses it; occrule.c).  Where hidden(x) is analytic on the triangle
+ * 5 reuses it; occrule.c).  Where hidden(x) is analytic on the cell
  * the rule's error falls geometrically with the order, so each
  * difference bounds the error of the better rule; the larger of the last
  * two stands in for the case where two rules agree by chance (seen: Q2
@@ -120,10 +107,10 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
     return 0;
 }
 
-/* Raise a collapsed node's order by one: the new rule's value, and the
+/* Raise a node's order by one: the new rule's value, and the
  * estimate (2) of its last two differences.  When the new difference is
  * not at most half the one before, hidden(x) is not smooth on the
- * triangle (a kink of an event that no plane cut, where the order does not
+ * cell (a kink of an event that no plane cut, where the order does not
  * help), and the node is marked to be split instead. */
 static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
@@ -148,7 +135,7 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
     tri_node parent = sp->node[k];
     rad_vec3 ch[4][3], cq[4][4];
     if (parent.nv == 4)
-        quad_children(parent.p, cq);
+        occ_quad_children(parent.p, cq);
     else
         children(parent.p, ch);
     for (int l = 0; l < 4; l++) {
@@ -167,7 +154,7 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
     return 0;
 }
 
-/* The first leaves: the fan triangles of the pieces of sp->dom and
+/* The first leaves: the fan cells of the pieces of sp->dom and
  * sp->umb, evaluated; *nleaf their count.  0, or -1.  With c->direct the
  * integrand visible(x) is 0 on sp->umb's pieces (each inside an umbra:
  * one blocker hides all of the inner element from every point of it), so
@@ -212,7 +199,7 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
  * estimated error *error.  When `adaptive`, the leaf with the largest
  * estimate is split while the sum of the estimates exceeds
  *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
- * and fewer than max_leaves triangles are in use (*met: it ended below
+ * and fewer than max_leaves cells are in use (*met: it ended below
  * tau, or was not adaptive): `whole` is the
  * unoccluded integral S / (2 pi), so whole - value is the visible part,
  * the occluded A_o F_ot itself, and the target is relative to it down to

@@ -15,6 +15,9 @@
  *                domain of that integral: penumbras, umbras, events);
  *   occpoint.c   the hidden part seen from one point (cone cuts, shadows,
  *                the point-to-polygon form factor);
+ * with helpers of one job each too: occrule.c (the quadrature rules on one
+ * cell of that integral), occleaves.c (the cell with the largest error
+ * estimate), occevent.c and occeee.c (events, for occdomain.c); all
  * on the polygon toolkit (polygon.h: distances, clipping, area) and the
  * growable lists of convex pieces of occspace.c (with the tolerances).
  *

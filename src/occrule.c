@@ -25,13 +25,14 @@
  * halves the first evaluations of a quadrilateral piece and of its
  * children.  Where hidden(x) is smooth (inside
  * the pieces that the event planes cut: occdomain.c) its error falls as
- * h^(2k - 1) with the triangle's size h, against h^3 for the 3-point rule,
+ * h^(2k - 1) with the cell's size h, against h^3 for the 3-point rule,
  * so the adaptive rule of occhidden.c reaches 1e-9 of a pair's value with
  * a few levels instead of millions of triangles.
  */
 #include <config.h>
 
 #include <math.h>
+#include <string.h>
 
 #include "gausstab.h"
 #include "occspace.h"
@@ -82,7 +83,11 @@ static void points_collapsed(int k, const rad_vec3 *p, double area, rad_vec3 *x,
  * sec. 8.4).  On a plane e x e = 0 leaves the Jacobian affine in u and v,
  * so the rule is exact, as (1) is, for polynomials of degree <= 2k - 2 in
  * x; it spends none of its points crowding a collapsed corner, and one
- * quadrilateral takes the points that two fan triangles would. */
+ * quadrilateral takes half the points of its two fan triangles.  The map
+ * covers the cell once only when the cell is convex (the pieces of the
+ * domain are: each is a convex polygon cut by planes); |J| then never
+ * changes sign, and a repeated vertex or three in a line only make it
+ * vanish at a corner, where the rule stays exact. */
 static void points_quad(int k, const rad_vec3 *p, rad_vec3 *x, double *w)
 {
     const double *t = gl_nodes(k), *g = gl_weights(k);
@@ -98,6 +103,18 @@ static void points_quad(int k, const rad_vec3 *p, rad_vec3 *x, double *w)
             w[i * k + j] = 0.25 * g[i] * g[j] * v3_norm(v3_cross(v3_add(a, v3_scale(e, v)), xv));
         }
     }
+}
+
+void occ_quad_children(const rad_vec3 *p, rad_vec3 ch[4][4])
+{
+    /* the corners of the quarters: the edges' midpoints and x(1/2, 1/2),
+     * the mean of the four vertices */
+    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
+             m23 = v3_lerp(p[2], p[3], 0.5), m30 = v3_lerp(p[3], p[0], 0.5),
+             mid = v3_lerp(m01, m23, 0.5);
+    rad_vec3 t[4][4] = {{p[0], m01, mid, m30}, {m01, p[1], m12, mid},
+                        {mid, m12, p[2], m23}, {m30, mid, m23, p[3]}};
+    memcpy(ch, t, sizeof t);
 }
 
 int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w)

@@ -117,7 +117,7 @@ typedef struct tri_node {
     double qc[4];               /* the rule on each child */
     double err;                 /* its estimated error */
     double dlast;               /* the last difference of two orders */
-    int order;                  /* the collapsed rule's order (occrule.c), or 0 */
+    int order;                  /* the product rule's order (occrule.c), or 0 */
     int stalled;                /* raising the order did not help: split */
     double center;              /* hidden(x) at the point the odd orders
                                    share, or NaN (occrule.c) */
@@ -258,13 +258,18 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
 /* occpoint.c: hidden(x) */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
-/* occrule.c: the integral of hidden(x) over one cell */
+/* occrule.c: the integral of hidden(x) over one cell.  occ_rule: c's
+ * rule on a triangle (the 3-point rule, or the collapsed product of
+ * order c->order); occ_rule_order: the product rule of order k on a cell
+ * of nv vertices; occ_quad_children: the four quarters of a convex
+ * quadrilateral's bilinear map, in which a cell is split. */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
 /* The n = k^2 points x and weights w of occ_rule_order's rule of order k
  * on cell p (nv 3 or 4 vertices, area `area`); returns n. */
 int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w);
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, int nv,
                    double area, double *q, double *center);
+void occ_quad_children(const rad_vec3 *p, rad_vec3 ch[4][4]);
 
 /* occleaves.c: the worst leaf and the sums, O(log n) per change.  Build
  * from node[0 .. n); set: node[k] changed and n leaves are in use (the

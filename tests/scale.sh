@@ -207,7 +207,11 @@ ok $? "furnace emitting 8e307: B = E / (1 - rho) = 1.6e308 within 1e-9"
 # and (I - rho F_u)^-1 = sum (rho F_u)^k has no negative entry, so
 #     |B_u - B_s| <= (I - rho F_u)^-1 rho (e_u + e_s) B_s,
 # e the estimates' matrices; solved here by python (partial pivoting),
-# plus 1e-12 of B for the solves' round-off.
+# plus 1e-12 of B for the solves' round-off.  That bound is as loose as
+# the estimates (up to 4e-4 of B here, where some pairs of this coarse
+# mesh miss the promise), so B must also stay within 1e-7 relative: an
+# observed ceiling (1.1e-8 was seen, from domains cut differently), there
+# to catch a change that inflates the estimates and so the bound.
 box="$top_srcdir/data/cornell-box.scene"
 "$RADIOSITY" solve -q --mesh 2x2 --elements "$work/box.tsv" "$box" 2> "$work/err" &&
   "$RADIOSITY" formfactor -q --mesh 2x2 -o "$work/box-F.tsv" "$box" 2> "$work/err"
@@ -248,11 +252,14 @@ Fu, Fs = ff(fu), ff(fs)
 cu, ru = table(bu)
 cs, rs = table(bs)
 n = len(ru)
-worst_f = 0.0
+# every ratio is counted, so that a NaN fails (max() would pass over it)
+bad, worst_f = 0, 0.0
 for k, (f, e) in Fu.items():
     g, es = Fs[k]
-    worst_f = max(worst_f, abs(f - g) / (e + es + 1e-15))
-worst_b = 0.0
+    r = abs(f - g) / (e + es + 1e-15)
+    bad += not r <= 1
+    worst_f = max(worst_f, r)
+worst_b, worst_rel = 0.0, 0.0
 for band in "rgb":
     b = [float(r[cs[band]]) for r in rs]
     p = [surf[int(r[cu["surface"]])]["rgb".index(band)] for r in ru]
@@ -274,12 +281,14 @@ for band in "rgb":
         x[c] = (x[c] - sum(a[c][j] * x[j] for j in range(c + 1, n))) / a[c][c]
     for i in range(n):
         d = abs(float(ru[i][cu[band]]) - b[i])
-        worst_b = max(worst_b, d / (x[i] + 1e-12 * abs(b[i]) + 1e-300))
-print("%.3g %.3g" % (worst_f, worst_b))
-sys.exit(0 if worst_f <= 1 and worst_b <= 1 and n >= 100 else 1)
+        r, rel = d / (x[i] + 1e-12 * abs(b[i]) + 1e-300), d / abs(b[i]) if b[i] else d
+        bad += not (r <= 1 and rel <= 1e-7)
+        worst_b, worst_rel = max(worst_b, r), max(worst_rel, rel)
+print("%.3g %.3g, B within %.3g relative" % (worst_f, worst_b, worst_rel))
+sys.exit(0 if bad == 0 and n >= 100 else 1)
 PY
 )
-  ok $? "Cornell box scaled by $s: F within the two estimates of unit scale's, B within the bound they give (worst shares of the bounds: $w)"
+  ok $? "Cornell box scaled by $s: F within the two estimates of unit scale's, B within the bound they give and 1e-7 (worst shares of the bounds: $w)"
 done
 
 # the race of Cohen et al. 1988 weighs errors by area: the same curves at

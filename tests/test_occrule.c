@@ -1,9 +1,9 @@
 /* test_occrule.c -- the points and weights of the hidden-part rules
  * (src/occrule.c, occ_rule_points): the collapsed rule on a triangle and
  * the bilinear product rule on a quadrilateral integrate polynomials of
- * degree <= 2k - 2 exactly, and a quadrilateral's four children
- * (occhidden.c splits a cell at its edges' midpoints and its vertices'
- * mean) add up to it.
+ * degree <= 2k - 2 exactly, a quadrilateral's four children
+ * (occ_quad_children: at its edges' midpoints and its vertices' mean) add
+ * up to it, and the odd orders share their middle point with order 1.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -112,19 +112,34 @@ int main(void)
     double wx = worst(q, 4, N, dirs, o, 2);
     tap_ok(wx > 1e-9, "quadrilateral: not exact two degrees past the claim (%.2g)", wx);
 
-    /* the children of a split (occhidden.c, quad_children) tile the cell:
-     * the order-5 rule on the four children integrates s^8 exactly, so
-     * their sum is the exact integral over the parent */
-    const rad_vec3 m01 = v3_lerp(q[0], q[1], 0.5), m12 = v3_lerp(q[1], q[2], 0.5),
-                   m23 = v3_lerp(q[2], q[3], 0.5), m30 = v3_lerp(q[3], q[0], 0.5),
-                   mid = v3_lerp(m01, m23, 0.5);
-    const rad_vec3 ch[4][4] = {{q[0], m01, mid, m30}, {m01, q[1], m12, mid},
-                               {mid, m12, q[2], m23}, {m30, mid, m23, q[3]}};
+    /* the children of a split (occ_quad_children) tile the cell: the
+     * order-5 rule on the four children integrates s^8 exactly, so their
+     * sum is the exact integral over the parent */
+    rad_vec3 ch[4][4];
+    occ_quad_children(q, ch);
     double sum = 0;
     for (int l = 0; l < 4; l++)
         sum += by_rule(5, ch[l], 4, 0, dirs[2], o, 8);
     const double e = exact(q, 4, N, dirs[2], o, 8);
     tap_ok(fabs(sum - e) <= 1e-12 * fabs(e), "four children of the quadrilateral add up to it "
            "(s^8, order 5: %.2g relative)", fabs(sum - e) / fabs(e));
+
+    /* occ_rule_order evaluates the point u = v = 1/2 once for orders 1, 3
+     * and 5 (its index (k/2) k + k/2): that point must be the same, bit
+     * for bit, in each */
+    int same = 1;
+    for (int nv = 3; nv <= 4; nv++) {
+        const rad_vec3 *p = nv == 4 ? q : t;
+        rad_vec3 x1[1], x[RAD_GAUSS_MAX * RAD_GAUSS_MAX];
+        double w1[1], w[RAD_GAUSS_MAX * RAD_GAUSS_MAX];
+        occ_rule_points(1, p, nv, 1.0, x1, w1);
+        for (int k = 3; k <= 9; k += 2) {
+            occ_rule_points(k, p, nv, 1.0, x, w);
+            const rad_vec3 m = x[(k / 2) * k + k / 2];
+            same &= m.x == x1[0].x && m.y == x1[0].y && m.z == x1[0].z;
+        }
+    }
+    tap_ok(same, "the odd orders' middle point is order 1's, bit for bit (triangle and "
+           "quadrilateral, k = 3..9)");
     return tap_done();
 }
