@@ -401,6 +401,23 @@ static int cut_triple(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int n
     return crosses_outer(l, o, no, tiny) ? cut_event(sp, c, l, tiny) : 0;
 }
 
+/* Might blocker edge p0 p1 hold a point of an event?  The transversal
+ * runs from x on the outer element through the edge to the inner one, so
+ * that point lies in the pair's shaft conv(outer u inner) (occshaft.c's
+ * face planes sp->hn/ha, outward normals): an edge whose two ends lie
+ * beyond one face plane, by more than c->snap even when it is lengthened
+ * by happens()'s slack at each end, holds none. */
+static int edge_in_shaft(const occ_space *sp, const pair_ctx *c, rad_vec3 p0, rad_vec3 p1)
+{
+    const rad_vec3 u = v3_scale(v3_sub(p1, p0), 0.1);
+    const rad_vec3 a = v3_sub(p0, u), b = v3_add(p1, u);
+    for (int h = 0; h < sp->nhull; h++)
+        if (v3_dot(sp->hn[h], v3_sub(a, sp->ha[h])) > c->snap &&
+            v3_dot(sp->hn[h], v3_sub(b, sp->ha[h])) > c->snap)
+            return 0;
+    return 1;
+}
+
 int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
 {
     if (c->nb > OCC_EEE_BLOCKERS)
@@ -414,7 +431,8 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
             for (int i = 0; i < na; i++)
                 for (int j = 0; j < nb; j++) {
                     rad_vec3 a0 = pa[i], a1 = pa[(i + 1) % na], b0 = pb[j], b1 = pb[(j + 1) % nb];
-                    if (share_end(a0, a1, b0, b1, c->snap))
+                    if (share_end(a0, a1, b0, b1, c->snap) || !edge_in_shaft(sp, c, a0, a1) ||
+                        !edge_in_shaft(sp, c, b0, b1))
                         continue;
                     for (int k = 0; k < c->nt && sp->dom.np > 0; k++)
                         if (cut_triple(sp, c, o, no, a0, a1, b0, b1, c->t[k],

@@ -429,6 +429,7 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
         if (nh < 0)
             return -1;
     }
+    sp->nhull = nh;
     rad_vec3 lo, hi;
     v3_bounds(all, nall, &lo, &hi);
     lo = v3_add(lo, origin); /* the boxes are in scene coordinates */

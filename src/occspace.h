@@ -178,6 +178,9 @@ typedef struct occ_space {
     int caphn, capha;
     tri_node *node;
     int capnode;
+    int nhull;                  /* the pair's shaft: the face planes
+                                   hn/ha[0 .. nhull) of occshaft.c (0: not
+                                   built, with culling off) */
     occ_leaves leaves;          /* the tree of sp->node's leaves */
     double snap;                /* the pair's tolerance: o->snap plus the
                                    twists of its surfaces and candidates */
