@@ -50,15 +50,6 @@
 #include "vec.h"
 
 
-/* The four midpoint children of triangle p. */
-static void children(const rad_vec3 *p, rad_vec3 ch[4][3])
-{
-    rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
-             m20 = v3_lerp(p[2], p[0], 0.5);
-    rad_vec3 t[4][3] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m12, m20, m01}};
-    memcpy(ch, t, sizeof t);
-}
-
 /* A node's value and error estimate from its cell (t->p, t->nv, t->area).
  * With the 3-point rule (c->order 0): the rule on the triangle (q) and on
  * its four midpoint children (qc), the value their sum and the estimate
@@ -91,8 +82,8 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
         t->stalled = 0;
         return 0;
     }
-    rad_vec3 ch[4][3];
-    children(t->p, ch);
+    rad_vec3 ch[4][4];
+    occ_cell_children(t->p, 3, ch);
     double sum = 0;
     if (occ_rule(sp, c, t->p, t->area, &t->q))
         return -1;
@@ -133,21 +124,15 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
     if (occ_grow_node(&sp->node, &sp->capnode, *nleaf + 3))
         return -1;
     tri_node parent = sp->node[k];
-    rad_vec3 ch[4][3], cq[4][4];
-    if (parent.nv == 4)
-        occ_quad_children(parent.p, cq);
-    else
-        children(parent.p, ch);
+    rad_vec3 ch[4][4];
+    occ_cell_children(parent.p, parent.nv, ch);
     for (int l = 0; l < 4; l++) {
         tri_node *t = l == 0 ? &sp->node[k] : &sp->node[(*nleaf)++];
         t->nv = parent.nv;
-        if (parent.nv == 4) {
-            memcpy(t->p, cq[l], sizeof cq[l]);
-            t->area = poly_area(t->p, 4);
-        } else {
-            memcpy(t->p, ch[l], sizeof ch[l]);
-            t->area = 0.25 * parent.area;
-        }
+        memcpy(t->p, ch[l], sizeof ch[l]);
+        /* a triangle's midpoint children are quarters; a quadrilateral's
+         * are not, unless it is a parallelogram */
+        t->area = parent.nv == 4 ? poly_area(t->p, 4) : 0.25 * parent.area;
         if (node_eval(sp, c, t))
             return -1;
     }

@@ -74,7 +74,6 @@ int occ_leaves_build(occ_leaves *lt, const tri_node *node, int n)
         put(lt, node, k, n);
     for (int i = cap - 1; i >= 1; i--)
         pull(lt, node, i);
-    lt->n = n;
     return 0;
 }
 
@@ -82,7 +81,6 @@ int occ_leaves_set(occ_leaves *lt, const tri_node *node, int k, int n)
 {
     if (n > lt->cap)
         return occ_leaves_build(lt, node, n);
-    lt->n = n;
     put(lt, node, k, n);
     for (int i = (lt->cap + k) / 2; i >= 1; i /= 2)
         pull(lt, node, i);
@@ -96,5 +94,5 @@ void occ_leaves_free(occ_leaves *lt)
     free(lt->val);
     lt->best = NULL;
     lt->err = lt->val = NULL;
-    lt->alloc = lt->cap = lt->n = 0;
+    lt->alloc = lt->cap = 0;
 }

@@ -105,9 +105,17 @@ static void points_quad(int k, const rad_vec3 *p, rad_vec3 *x, double *w)
     }
 }
 
-void occ_quad_children(const rad_vec3 *p, rad_vec3 ch[4][4])
+void occ_cell_children(const rad_vec3 *p, int nv, rad_vec3 ch[4][4])
 {
-    /* the corners of the quarters: the edges' midpoints and x(1/2, 1/2),
+    if (nv == 3) { /* the midpoint triangles (their fourth vertex unused) */
+        rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
+                 m20 = v3_lerp(p[2], p[0], 0.5);
+        rad_vec3 t[4][4] = {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]},
+                            {m12, m20, m01}};
+        memcpy(ch, t, sizeof t);
+        return;
+    }
+    /* the quarters of (2): corners at the edges' midpoints and x(1/2, 1/2),
      * the mean of the four vertices */
     rad_vec3 m01 = v3_lerp(p[0], p[1], 0.5), m12 = v3_lerp(p[1], p[2], 0.5),
              m23 = v3_lerp(p[2], p[3], 0.5), m30 = v3_lerp(p[3], p[0], 0.5),

@@ -131,7 +131,6 @@ typedef struct occ_leaves {
     double *err, *val;
     int cap;                    /* leaves the tree holds (a power of 2) */
     int alloc;                  /* leaves the arrays can hold */
-    int n;                      /* leaves in use */
 } occ_leaves;
 
 /* A list of polygons sharing one vertex array. */
@@ -264,15 +263,16 @@ int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 /* occrule.c: the integral of hidden(x) over one cell.  occ_rule: c's
  * rule on a triangle (the 3-point rule, or the collapsed product of
  * order c->order); occ_rule_order: the product rule of order k on a cell
- * of nv vertices; occ_quad_children: the four quarters of a convex
- * quadrilateral's bilinear map, in which a cell is split. */
+ * of nv vertices; occ_cell_children: the four children a cell is split
+ * into (a triangle's midpoint triangles, or the quarters of a
+ * quadrilateral's bilinear map). */
 int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
 /* The n = k^2 points x and weights w of occ_rule_order's rule of order k
  * on cell p (nv 3 or 4 vertices, area `area`); returns n. */
 int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w);
 int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, int nv,
                    double area, double *q, double *center);
-void occ_quad_children(const rad_vec3 *p, rad_vec3 ch[4][4]);
+void occ_cell_children(const rad_vec3 *p, int nv, rad_vec3 ch[4][4]);
 
 /* occleaves.c: the worst leaf and the sums, O(log n) per change.  Build
  * from node[0 .. n); set: node[k] changed and n leaves are in use (the

@@ -2,7 +2,7 @@
  * (src/occrule.c, occ_rule_points): the collapsed rule on a triangle and
  * the bilinear product rule on a quadrilateral integrate polynomials of
  * degree <= 2k - 2 exactly, a quadrilateral's four children
- * (occ_quad_children: at its edges' midpoints and its vertices' mean) add
+ * (occ_cell_children: at its edges' midpoints and its vertices' mean) add
  * up to it, and the odd orders share their middle point with order 1.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
@@ -112,11 +112,11 @@ int main(void)
     double wx = worst(q, 4, N, dirs, o, 2);
     tap_ok(wx > 1e-9, "quadrilateral: not exact two degrees past the claim (%.2g)", wx);
 
-    /* the children of a split (occ_quad_children) tile the cell: the
+    /* the children of a split (occ_cell_children) tile the cell: the
      * order-5 rule on the four children integrates s^8 exactly, so their
      * sum is the exact integral over the parent */
     rad_vec3 ch[4][4];
-    occ_quad_children(q, ch);
+    occ_cell_children(q, 4, ch);
     double sum = 0;
     for (int l = 0; l < 4; l++)
         sum += by_rule(5, ch[l], 4, 0, dirs[2], o, 8);
