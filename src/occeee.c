@@ -175,10 +175,21 @@ static int quad_roots(double a, double b, double c, double r[2])
 /* The crossings of the conic g = 0 with the boundary of convex piece p
  * (n vertices), at most 4, into x[]; returns their count.  On each edge
  * g(s) = g0 (1 - s)(1 - 2 s) + 4 gm s (1 - s) + g1 s (2 s - 1) (the
- * quadratic through s = 0, 1/2, 1); roots in [0, 1), so that a root at a
- * vertex counts once.  `tiny` is g's round-off scale: an edge where the
- * three values are below it lies on the conic and gives no crossing. */
-static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, rad_vec3 *x)
+ * quadratic through s = 0, 1/2, 1).  `tiny` is g's round-off scale: an
+ * edge where the three values are below it lies on the conic and gives no
+ * crossing.  A conic through a vertex has its root there on both edges,
+ * each a little inside or outside its edge by round-off: roots are taken
+ * within ROOT_SLACK of [0, 1] and clamped, and a crossing within tol of
+ * the one before it (or of the first) is the same one.  (Taking [0, 1)
+ * lost such a crossing when both roots fell outside: the conic of a
+ * Cornell box pair runs through the corner where the plane of a blocker
+ * vertex and the inner edge meets the plane of that vertex and the other
+ * blocker's edge, a vertex of the pieces, and a piece it crossed there
+ * was left uncut, 4e-5 of the pair's value off with an estimate of
+ * 1e-15.) */
+#define ROOT_SLACK 1e-9
+static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, double tol,
+                     rad_vec3 *x)
 {
     int nx = 0;
     double g0 = g_at(l, p[0]), gfirst = g0;
@@ -193,9 +204,20 @@ static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, rad_
             continue;
         double r[2];
         const int nr = quad_roots(a, b, c0, r);
-        for (int m = 0; m < nr && nx < 4; m++)
-            if (r[m] >= 0 && r[m] < 1)
-                x[nx++] = v3_lerp(p0, p1, r[m]);
+        if (nr == 2 && r[1] < r[0]) {
+            double t = r[0];
+            r[0] = r[1];
+            r[1] = t;
+        }
+        for (int m = 0; m < nr && nx < 4; m++) {
+            if (!(r[m] >= -ROOT_SLACK && r[m] <= 1 + ROOT_SLACK))
+                continue;
+            rad_vec3 q = v3_lerp(p0, p1, fmin(fmax(r[m], 0), 1));
+            if (nx > 0 && (v3_norm(v3_sub(q, x[nx - 1])) <= tol ||
+                           v3_norm(v3_sub(q, x[0])) <= tol))
+                continue;
+            x[nx++] = q;
+        }
     }
     return nx;
 }
@@ -315,7 +337,7 @@ static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double t
         if (ns < 3 || !(poly_area(sp->pj1, ns) > 0))
             continue;
         rad_vec3 xs[4];
-        int nxs = crossings(l, sp->pj1, ns, tiny, xs);
+        int nxs = crossings(l, sp->pj1, ns, tiny, c->snap, xs);
         if (nxs >= 2 ? cut_chord(sp, c, sp->pj1, ns, xs[0], xs[1])
                      : occ_ps_push(&sp->db, sp->pj1, ns))
             return -1;
@@ -332,7 +354,7 @@ static int cut_event(occ_space *sp, const pair_ctx *c, const line3 *l, double ti
         const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
         int n = sp->dom.first[k + 1] - sp->dom.first[k];
         rad_vec3 x[4];
-        int nx = crossings(l, p, n, tiny, x);
+        int nx = crossings(l, p, n, tiny, c->snap, x);
         int cut = nx >= 2 && happens(l, x[0], x[1]);
         if (cut ? follow_arc(sp, c, l, tiny, p, n, x[0], x[1]) : occ_ps_push(&sp->db, p, n))
             return -1;
@@ -366,10 +388,10 @@ static int any_parallel(const line3 *l)
 
 /* Is the conic of l crossed by outer polygon o's boundary where its event
  * happens?  (The test before the pieces are looked at.) */
-static int crosses_outer(const line3 *l, const rad_vec3 *o, int no, double tiny)
+static int crosses_outer(const line3 *l, const rad_vec3 *o, int no, double tiny, double tol)
 {
     rad_vec3 x[4];
-    int nx = crossings(l, o, no, tiny, x);
+    int nx = crossings(l, o, no, tiny, tol, x);
     for (int k = 0; k + 1 < nx; k++)
         if (happens(l, x[k], x[k + 1]))
             return 1;
@@ -398,7 +420,7 @@ static int cut_triple(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int n
     double s = v3_norm(v3_sub(l[0].a, oo)) * v3_norm(v3_sub(l[1].a, oo)) *
                v3_norm(v3_sub(l[2].a, oo)) * v3_norm(l[0].u) * v3_norm(l[1].u) * v3_norm(l[2].u);
     double tiny = 1e-12 * s;
-    return crosses_outer(l, o, no, tiny) ? cut_event(sp, c, l, tiny) : 0;
+    return crosses_outer(l, o, no, tiny, c->snap) ? cut_event(sp, c, l, tiny) : 0;
 }
 
 /* Might blocker edge p0 p1 hold a point of an event?  The transversal
