@@ -29,7 +29,10 @@
  * the surfaces that meet the bounding box of the surfaces' shaft), and
  * per pair of elements only against that short list.  When no pair of
  * surfaces has a candidate (a convex room seen from inside), the scene
- * needs no visibility work and rad_occ_create says so.
+ * needs no visibility work and rad_occ_create says so.  Last, a pair's
+ * list loses the faces of a convex block that the block's other faces
+ * make redundant for it (occsolid.c): a segment through a box crosses
+ * two of its faces.
  */
 #include <config.h>
 
@@ -341,6 +344,11 @@ void rad_occ_free(rad_occ *o)
     free(o->stwist);
     free(o->esurf);
     free(o->twin);
+    free(o->solid);
+    free(o->hfirst);
+    free(o->hnrm);
+    free(o->hpt);
+    free(o->hopen);
     free(o->cand_off);
     free(o->cand);
     free(o);
@@ -387,6 +395,8 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = find_twins(o);
+    if (s == RAD_OK && mode != RAD_OCC_ALL)
+        s = occ_find_solids(o);
     if (s == RAD_OK)
         s = rad_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
     else
@@ -451,5 +461,5 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
         }
         sp->bid[nb++] = c;
     }
-    return nb;
+    return o->mode == RAD_OCC_ALL ? nb : occ_solid_cull(o, sp, nb, origin);
 }

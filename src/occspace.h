@@ -98,6 +98,11 @@ struct rad_occ {
     size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
     int *cand;
     double snap;                /* absolute tolerance (see OCC_SNAP) */
+    int *solid;                 /* each surface's convex solid (occsolid.c), or -1 */
+    int nsolid;
+    int *hfirst;                /* solid g's face planes: [hfirst[g], hfirst[g+1]) */
+    rad_vec3 *hnrm, *hpt;       /* outward unit normal, a point */
+    unsigned char *hopen;       /* the solid's surfaces do not cover the facet */
 };
 
 /* Index of the unordered surface pair a < b among ns(ns-1)/2. */
@@ -245,6 +250,10 @@ int occ_clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const r
 double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand);
 int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
                       const rad_ff_poly *pj, rad_vec3 origin);
+
+/* occsolid.c: convex solids, and the faces a pair may leave out */
+rad_status occ_find_solids(rad_occ *o);
+int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
