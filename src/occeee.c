@@ -179,8 +179,9 @@ static int quad_roots(double a, double b, double c, double r[2])
  * edge where the three values are below it lies on the conic and gives no
  * crossing.  A conic through a vertex has its root there on both edges,
  * each a little inside or outside its edge by round-off: roots are taken
- * within ROOT_SLACK of [0, 1] and clamped, and a crossing within tol of
- * the one before it (or of the first) is the same one.  (Taking [0, 1)
+ * within ROOT_SLACK of [0, 1] and clamped, a root at a vertex counts only
+ * where the conic crosses there (crosses_at), and a crossing within tol
+ * of the one before it (or of the first) is the same one.  (Taking [0, 1)
  * lost such a crossing when both roots fell outside: the conic of a
  * Cornell box pair runs through the corner where the plane of a blocker
  * vertex and the inner edge meets the plane of that vertex and the other
@@ -188,6 +189,20 @@ static int quad_roots(double a, double b, double c, double r[2])
  * was left uncut, 4e-5 of the pair's value off with an estimate of
  * 1e-15.) */
 #define ROOT_SLACK 1e-9
+
+/* Does the conic cross the boundary of p at vertex v (rather than touch
+ * it from outside, where a conic through the corner of two event planes
+ * enters two of the four pieces and touches the other two)?  g on either
+ * side of v, a millionth along each edge: of opposite signs, or either
+ * within round-off (when in doubt, a crossing). */
+static int crosses_at(const line3 *l, const rad_vec3 *p, int n, int v, double tiny)
+{
+    const rad_vec3 a = v3_lerp(p[v], p[(v + n - 1) % n], 1e-6);
+    const rad_vec3 b = v3_lerp(p[v], p[(v + 1) % n], 1e-6);
+    const double ga = g_at(l, a), gb = g_at(l, b);
+    return fabs(ga) <= tiny || fabs(gb) <= tiny || (ga > 0) != (gb > 0);
+}
+
 static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, double tol,
                      rad_vec3 *x)
 {
@@ -212,6 +227,9 @@ static int crossings(const line3 *l, const rad_vec3 *p, int n, double tiny, doub
         for (int m = 0; m < nr && nx < 4; m++) {
             if (!(r[m] >= -ROOT_SLACK && r[m] <= 1 + ROOT_SLACK))
                 continue;
+            if ((r[m] <= ROOT_SLACK && !crosses_at(l, p, n, k, tiny)) ||
+                (r[m] >= 1 - ROOT_SLACK && !crosses_at(l, p, n, (k + 1) % n, tiny)))
+                continue; /* it touches the piece at a vertex */
             rad_vec3 q = v3_lerp(p0, p1, fmin(fmax(r[m], 0), 1));
             if (nx > 0 && (v3_norm(v3_sub(q, x[nx - 1])) <= tol ||
                            v3_norm(v3_sub(q, x[0])) <= tol))
