@@ -340,11 +340,12 @@ rad_status occ_find_solids(rad_occ *o)
     rad_status st = RAD_OK;
     int *parent = malloc(sizeof *parent * (size_t)(ns > 0 ? ns : 1));
     int *member = malloc(sizeof *member * (size_t)(ns > 0 ? ns : 1));
+    int *start = calloc((size_t)ns + 2, sizeof *start);
     unsigned char *ok = solid_members(o);
     o->solid = malloc(sizeof *o->solid * (size_t)(ns > 0 ? ns : 1));
     o->hfirst = malloc(sizeof *o->hfirst * (size_t)(ns + 1));
     o->nsolid = 0;
-    if (!parent || !member || !ok || !o->solid || !o->hfirst) {
+    if (!parent || !member || !start || !ok || !o->solid || !o->hfirst) {
         st = RAD_ERR_NOMEM;
         goto done;
     }
@@ -354,20 +355,24 @@ rad_status occ_find_solids(rad_occ *o)
         o->solid[s] = -1;
     }
     st = join_folds(o, ok, parent);
+    /* the groups' members side by side, by root (a counting sort: a scan
+     * per root was quadratic in the surfaces), each in surface order */
+    for (int s = 0; s < ns; s++)
+        if (ok[s])
+            start[uf_find(parent, s) + 2]++;
+    for (int r = 0; r < ns; r++)
+        start[r + 2] += start[r + 1];
+    for (int s = 0; s < ns; s++)
+        if (ok[s])
+            member[start[uf_find(parent, s) + 1]++] = s;
     int caph = 0;
-    for (int r = 0; r < ns && st == RAD_OK; r++) {
-        if (!ok[r] || uf_find(parent, r) != r)
-            continue;
-        int nm = 0;
-        for (int s = r; s < ns; s++)
-            if (ok[s] && uf_find(parent, s) == r)
-                member[nm++] = s;
-        if (nm >= 2)
-            st = add_solid(o, member, nm, &caph);
-    }
+    for (int r = 0; r < ns && st == RAD_OK; r++)
+        if (start[r + 1] - start[r] >= 2)
+            st = add_solid(o, member + start[r], start[r + 1] - start[r], &caph);
 done:
     free(parent);
     free(member);
+    free(start);
     free(ok);
     return st;
 }
@@ -387,10 +392,10 @@ static int solid_applies(const rad_occ *o, occ_space *sp, int g, int side, rad_v
             if (v3_dot(o->hnrm[h], v3_sub(p[k], a)) > tol)
                 return 0; /* (a) fails */
     }
-    /* (b): O clipped to P grown by tol */
-    if (occ_grow_v3(&sp->pj0, &sp->cappj0, n + o->hfirst[g + 1] - o->hfirst[g]) ||
-        occ_grow_v3(&sp->pj1, &sp->cappj1, n + o->hfirst[g + 1] - o->hfirst[g]) ||
-        occ_grow_d(&sp->d, &sp->capd, n + o->hfirst[g + 1] - o->hfirst[g]))
+    /* (b): O clipped to P grown by tol (each cut adds at most a vertex) */
+    const int cap = n + o->hfirst[g + 1] - o->hfirst[g];
+    if (occ_grow_v3(&sp->pj0, &sp->cappj0, cap) || occ_grow_v3(&sp->pj1, &sp->cappj1, cap) ||
+        occ_grow_d(&sp->d, &sp->capd, cap))
         return -1;
     memcpy(sp->pj0, p, sizeof *p * (size_t)n);
     int m = n;

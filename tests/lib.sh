@@ -17,3 +17,23 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # expect_num GOT WANT RELTOL: relative comparison with awk
 close_to() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1; exit !(g == g + 0 && d <= t * s) }'; }
+# against_pairref SCENE SPEC I J WHAT: F(I -> J) of SCENE in reference and
+# default modes within their promises (1e-9, 1e-6) of tests/pairref.py's
+# value for SPEC (to 1e-9 of the value: with 1e-10 the value moved by
+# 6e-11).  Three checks, or one skip without python3.
+against_pairref() {
+  if ! command -v python3 > /dev/null 2>&1; then
+    skip "python3 not found"
+    return
+  fi
+  want=$(python3 "$top_srcdir/tests/pairref.py" "$2" 1e-9 | cut -d' ' -f1)
+  ok $? "$5: independent F($3 -> $4) = $want"
+  for mode in reference default; do
+    tol=1e-9
+    [ "$mode" = default ] && tol=1e-6
+    got=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$1" |
+      awk -F '\t' -v i="$3" -v j="$4" '$1 == i && $2 == j { printf "%.17g\n", $3 }')
+    close_to "$got" "$want" "$tol"
+    ok $? "$5, $mode: within $tol of it ($got)"
+  done
+}

@@ -147,25 +147,5 @@ quad white 130 165 65  82 165 225  240 165 272  290 165 114
 quad white 290 0 114  290 165 114  240 165 272  240 0 272
 quad white 423 330 247  265 330 296  314 330 456  472 330 406
 EOF
-cat > "$work/vertex.spec" <<EOF
-outer 485 548.8 262  520.5 548.8 262  520.5 548.8 279.5  485 548.8 279.5
-inner 130 0 239.27848101265823  130 0 292.59873417721519  148.33333333333334 0 297.14338959212381  148.33333333333334 0 244.73206751054852
-solid 130 0 65  82 0 225  240 0 272  290 0 114  130 165 65  82 165 225  240 165 272  290 165 114
-solid 423 0 247  265 0 296  314 0 456  472 0 406  423 330 247  265 330 296  314 330 456  472 330 406
-EOF
-if command -v python3 > /dev/null 2>&1; then
-  # its target 1e-9 of the value: with 1e-10 the value moves by 6e-11
-  want=$(python3 "$top_srcdir/tests/pairref.py" "$work/vertex.spec" 1e-9 | cut -d' ' -f1)
-  ok $? "a conic through a vertex: independent F from the ceiling element ($want)"
-  for mode in reference default; do
-    tol=1e-9
-    [ "$mode" = default ] && tol=1e-6
-    got=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$work/vertex.scene" |
-      awk -F '\t' '$1 == 0 && $2 == 1 { printf "%.17g\n", $3 }')
-    close_to "$got" "$want" "$tol"
-    ok $? "a conic through a vertex, $mode: within $tol of it ($got)"
-  done
-else
-  skip "python3 not found"
-fi
+against_pairref "$work/vertex.scene" "$top_srcdir/tests/cornell-pair.spec" 0 1 "a conic through a vertex"
 done_testing

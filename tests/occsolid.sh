@@ -29,27 +29,7 @@ quad white 472 0 406  472 330 406  314 330 456  314 0 456
 quad white 314 0 456  314 330 456  265 330 296  265 0 296
 quad white 265 0 296  265 330 296  423 330 247  423 0 247
 EOF
-cat > "$work/pair.spec" <<EOF
-outer 485 548.8 262  520.5 548.8 262  520.5 548.8 279.5  485 548.8 279.5
-inner 130 0 239.27848101265823  130 0 292.59873417721519  148.33333333333334 0 297.14338959212381  148.33333333333334 0 244.73206751054852
-solid 130 0 65  82 0 225  240 0 272  290 0 114  130 165 65  82 165 225  240 165 272  290 165 114
-solid 423 0 247  265 0 296  314 0 456  472 0 406  423 330 247  265 330 296  314 330 456  472 330 406
-EOF
-if command -v python3 > /dev/null 2>&1; then
-  # 1e-9 of the value: with a target of 1e-10 it moves by 6e-11
-  want=$(python3 "$top_srcdir/tests/pairref.py" "$work/pair.spec" 1e-9 | cut -d' ' -f1)
-  ok $? "independent F from the ceiling element to the floor element: $want"
-  for mode in reference default; do
-    tol=1e-9
-    [ "$mode" = default ] && tol=1e-6
-    got=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$work/pair.scene" |
-      awk -F '\t' '$1 == 0 && $2 == 1 { printf "%.17g\n", $3 }')
-    close_to "$got" "$want" "$tol"
-    ok $? "$mode: the pair behind both blocks within $tol of it ($got)"
-  done
-else
-  skip "python3 not found"
-fi
+against_pairref "$work/pair.scene" "$top_srcdir/tests/cornell-pair.spec" 0 1 "the pair behind both blocks"
 
 # box ROWS: a 4x4 floor of unit elements, a ceiling at 3 (2x2), and a
 # box of footprint [1,3] x [1,3], four sides and a top with outward
@@ -90,19 +70,6 @@ outer 1 0 1  1 0 2  2 0 2  2 0 1
 inner 0 3 0  2 3 0  2 3 2  0 3 2
 solid 1 1 1  3 1 1  3 1 3  1 1 3  1 2 1  3 2 1  3 2 3  1 2 3
 EOF
-if command -v python3 > /dev/null 2>&1; then
-  want=$(python3 "$top_srcdir/tests/pairref.py" "$work/box.spec" 1e-9 | cut -d' ' -f1)
-  ok $? "independent F from floor element 5 past the floating box: $want"
-  for mode in reference default; do
-    tol=1e-9
-    [ "$mode" = default ] && tol=1e-6
-    got=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$work/box.scene" |
-      awk -F '\t' '$1 == 5 && $2 == 16 { printf "%.17g\n", $3 }')
-    close_to "$got" "$want" "$tol"
-    ok $? "$mode: floating box, within $tol of it ($got)"
-  done
-else
-  skip "python3 not found"
-fi
+against_pairref "$work/box.scene" "$work/box.spec" 5 16 "floating box"
 
 done_testing
