@@ -76,7 +76,7 @@ fi
 # default's fill and reference's on one thread, and every default entry
 # above 1e-6 against reference (the issue asks: within 1e-6 relative,
 # default at most 1.5 times its time before, reference at most 3 times
-# default's).  About 3 minutes; BENCH_CORNELL=0 skips.
+# default's).  About half a minute; BENCH_CORNELL=0 skips.
 if [ "${BENCH_CORNELL:-1}" = 1 ] && command -v /usr/bin/time > /dev/null; then
   box=$data/cornell-box.scene
   echo
