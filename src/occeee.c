@@ -267,16 +267,34 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
 
 /* A chord leaves the arc's kink in a lens as wide as the arc's sagitta;
  * where that is more than c->arc_tol of the chord (OCC_ARC_TOL_*,
- * occspace.h), the piece is first cut into m strips across the chord
- * (m^2 >= sagitta / (arc_tol chord), at most ARC_STRIPS), so that each
- * strip's chord is m^2 times closer to its arc.  A second-order kink in
- * a lens of width w moves the integral by about w^3 times the second
- * derivative's jump: the error falls as the cube of the sagitta.  Seen on
- * the Cornell box (a floor element whose visible part of a ceiling
- * element vanishes along a conic with a sagitta of 0.2 mm on a 4 mm
- * chord): F changed by 4e-8 with the mesh after a plain chord, 2e-9 with
- * a tolerance of 1e-3, 2e-10 with 5e-4 and 3e-12 with 1e-4; default mode
- * was within 2e-7 of it with 1e-2.
+ * occspace.h), the piece is first cut into m strips across the chord,
+ * with m^2 >= sagitta / (arc_tol chord) (at most ARC_STRIPS at a time).
+ * A strip's chord is m times shorter and, the curvature being about the
+ * same, its sagitta m^2 times smaller: its lens, a part of its chord, is
+ * m times narrower, not m^2, so a strip may still be too bent, and is
+ * measured again below.  (m as large as the ratio itself would cut fewer
+ * times, but into more and thinner strips at once: on the closed Cornell
+ * box at --mesh 2x2 the pieces of a pair of large elements then took
+ * default mode's whole budget, and F came out 9e-6 off with an estimate
+ * of 5e-2.)  A second-order kink in a lens of width w moves the integral
+ * by about w^3 times the second derivative's jump: the error falls as
+ * the cube of the sagitta.  Seen on the Cornell box (a floor element
+ * whose visible part of a ceiling element vanishes along a conic with a
+ * sagitta of 0.2 mm on a 4 mm chord): F changed by 4e-8 with the mesh
+ * after a plain chord, 2e-9 with a tolerance of 1e-3, 2e-10 with 5e-4
+ * and 3e-12 with 1e-4; default mode was within 2e-7 of it with 1e-2.
+ * (These and the figures below were measured before strips were measured
+ * again, when a strip's lens could be up to m times the tolerance.)
+ *
+ * The curvature is not the same all along an arc near the vertex of a
+ * hyperbola: each strip's chord is measured again, and a strip still too
+ * bent is cut into strips of its own, up to ARC_PIECES pieces per arc.
+ * (Seen: a wall-to-wall pair of the 6x6 Cornell box, hidden to 7e-3
+ * behind both blocks; an arc of 81 mm whose sagitta was 2e-2 of its
+ * chord was cut into 7 strips, and the strip at its bent end kept a
+ * sagitta of 6e-3 of its 11.7 mm chord.  The visible part of the inner
+ * element lived in that lens alone, a sliver no rule point of the cell
+ * saw: reference mode was 9.6e-9 off, its estimate 5e-10.)
  *
  * The rules converge on either side of a kink they cannot see, so the
  * lens's error escapes the estimates, and it weighs most against the
@@ -288,10 +306,11 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
  * adds pieces to integrate, and a narrow tolerance for every pair spent
  * the budget of some pairs of large elements on the pieces alone (with
  * 2e-3, rows of the closed Cornell box at --mesh 3x3 summed to 1 only
- * within 7e-6): so default mode narrows the lenses to
- * OCC_ARC_TOL_HIDDEN only for nearly hidden pairs (occhidden.c,
- * orient_integral), where sp->loose_arcs says that would cut more. */
+ * within 7e-6): so the lenses are narrowed only for nearly hidden pairs
+ * (occhidden.c, orient_integral), where sp->arc_left, the widest lens a
+ * chord left (a part of its chord), says that would cut more. */
 #define ARC_STRIPS 16
+#define ARC_PIECES 64
 
 /* The sagitta of the arc of l's conic over chord x0 x1: along the chord's
  * perpendicular bisector (in the outer plane) g is a quadratic too, and
@@ -312,27 +331,19 @@ static double sagitta(const line3 *l, const pair_ctx *c, rad_vec3 x0, rad_vec3 x
     return isfinite(best) ? best * h : 0;
 }
 
-/* Piece p (n vertices), which the conic crosses at x0 and x1, cut along
- * the chord, or first into strips across it (above) and each strip along
- * its own chord; the pieces go to sp->db.  0 or -1. */
-static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny,
-                      const rad_vec3 *p, int n, rad_vec3 x0, rad_vec3 x1)
+/* Piece p (n vertices, in sp->rem), which the conic crosses at x0 and
+ * x1, cut into m strips across the chord x0 x1, pushed onto sp->arc;
+ * 0 or -1. */
+static int cut_strips(occ_space *sp, const pair_ctx *c, int n, rad_vec3 x0, rad_vec3 x1, int m)
 {
-    rad_vec3 u = v3_sub(x1, x0);
-    double len = v3_norm(u), sag = sagitta(l, c, x0, x1), lo, hi;
-    const double tol = c->arc_tol;
-    if (!(len > 0) || !(sag > tol * len) || sag > len) {
-        sp->loose_arcs |= len > 0 && sag <= len && sag > OCC_ARC_TOL_HIDDEN * len;
-        return cut_chord(sp, c, p, n, x0, x1); /* straight enough, or no arc between */
-    }
-    int m = (int)ceil(sqrt(sag / (tol * len)));
-    m = m > ARC_STRIPS ? ARC_STRIPS : m;
-    sp->loose_arcs |= m < ARC_STRIPS && sag > OCC_ARC_TOL_HIDDEN * len * m * m;
+    const rad_vec3 u = v3_sub(x1, x0);
+    const double len = v3_norm(u);
     const int cap = n + 2 * m + 4;
+    double lo, hi;
     if (occ_grow_v3(&sp->pj0, &sp->cappj0, cap) || occ_grow_v3(&sp->pj1, &sp->cappj1, cap) ||
         occ_grow_v3(&sp->rem, &sp->caprem, cap) || occ_grow_d(&sp->d, &sp->capd, cap))
         return -1;
-    memcpy(sp->pj0, p, sizeof *p * (size_t)n); /* what is left of the piece */
+    memcpy(sp->pj0, sp->rem, sizeof *sp->rem * (size_t)n); /* what is left of the piece */
     int nr = n;
     for (int k = 1; k <= m && nr >= 3; k++) {
         int ns = nr;
@@ -352,12 +363,54 @@ static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double t
             occ_swap_v3(&sp->pj0, &sp->cappj0, &sp->pj1, &sp->cappj1);
             nr = 0;
         }
-        if (ns < 3 || !(poly_area(sp->pj1, ns) > 0))
+        if (ns >= 3 && poly_area(sp->pj1, ns) > 0 && occ_ps_push(&sp->arc, sp->pj1, ns))
+            return -1;
+    }
+    return 0;
+}
+
+/* Piece p (n vertices), which the conic crosses at x0 and x1, cut along
+ * the chord, or first into strips across it (above), each strip again
+ * until its chord is straight enough or ARC_PIECES strips are made, and
+ * each along its own chord; the pieces go to sp->db.  0 or -1. */
+static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny,
+                      const rad_vec3 *p, int n, rad_vec3 x0, rad_vec3 x1)
+{
+    occ_ps_clear(&sp->arc);
+    if (occ_ps_push(&sp->arc, p, n))
+        return -1;
+    int pieces = 1, first = 1;
+    while (sp->arc.np > 0) {
+        n = occ_load_rem(sp, &sp->arc, sp->arc.np - 1);
+        if (n < 0)
+            return -1;
+        occ_ps_pop(&sp->arc);
+        if (!first) {
+            rad_vec3 xs[4];
+            if (crossings(l, sp->rem, n, tiny, c->snap, xs) < 2) {
+                if (occ_ps_push(&sp->db, sp->rem, n))
+                    return -1;
+                continue;
+            }
+            x0 = xs[0];
+            x1 = xs[1];
+        }
+        first = 0;
+        const double len = v3_norm(v3_sub(x1, x0)), sag = sagitta(l, c, x0, x1);
+        const double tol = c->arc_tol;
+        int m = len > 0 && sag > tol * len && sag <= len ? (int)ceil(sqrt(sag / (tol * len))) : 1;
+        m = m > ARC_STRIPS ? ARC_STRIPS : m;
+        if (m > 1 && pieces + m - 1 > ARC_PIECES)
+            m = 1; /* the budget is spent: this chord stays */
+        if (m == 1) {
+            if (len > 0 && sag <= len)
+                sp->arc_left = fmax(sp->arc_left, sag / len);
+            if (cut_chord(sp, c, sp->rem, n, x0, x1))
+                return -1;
             continue;
-        rad_vec3 xs[4];
-        int nxs = crossings(l, sp->pj1, ns, tiny, c->snap, xs);
-        if (nxs >= 2 ? cut_chord(sp, c, sp->pj1, ns, xs[0], xs[1])
-                     : occ_ps_push(&sp->db, sp->pj1, ns))
+        }
+        pieces += m - 1;
+        if (cut_strips(sp, c, n, x0, x1, m))
             return -1;
     }
     return 0;

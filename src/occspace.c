@@ -126,6 +126,7 @@ void occ_space_free(occ_space *sp)
     free(sp->prad);
     free(sp->qrad);
     ps_free(&sp->umb);
+    ps_free(&sp->arc);
     free(sp->pj0);
     free(sp->pj1);
     free(sp->hn);

@@ -73,14 +73,19 @@
  * element with a kink inside: where a lens is wider than the pair's
  * arc_tol of its chord, the piece is cut into strips first (occeee.c,
  * follow_arc, with the measurements).  Default mode uses
- * OCC_ARC_TOL_DEFAULT; a pair whose occluded value comes out below
- * OCC_NEAR_HIDDEN of its unoccluded one while some lens was wider than
- * OCC_ARC_TOL_HIDDEN is integrated again with that (occhidden.c,
- * orient_integral): relative to such a pair's small value the kink in a
- * lens weighs most (the measurements are in occeee.c). */
+ * OCC_ARC_TOL_DEFAULT, reference mode OCC_ARC_TOL_REFERENCE.  Relative
+ * to a nearly hidden pair's small value the kink in a lens weighs most,
+ * so a pair whose occluded value comes out below OCC_NEAR_HIDDEN of its
+ * unoccluded one, while some lens was wider than the pair needs, is
+ * integrated again with narrower lenses (occhidden.c, orient_integral):
+ * OCC_ARC_TOL_HIDDEN in default mode; in reference mode
+ * OCC_ARC_TOL_REFERENCE times the cube root of the hidden fraction (the
+ * lens's error falls as the cube of its width), down to
+ * OCC_ARC_TOL_FINEST. */
 #define OCC_ARC_TOL_DEFAULT 1e-2
 #define OCC_ARC_TOL_HIDDEN 5e-4
 #define OCC_ARC_TOL_REFERENCE 5e-4
+#define OCC_ARC_TOL_FINEST 2e-5
 #define OCC_NEAR_HIDDEN 0.1
 
 struct rad_occ {
@@ -176,6 +181,8 @@ typedef struct occ_space {
     double *prad, *qrad;
     int cappc, capqc, cappr, capqr;
     polyset umb;                /* its pieces inside some blocker's umbra */
+    polyset arc;                /* strips of a piece still to cut along an
+                                   arc (occeee.c, follow_arc) */
     rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
     int cappj0, cappj1;
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
@@ -189,8 +196,8 @@ typedef struct occ_space {
     double snap;                /* the pair's tolerance: o->snap plus the
                                    twists of its surfaces and candidates */
     int any_hidden, any_visible;/* over the pair's evaluations */
-    int loose_arcs;             /* some chord of occeee.c left a lens wider
-                                   than OCC_ARC_TOL_HIDDEN of it */
+    double arc_left;            /* the widest lens a chord of occeee.c left,
+                                   a part of its chord */
     double evals;
 } occ_space;
 
