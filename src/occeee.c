@@ -306,9 +306,10 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
  * adds pieces to integrate, and a narrow tolerance for every pair spent
  * the budget of some pairs of large elements on the pieces alone (with
  * 2e-3, rows of the closed Cornell box at --mesh 3x3 summed to 1 only
- * within 7e-6): so the lenses are narrowed only for nearly hidden pairs
- * (occhidden.c, orient_integral), where sp->arc_left, the widest lens a
- * chord left (a part of its chord), says that would cut more. */
+ * within 7e-6): so the lenses are narrowed in a second try, only for
+ * pairs whose value needs it (occhidden.c, narrower_arcs) and where
+ * sp->arc_left, the widest lens a chord left (a part of its chord), says
+ * that would cut more. */
 #define ARC_STRIPS 16
 #define ARC_PIECES 64
 

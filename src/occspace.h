@@ -74,14 +74,14 @@
  * arc_tol of its chord, the piece is cut into strips first (occeee.c,
  * follow_arc, with the measurements).  Default mode uses
  * OCC_ARC_TOL_DEFAULT, reference mode OCC_ARC_TOL_REFERENCE.  Relative
- * to a nearly hidden pair's small value the kink in a lens weighs most,
- * so a pair whose occluded value comes out below OCC_NEAR_HIDDEN of its
- * unoccluded one, while some lens was wider than the pair needs, is
- * integrated again with narrower lenses (occhidden.c, orient_integral):
- * OCC_ARC_TOL_HIDDEN in default mode; in reference mode
- * OCC_ARC_TOL_REFERENCE times the cube root of the hidden fraction (the
- * lens's error falls as the cube of its width), down to
- * OCC_ARC_TOL_FINEST. */
+ * to a partly hidden pair's smaller value the kink in a lens weighs
+ * more, so a pair that kept a lens wider than it needs is integrated
+ * again with narrower ones (occhidden.c, narrower_arcs): in default mode
+ * a pair whose occluded value came out below OCC_NEAR_HIDDEN of its
+ * unoccluded one, with OCC_ARC_TOL_HIDDEN; in reference mode every
+ * partly hidden pair, with OCC_ARC_TOL_REFERENCE times the cube root of
+ * its visible fraction (the lens's error falls as the cube of its
+ * width), down to OCC_ARC_TOL_FINEST. */
 #define OCC_ARC_TOL_DEFAULT 1e-2
 #define OCC_ARC_TOL_HIDDEN 5e-4
 #define OCC_ARC_TOL_REFERENCE 5e-4
