@@ -288,7 +288,8 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
  *
  * The curvature is not the same all along an arc near the vertex of a
  * hyperbola: each strip's chord is measured again, and a strip still too
- * bent is cut into strips of its own, up to ARC_PIECES pieces per arc.
+ * bent is cut into strips of its own, up to ARC_PIECES strips for each
+ * piece of the domain that the arc crosses.
  * (Seen: a wall-to-wall pair of the 6x6 Cornell box, hidden to 7e-3
  * behind both blocks; an arc of 81 mm whose sagitta was 2e-2 of its
  * chord was cut into 7 strips, and the strip at its bent end kept a
@@ -332,8 +333,8 @@ static double sagitta(const line3 *l, const pair_ctx *c, rad_vec3 x0, rad_vec3 x
     return isfinite(best) ? best * h : 0;
 }
 
-/* Piece p (n vertices, in sp->rem), which the conic crosses at x0 and
- * x1, cut into m strips across the chord x0 x1, pushed onto sp->arc;
+/* The piece in sp->rem (n vertices), which the conic crosses at x0 and
+ * x1, cut into m strips across the chord x0 x1, appended to sp->arc;
  * 0 or -1. */
 static int cut_strips(occ_space *sp, const pair_ctx *c, int n, rad_vec3 x0, rad_vec3 x1, int m)
 {
@@ -372,21 +373,24 @@ static int cut_strips(occ_space *sp, const pair_ctx *c, int n, rad_vec3 x0, rad_
 
 /* Piece p (n vertices), which the conic crosses at x0 and x1, cut along
  * the chord, or first into strips across it (above), each strip again
- * until its chord is straight enough or ARC_PIECES strips are made, and
- * each along its own chord; the pieces go to sp->db.  0 or -1. */
+ * until its chord is straight enough, and each along its own chord; the
+ * pieces go to sp->db.  The strips are taken in the order they are made
+ * (breadth first), so that a spent budget (ARC_PIECES strips for the
+ * piece) leaves the last level's chords, not one end of the arc uncut;
+ * the last cut takes only as many strips as the budget has left.  0 or
+ * -1. */
 static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny,
                       const rad_vec3 *p, int n, rad_vec3 x0, rad_vec3 x1)
 {
     occ_ps_clear(&sp->arc);
     if (occ_ps_push(&sp->arc, p, n))
         return -1;
-    int pieces = 1, first = 1;
-    while (sp->arc.np > 0) {
-        n = occ_load_rem(sp, &sp->arc, sp->arc.np - 1);
+    int pieces = 1;
+    for (int k = 0; k < sp->arc.np; k++) {
+        n = occ_load_rem(sp, &sp->arc, k);
         if (n < 0)
             return -1;
-        occ_ps_pop(&sp->arc);
-        if (!first) {
+        if (k > 0) {
             rad_vec3 xs[4];
             if (crossings(l, sp->rem, n, tiny, c->snap, xs) < 2) {
                 if (occ_ps_push(&sp->db, sp->rem, n))
@@ -396,14 +400,12 @@ static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double t
             x0 = xs[0];
             x1 = xs[1];
         }
-        first = 0;
         const double len = v3_norm(v3_sub(x1, x0)), sag = sagitta(l, c, x0, x1);
         const double tol = c->arc_tol;
         int m = len > 0 && sag > tol * len && sag <= len ? (int)ceil(sqrt(sag / (tol * len))) : 1;
         m = m > ARC_STRIPS ? ARC_STRIPS : m;
-        if (m > 1 && pieces + m - 1 > ARC_PIECES)
-            m = 1; /* the budget is spent: this chord stays */
-        if (m == 1) {
+        m = m > ARC_PIECES - pieces + 1 ? ARC_PIECES - pieces + 1 : m; /* what is left */
+        if (m <= 1) {
             if (len > 0 && sag <= len)
                 sp->arc_left = fmax(sp->arc_left, sag / len);
             if (cut_chord(sp, c, sp->rem, n, x0, x1))
