@@ -369,11 +369,10 @@ static int nearly_hidden(const occ_space *sp, const orient_result *res, double s
  * of its visible fraction (occluded over unoccluded value).  (Seen on the
  * 6x6 Cornell box: a floor-to-ceiling pair visible to 6.6e-3 kept a chord
  * of 21 mm whose lens was 3.8e-4 of it, and was 3.5e-9 off, its estimate
- * 5e-10; with lenses
- * narrowed for nearly hidden pairs alone, a floor-to-wall pair visible
- * to 0.18 still moved by 1.4e-8 when every lens was narrowed five times,
- * and with this rule no entry above 1e-6 moves by more than 2.7e-10
- * there, for 15% more time.) */
+ * 5e-10.  With lenses narrowed for nearly hidden pairs alone, a
+ * floor-to-wall pair visible to 0.18 still moved by 1.4e-8 when every
+ * lens was narrowed five times; with this rule no entry above 1e-6 moves
+ * by more than 2.7e-10 there, for about 15% more time.) */
 static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_result *res,
                             double s)
 {

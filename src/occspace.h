@@ -181,8 +181,8 @@ typedef struct occ_space {
     double *prad, *qrad;
     int cappc, capqc, cappr, capqr;
     polyset umb;                /* its pieces inside some blocker's umbra */
-    polyset arc;                /* strips of a piece still to cut along an
-                                   arc (occeee.c, follow_arc) */
+    polyset arc;                /* a piece cut along an arc and its strips,
+                                   in the order made (occeee.c, follow_arc) */
     rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
     int cappj0, cappj1;
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
