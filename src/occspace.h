@@ -78,15 +78,16 @@
  * more, so a pair that kept a lens wider than it needs is integrated
  * again with narrower ones (occhidden.c, narrower_arcs): in default mode
  * a pair whose occluded value came out below OCC_NEAR_HIDDEN of its
- * unoccluded one, with OCC_ARC_TOL_HIDDEN; in reference mode every
- * partly hidden pair, with OCC_ARC_TOL_REFERENCE times the cube root of
- * its visible fraction (the lens's error falls as the cube of its
- * width), down to OCC_ARC_TOL_FINEST. */
+ * unoccluded one, with OCC_ARC_TOL_HIDDEN; in reference mode a pair
+ * below OCC_PARTLY_HIDDEN of it, with OCC_ARC_TOL_REFERENCE times the
+ * cube root of its visible fraction (the lens's error falls as the cube
+ * of its width), down to OCC_ARC_TOL_FINEST. */
 #define OCC_ARC_TOL_DEFAULT 1e-2
 #define OCC_ARC_TOL_HIDDEN 5e-4
 #define OCC_ARC_TOL_REFERENCE 5e-4
 #define OCC_ARC_TOL_FINEST 2e-5
 #define OCC_NEAR_HIDDEN 0.1
+#define OCC_PARTLY_HIDDEN 0.25
 
 struct rad_occ {
     rad_occ_mode mode;
