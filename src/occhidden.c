@@ -180,9 +180,13 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
     return 0;
 }
 
-/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value and its
- * estimated error *error.  When `adaptive`, the leaf with the largest
- * estimate is split while the sum of the estimates exceeds
+/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value
+ * and its estimated error *error, the leaves' estimates and the lenses'
+ * that the domain's chords left (sp->arc_err, occeee.c eq. 2: no cell's
+ * rule sees them, so splitting cannot lower them and they stay out of
+ * the test below; narrower_arcs acts on them).  When `adaptive`, the
+ * leaf with the largest estimate is split while the sum of the
+ * estimates exceeds
  *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
  * and fewer than max_leaves cells are in use (*met: it ended below
  * tau, or was not adaptive): `whole` is the
@@ -221,7 +225,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
         err = lt->err[1];
     }
     *value = v;
-    *error = err;
+    *error = err + sp->arc_err;
     *met = !(adaptive && sp->any_hidden && sp->any_visible &&
              err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole));
     return 0;
@@ -309,6 +313,7 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
 {
     *met = 1;
     sp->any_hidden = sp->any_visible = 0;
+    sp->arc_err = 0;
     c->direct = 0;
     if (occ_support_domain(sp, c, co, no))
         return -1;
@@ -362,22 +367,22 @@ static int nearly_hidden(const occ_space *sp, const orient_result *res, double s
 }
 
 /* The widest lens (a part of its chord) a partly hidden pair may keep
- * after its first try (occspace.h, OCC_ARC_TOL_*), or HUGE_VAL.  In
- * default mode a nearly hidden pair's is OCC_ARC_TOL_HIDDEN.  In
- * reference mode the lens error of a pair visible to less than
- * OCC_PARTLY_HIDDEN of its unoccluded value, about the cube of the lens's
- * width, is scaled to its occluded value by the cube root of its visible
- * fraction (occluded over unoccluded value).  (Seen on the 6x6 Cornell
- * box: a floor-to-ceiling pair visible to 6.6e-3 kept a chord of 21 mm
- * whose lens was 3.8e-4 of it, and was 3.5e-9 off, its estimate 5e-10.
+ * after its first try (occspace.h, OCC_ARC_TOL_*), or HUGE_VAL, by its
+ * visible fraction (occluded over unoccluded value).  In default mode a
+ * nearly hidden pair's is OCC_ARC_TOL_HIDDEN.  In reference mode the
+ * lens error of a pair visible to less than OCC_PARTLY_HIDDEN, about the
+ * cube of the lens's width, is scaled to its occluded value by the cube
+ * root of its visible fraction.  (Seen on the 6x6 Cornell box: a
+ * floor-to-ceiling pair visible to 6.6e-3 kept a chord of 21 mm whose
+ * lens was 3.8e-4 of it, and was 3.5e-9 off, its estimate 5e-10.
  * Against a variant with every lens five times narrower: with lenses
  * narrowed for nearly hidden pairs alone, 6 entries above 1e-6 moved by
  * more than 1e-9, the worst a floor-to-wall pair visible to 0.18 by
  * 1.4e-8; with this rule 4 do, by up to 4.4e-9; with every partly
  * hidden pair, none, but a fuzzed scene of blocks took twice its time,
  * over a minute under AddressSanitizer.) */
-static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_result *res,
-                            double s)
+static double arcs_by_fraction(const rad_occ *o, const occ_space *sp, const orient_result *res,
+                               double s)
 {
     if (o->accuracy == RAD_ACCURACY_DEFAULT)
         return nearly_hidden(sp, res, s) ? OCC_ARC_TOL_HIDDEN : HUGE_VAL;
@@ -389,6 +394,35 @@ static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_
         return HUGE_VAL;
     return fmax(OCC_ARC_TOL_FINEST,
                 OCC_ARC_TOL_REFERENCE * cbrt(fmin(fmax(occluded, 0) / whole, 1)));
+}
+
+/* The same by the lenses' error estimate (occeee.c, eq. 2: sp->arc_err):
+ * where it is above OCC_ARC_SHARE of the pair's target (integrate, eq. 1),
+ * the widest lens is narrowed so that, the error falling as the cube of
+ * the width, a lens as wide would leave a tenth of that share; else
+ * HUGE_VAL.  The rule's estimate alone does not see a lens (top of
+ * occeee.c), so this is what keeps the two together within the
+ * target. */
+static double arcs_by_estimate(const rad_occ *o, const occ_space *sp, const orient_result *res,
+                               double s, double rel)
+{
+    if (o->accuracy == RAD_ACCURACY_CLASSIC || !sp->any_hidden || !sp->any_visible ||
+        !(sp->arc_left > 0))
+        return HUGE_VAL;
+    const double whole = s / (2 * RAD_PI);
+    const double occluded = res->direct ? res->value : whole - res->value;
+    const double share = OCC_ARC_SHARE * rel * fmax(occluded, OCC_FLOOR * whole);
+    if (!(sp->arc_err > share))
+        return HUGE_VAL;
+    return fmax(OCC_ARC_TOL_FINEST, sp->arc_left * cbrt(0.1 * share / sp->arc_err));
+}
+
+/* The narrower of the two: the widest lens a pair may keep after its
+ * first try, or HUGE_VAL. */
+static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_result *res,
+                            double s, double rel)
+{
+    return fmin(arcs_by_fraction(o, sp, res, s), arcs_by_estimate(o, sp, res, s, rel));
 }
 
 /* The integral of the hidden part with element i (outer_i) or j as the
@@ -448,7 +482,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
         if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
             return -1;
     }
-    const double arc_tol = narrower_arcs(o, sp, res, s);
+    const double arc_tol = narrower_arcs(o, sp, res, s, rel);
     if (sp->arc_left > arc_tol) {
         /* the narrower lenses may spend the budget on pieces: if they
          * miss the target with a larger estimate, the first try stays.

@@ -88,6 +88,10 @@
 #define OCC_ARC_TOL_FINEST 2e-5
 #define OCC_NEAR_HIDDEN 0.1
 #define OCC_PARTLY_HIDDEN 0.25
+/* A pair whose lenses' error estimate (occeee.c, eq. 2) is above
+ * OCC_ARC_SHARE of its target is integrated again with narrower lenses
+ * too (occhidden.c, arcs_by_estimate). */
+#define OCC_ARC_SHARE 0.25
 
 struct rad_occ {
     rad_occ_mode mode;
@@ -199,6 +203,9 @@ typedef struct occ_space {
     int any_hidden, any_visible;/* over the pair's evaluations */
     double arc_left;            /* the widest lens a chord of occeee.c left,
                                    a part of its chord */
+    double arc_err;             /* the error estimate of the lenses the
+                                   chords of occeee.c left (its eq. 2), in
+                                   the units of the hidden-part integral */
     double evals;
 } occ_space;
 

@@ -20,20 +20,28 @@ close_to() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d 
 # against_pairref SCENE SPEC I J WHAT: F(I -> J) of SCENE in reference and
 # default modes within their promises (1e-9, 1e-6) of tests/pairref.py's
 # value for SPEC (to 1e-9 of the value: with 1e-10 the value moved by
-# 6e-11).  Three checks, or one skip without python3.
+# 6e-11), and each mode's error estimate, with pairref's own, at or above
+# the difference (issue 20: estimates that bound the error).  Five
+# checks, or one skip without python3.
 against_pairref() {
   if ! command -v python3 > /dev/null 2>&1; then
     skip "python3 not found"
     return
   fi
-  want=$(python3 "$top_srcdir/tests/pairref.py" "$2" 1e-9 | cut -d' ' -f1)
-  ok $? "$5: independent F($3 -> $4) = $want"
+  ref=$(python3 "$top_srcdir/tests/pairref.py" "$2" 1e-9)
+  ok $? "$5: independent F($3 -> $4) = $ref"
+  want=${ref%% *}
+  wanterr=${ref##* }
   for mode in reference default; do
     tol=1e-9
     [ "$mode" = default ] && tol=1e-6
-    got=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$1" |
-      awk -F '\t' -v i="$3" -v j="$4" '$1 == i && $2 == j { printf "%.17g\n", $3 }')
+    row=$("$RADIOSITY" formfactor -q --accuracy "$mode" "$1" |
+      awk -F '\t' -v i="$3" -v j="$4" '$1 == i && $2 == j { printf "%.17g %.3g\n", $3, $4 }')
+    got=${row%% *}
     close_to "$got" "$want" "$tol"
     ok $? "$5, $mode: within $tol of it ($got)"
+    awk -v g="$got" -v e="${row##* }" -v w="$want" -v we="$wanterr" \
+      'BEGIN { d = g - w; if (d < 0) d = -d; exit !(g == g + 0 && d <= e + we) }'
+    ok $? "$5, $mode: its estimate ${row##* } and pairref's $wanterr cover the difference"
   done
 }
