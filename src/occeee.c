@@ -320,8 +320,8 @@ static int cut_chord(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int n,
 /* The sagitta of the arc of l's conic over chord x0 x1: along the chord's
  * perpendicular bisector (in the outer plane) g is a quadratic too, and
  * the root nearest the chord is the arc's middle, into *xa, with the
- * bisector's unit direction into *w.  0 when there is none (*xa the
- * chord's middle). */
+ * bisector's unit direction into *w.  0 when there is none (then *xa is
+ * the chord's middle and *w not of unit length). */
 static double sagitta(const line3 *l, const pair_ctx *c, rad_vec3 x0, rad_vec3 x1, rad_vec3 *xa,
                       rad_vec3 *w)
 {
@@ -383,12 +383,25 @@ static void extent(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 x, rad_
  * J is measured where the lens is widest: hidden(x) at the arc's middle
  * xa and at two points on either side along the bisector w, spaced by
  * 0.45 of the piece's room on that side ([lo, hi], extent above), gives
- * one-sided second differences whose difference stands for J; each less
- * its round-off, and none on a side with no room (the arc along the
- * piece's edge: steps of 1e-17 there met the snapping of the clips, and
- * second differences of 1e14).  Points of the piece only, so no other
- * cut event's kink enters them.  The evaluations count, and they leave
- * the pair's any_hidden / any_visible alone.
+ * one-sided second differences whose difference stands for J.  Each
+ * value is exact to a few ulps (occpoint.c), so a difference is less its
+ * round-off, 8 eps times the sum of the magnitudes.  A side with no room
+ * (the arc along the piece's edge: steps of 1e-17 there met the snapping
+ * of the clips, and second differences of 1e14) gives none, and the
+ * other side's curvature stands for the jump; the chord's side always
+ * has room, at least the sagitta.  The points lie in the piece, but
+ * the piece may still hold the arc of an event cut later, or near an
+ * earlier one, and the differences at h and 2 h carry the third
+ * derivative too: both move J from its value at the lens (up, in the
+ * measurements below, more often than down).  The evaluations count,
+ * and they leave the pair's
+ * any_hidden / any_visible alone.
+ *
+ * Lenses without an estimate: a chord with no arc found across it (no
+ * sagitta), one whose arc bends more than its length (sag > len: no
+ * lens, an arc that doubles back, left to the rules' estimates as
+ * before), and one whose arc's middle falls outside its piece (no
+ * room on either side).
  *
  * Measured against what narrowing the lenses changed (reference mode's
  * second try, occhidden.c, on the open 6x6 Cornell box: the 106 pairs
@@ -403,6 +416,8 @@ static int lens_error(occ_space *sp, const pair_ctx *c, rad_vec3 xa, rad_vec3 w,
 {
     const int hidden = sp->any_hidden, visible = sp->any_visible;
     double f0, dd[2] = {0, 0};
+    if (!(hi > lo))
+        return 0; /* xa outside the piece */
     if (occ_hidden_at(sp, c, xa, &f0))
         return -1;
     for (int side = 0; side < 2; side++) {

@@ -398,9 +398,11 @@ static double arcs_by_fraction(const rad_occ *o, const occ_space *sp, const orie
 
 /* The same by the lenses' error estimate (occeee.c, eq. 2: sp->arc_err):
  * where it is above OCC_ARC_SHARE of the pair's target (integrate, eq. 1),
- * the widest lens is narrowed so that, the error falling as the cube of
- * the width, a lens as wide would leave a tenth of that share; else
- * HUGE_VAL.  The rule's estimate alone does not see a lens (top of
+ * the widest lens is narrowed so that, its error falling as the cube of
+ * its width (eq. 2 for one chord; the measurements above occeee.c's
+ * ARC_STRIPS fell about so), a lens as wide would leave a tenth of that
+ * share; else HUGE_VAL.  (With strips the fall is faster, so this errs
+ * toward narrower lenses.)  The rule's estimate alone does not see a lens (top of
  * occeee.c), so this is what keeps the two together within the
  * target. */
 static double arcs_by_estimate(const rad_occ *o, const occ_space *sp, const orient_result *res,

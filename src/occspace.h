@@ -76,7 +76,7 @@
  * OCC_ARC_TOL_DEFAULT, reference mode OCC_ARC_TOL_REFERENCE.  Relative
  * to a partly hidden pair's smaller value the kink in a lens weighs
  * more, so a pair that kept a lens wider than it needs is integrated
- * again with narrower ones (occhidden.c, narrower_arcs): in default mode
+ * again with narrower ones (occhidden.c, arcs_by_fraction): in default mode
  * a pair whose occluded value came out below OCC_NEAR_HIDDEN of its
  * unoccluded one, with OCC_ARC_TOL_HIDDEN; in reference mode a pair
  * below OCC_PARTLY_HIDDEN of it, with OCC_ARC_TOL_REFERENCE times the
@@ -90,7 +90,9 @@
 #define OCC_PARTLY_HIDDEN 0.25
 /* A pair whose lenses' error estimate (occeee.c, eq. 2) is above
  * OCC_ARC_SHARE of its target is integrated again with narrower lenses
- * too (occhidden.c, arcs_by_estimate). */
+ * too (occhidden.c, arcs_by_estimate).  The target is half the promise
+ * and the rules' estimate stops below it, so a quarter more for the
+ * lenses keeps the two together within the promise. */
 #define OCC_ARC_SHARE 0.25
 
 struct rad_occ {

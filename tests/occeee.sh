@@ -181,7 +181,7 @@ against_pairref "$work/walls.scene" "$work/walls.spec" 0 1 "a bent arc's last st
 # small value (1.7e-8 before the strips above).  A partly hidden pair is
 # now integrated again with its lenses narrowed by the cube root of its
 # visible fraction, occluded over unoccluded value (src/occhidden.c,
-# narrower_arcs).  The independent value of the wall pair above moves by
+# arcs_by_fraction).  The independent value of the wall pair above moves by
 # 2.8e-10 between pairref's starting grids of 3 and 5 cells a side, a
 # third of the tolerance; this one's by less.
 floor='277.5 0 91.809895833333343  277.5 0 110.171875  281.66666666666663 0 111.44791666666667  281.66666666666663 0 92.873263888888886'
