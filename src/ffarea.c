@@ -267,9 +267,9 @@ static int polygon_patches(const rad_vec3 *p, int n, rad_vec3 origin, patch *out
     return n - 2;
 }
 
-/* Split patch pair stack[2 (top - 1)], [2 (top - 1) + 1] as the loops
- * below do: the larger cut in two, the pair replaced by two (top grows
- * by one). */
+/* Split patch pair stack[2 (top - 1)], [2 (top - 1) + 1] (walk_cuts,
+ * below): the larger cut in two, the pair replaced by two (top grows by
+ * one). */
 static void split_top(patch *stack, int top)
 {
     patch *pp = &stack[2 * (top - 1)], *qq = pp + 1;
@@ -283,14 +283,38 @@ static void split_top(patch *stack, int top)
     pp[3] = first ? other : x2;
 }
 
-/* Would the cuts below end within ADAPT_LEAVES close pairs, no pair
- * touching and no stack deeper than ADAPT_STACK?  The same cuts without
- * a single evaluation: a pair that cannot succeed costs a walk of
- * bounding boxes, not ADAPT_LEAVES integrations of (ADAPT_K + 2)^4
- * points.  (Seen in a fuzzed scene, two strips of 2.6e-4 by 1.2e-8
- * hinged at 0.1 degree, meshed 5x6: every pair that met the hinge spent
- * its 4000 leaves before giving up, 48 s for the scene in default mode.) */
-static int cuts_end(const patch *ta, int ma, const patch *tb, int mb, patch *stack)
+/* The pair of patches x, y, close enough: the rule with ADAPT_K and
+ * ADAPT_K + 2 points per side, the second added to *s and the
+ * difference to *e. */
+static void close_pair(const patch *x, const patch *y, rad_vec3 norm_a, rad_vec3 norm_b,
+                       double *s, double *e)
+{
+    enum { K = ADAPT_K, K2 = ADAPT_K + 2 };
+    rad_vec3 pa[K2 * K2], pb[K2 * K2];
+    double wa[K2 * K2], wb[K2 * K2], sk[2];
+    for (int o = 0; o < 2; o++) {
+        const int k = o ? K2 : K;
+        int na2 = polygon_points(x->q, 4, v3(0, 0, 0), k, 1, 1, pa, wa);
+        int nb2 = polygon_points(y->q, 4, v3(0, 0, 0), k, 1, 1, pb, wb);
+        sk[o] = area_sum(pa, wa, na2, norm_a, pb, wb, nb2, norm_b);
+    }
+    *s += sk[1];
+    *e += fabs(sk[1] - sk[0]);
+}
+
+/* The cuts of every pair of patches ta[i], tb[j] (stack: room for
+ * ADAPT_STACK pairs), each close pair integrated by close_pair into *s
+ * and *e, or, with s NULL, only counted.  1 when the cuts end within
+ * ADAPT_LEAVES close pairs, with no pair touching and no stack deeper
+ * than ADAPT_STACK; else 0.  The cuts depend on bounding boxes alone, so
+ * a walk with s NULL first lets a pair that cannot succeed give up
+ * without a single evaluation, rather than after ADAPT_LEAVES
+ * integrations of (ADAPT_K + 2)^4 points.  (Seen in a fuzzed scene, two
+ * strips of 2.6e-4 by 1.2e-8 hinged at 0.1 degree, meshed 5x6: every
+ * pair that met the hinge spent its 4000 leaves before giving up, 48 s
+ * for the scene in default mode.) */
+static int walk_cuts(const patch *ta, int ma, const patch *tb, int mb, patch *stack,
+                     rad_vec3 norm_a, rad_vec3 norm_b, double *s, double *e)
 {
     int leaves = 0;
     for (int i = 0; i < ma; i++)
@@ -302,13 +326,15 @@ static int cuts_end(const patch *ta, int ma, const patch *tb, int mb, patch *sta
                 const patch *pp = &stack[2 * (top - 1)], *qq = pp + 1;
                 const double gap = patch_gap(pp, qq);
                 if (fmax(pp->size, qq->size) <= ADAPT_ETA * gap) {
-                    top--;
                     if (++leaves > ADAPT_LEAVES)
                         return 0;
+                    if (s)
+                        close_pair(pp, qq, norm_a, norm_b, s, e);
+                    top--;
                 } else if (!(gap > 0) || top >= ADAPT_STACK) {
-                    return 0;
+                    return 0; /* touching, or too deep: not for this method */
                 } else {
-                    split_top(stack, top);
+                    split_top(stack, top); /* cut the larger; the pair becomes two */
                     top++;
                 }
             }
@@ -320,9 +346,6 @@ int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_v
                          int nb, rad_vec3 norm_b, rad_vec3 origin, double rel_tol,
                          double *s_out, double *err_out)
 {
-    enum { K = ADAPT_K, K2 = ADAPT_K + 2 };
-    rad_vec3 pa[K2 * K2], pb[K2 * K2];
-    double wa[K2 * K2], wb[K2 * K2];
     patch *stack = malloc(sizeof *stack * 2 * ADAPT_STACK);
     patch *ta = malloc(sizeof *ta * (size_t)(na > 2 ? na - 2 : 1));
     patch *tb = malloc(sizeof *tb * (size_t)(nb > 2 ? nb - 2 : 1));
@@ -334,39 +357,8 @@ int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_v
     }
     const int ma = polygon_patches(a, na, origin, ta), mb = polygon_patches(b, nb, origin, tb);
     double s = 0, e = 0;
-    int leaves = 0, ok = cuts_end(ta, ma, tb, mb, stack);
-    for (int i = 0; i < ma && ok; i++)
-        for (int j = 0; j < mb && ok; j++) {
-            int top = 0;
-            stack[0] = ta[i];
-            stack[1] = tb[j];
-            top = 1;
-            while (top > 0 && ok) {
-                patch *pp = &stack[2 * (top - 1)], *qq = pp + 1;
-                const double gap = patch_gap(pp, qq);
-                const double big = fmax(pp->size, qq->size);
-                if (big <= ADAPT_ETA * gap) {
-                    /* close enough: two orders */
-                    const patch x = *pp, y = *qq;
-                    top--;
-                    double sk[2];
-                    for (int o = 0; o < 2; o++) {
-                        const int k = o ? K2 : K;
-                        int na2 = polygon_points(x.q, 4, v3(0, 0, 0), k, 1, 1, pa, wa);
-                        int nb2 = polygon_points(y.q, 4, v3(0, 0, 0), k, 1, 1, pb, wb);
-                        sk[o] = area_sum(pa, wa, na2, norm_a, pb, wb, nb2, norm_b);
-                    }
-                    s += sk[1];
-                    e += fabs(sk[1] - sk[0]);
-                    ok = ++leaves <= ADAPT_LEAVES;
-                } else if (!(gap > 0) || top >= ADAPT_STACK) {
-                    ok = 0; /* touching, or too deep: not for this method */
-                } else {
-                    split_top(stack, top); /* cut the larger; the pair becomes two */
-                    top++;
-                }
-            }
-        }
+    const int ok = walk_cuts(ta, ma, tb, mb, stack, norm_a, norm_b, NULL, NULL) &&
+                   walk_cuts(ta, ma, tb, mb, stack, norm_a, norm_b, &s, &e);
     free(stack);
     free(ta);
     free(tb);

@@ -352,9 +352,7 @@ static double sagitta(const line3 *l, const pair_ctx *c, rad_vec3 x0, rad_vec3 x
 static void extent(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 x, rad_vec3 w,
                    double *lo, double *hi)
 {
-    double turn = 0; /* p's sense about the outer normal */
-    for (int k = 1; k + 1 < n; k++)
-        turn += v3_dot(c->nx, v3_cross(v3_sub(p[k], p[0]), v3_sub(p[k + 1], p[0])));
+    const double turn = v3_dot(c->nx, v3_newell(p, n)); /* p's sense about the outer normal */
     *lo = -HUGE_VAL;
     *hi = HUGE_VAL;
     for (int k = 0; k < n; k++) {
@@ -421,7 +419,7 @@ static int lens_error(occ_space *sp, const pair_ctx *c, rad_vec3 xa, rad_vec3 w,
     if (occ_hidden_at(sp, c, xa, &f0))
         return -1;
     for (int side = 0; side < 2; side++) {
-        const double h = 0.45 * (side ? hi : -lo) * (side ? 1 : -1);
+        const double h = 0.45 * (side ? hi : lo);
         double f1, f2;
         if (!(fabs(h) > 1e-3 * sag && fabs(h) > 64 * c->snap))
             continue; /* the arc runs along the piece's edge: no room */

@@ -357,13 +357,19 @@ static int try_again(const rad_occ *o, occ_space *sp, pair_ctx *c, const rad_vec
     return 0;
 }
 
+/* The occluded value A_o F_ot of res, whole the unoccluded one (S /
+ * (2 pi)): the integral itself when direct, else whole less it. */
+static double occluded_of(const orient_result *res, double whole)
+{
+    return res->direct ? res->value : whole - res->value;
+}
+
 /* Is the occluded value below OCC_NEAR_HIDDEN of the unoccluded one (S /
  * (2 pi)), with something hidden and something visible? */
 static int nearly_hidden(const occ_space *sp, const orient_result *res, double s)
 {
     const double whole = s / (2 * RAD_PI);
-    const double occluded = res->direct ? res->value : whole - res->value;
-    return sp->any_hidden && sp->any_visible && occluded < OCC_NEAR_HIDDEN * whole;
+    return sp->any_hidden && sp->any_visible && occluded_of(res, whole) < OCC_NEAR_HIDDEN * whole;
 }
 
 /* The widest lens (a part of its chord) a partly hidden pair may keep
@@ -388,8 +394,7 @@ static double arcs_by_fraction(const rad_occ *o, const occ_space *sp, const orie
         return nearly_hidden(sp, res, s) ? OCC_ARC_TOL_HIDDEN : HUGE_VAL;
     if (o->accuracy != RAD_ACCURACY_REFERENCE || !sp->any_hidden || !sp->any_visible)
         return HUGE_VAL;
-    const double whole = s / (2 * RAD_PI);
-    const double occluded = res->direct ? res->value : whole - res->value;
+    const double whole = s / (2 * RAD_PI), occluded = occluded_of(res, whole);
     if (!(occluded < OCC_PARTLY_HIDDEN * whole))
         return HUGE_VAL;
     return fmax(OCC_ARC_TOL_FINEST,
@@ -402,9 +407,9 @@ static double arcs_by_fraction(const rad_occ *o, const occ_space *sp, const orie
  * its width (eq. 2 for one chord; the measurements above occeee.c's
  * ARC_STRIPS fell about so), a lens as wide would leave a tenth of that
  * share; else HUGE_VAL.  (With strips the fall is faster, so this errs
- * toward narrower lenses.)  The rule's estimate alone does not see a lens (top of
- * occeee.c), so this is what keeps the two together within the
- * target. */
+ * toward narrower lenses.)  The rule's estimate alone does not see a
+ * lens (top of occeee.c), so this is what keeps the two together within
+ * the target. */
 static double arcs_by_estimate(const rad_occ *o, const occ_space *sp, const orient_result *res,
                                double s, double rel)
 {
@@ -412,8 +417,7 @@ static double arcs_by_estimate(const rad_occ *o, const occ_space *sp, const orie
         !(sp->arc_left > 0))
         return HUGE_VAL;
     const double whole = s / (2 * RAD_PI);
-    const double occluded = res->direct ? res->value : whole - res->value;
-    const double share = OCC_ARC_SHARE * rel * fmax(occluded, OCC_FLOOR * whole);
+    const double share = OCC_ARC_SHARE * rel * fmax(occluded_of(res, whole), OCC_FLOOR * whole);
     if (!(sp->arc_err > share))
         return HUGE_VAL;
     return fmax(OCC_ARC_TOL_FINEST, sp->arc_left * cbrt(0.1 * share / sp->arc_err));
