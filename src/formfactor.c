@@ -339,6 +339,8 @@ typedef struct pair_state {
     double far;                 /* the pair is distant when far * (size_a +
                                    size_b) is below the centroid distance */
     double rel;                 /* target relative error of S, general path */
+    double bound_rel;           /* the same for the a priori bounds
+                                   (run_bounded) */
     rad_ff_edge *ea, *eb;       /* edges about a's centroid (pair_edges) */
     int mea, meb;               /* their counts; mea < 0: not yet made */
     int skew;                   /* some edge pair is skew; -1: not yet known */
@@ -448,9 +450,8 @@ static int run_nine_point(pair_state *p)
  * reference, 1e-6 default). */
 static int run_bounded(pair_state *p)
 {
-    const double rel = p->opt->accuracy == RAD_ACCURACY_REFERENCE ? 5e-10 : 5e-7;
     return rad_ff_gauss_tiers(p->a, p->b, p->scale2, box_gap2(p->a, p->b), p->dplane, p->tol,
-                              rel, &p->s, &p->e)
+                              p->bound_rel, &p->s, &p->e)
                ? FF_DONE
                : FF_NEXT;
 }
@@ -611,7 +612,7 @@ static double pair_finish(pair_state *p, int finish, double *contour, double *er
  * methods; 1 to go on, 0 when F = 0 (one wholly behind the other's plane,
  * or both on one plane), -1 when scratch memory ran out. */
 static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
-                      const rad_ff_options *opt, rad_ff_scratch *w)
+                      const rad_ff_options *opt, double within, rad_ff_scratch *w)
 {
     if (scratch_reserve(w, a->n, b->n) != 0)
         return -1;
@@ -673,9 +674,17 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
      * default (1e-8 internally) can afford r/L up to ~10, reference
      * (1e-11) moves to the area form as soon as the pair is apart.  The
      * targets are 1e-9 (reference) and 1e-6 (default) with a margin of
-     * 100 for the estimates. */
+     * 100 for the estimates, and of 2 for the a priori bounds.  A caller
+     * that needs S within `within` of S (rad_ff_pair_within) tightens
+     * both in the same ratio, down to FF_WITHIN_FLOOR. */
     p->far = ref ? 1 : 4;
+    p->bound_rel = ref ? 5e-10 : 5e-7;
     p->rel = ref ? 1e-11 : 1e-8;
+    if (within > 0 && within < p->bound_rel) {
+        const double t = within > FF_WITHIN_FLOOR ? within : FF_WITHIN_FLOOR;
+        p->rel = fmax(p->rel * (t / p->bound_rel), FF_WITHIN_FLOOR);
+        p->bound_rel = t;
+    }
     p->mea = p->meb = -1;
     p->skew = -1;
     p->area_tried = 0;
@@ -684,14 +693,14 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
 }
 
 static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
-                           const rad_ff_options *opt, rad_ff_scratch *w, double *contour,
-                           double *errest)
+                           const rad_ff_options *opt, double within, rad_ff_scratch *w,
+                           double *contour, double *errest)
 {
     pair_state p;
     *contour = 0;
     if (errest)
         *errest = 0;
-    const int go = pair_setup(&p, a, b, opt, w);
+    const int go = pair_setup(&p, a, b, opt, within, w);
     if (go <= 0)
         return go < 0 ? NAN : 0.0;
     int finish = FIN_CLAMPED;
@@ -715,19 +724,21 @@ static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
  * subdivision where they help), and the result with the smaller estimate
  * is kept; what misses even then is counted by the fill (issue 14, item
  * 8).  A pair clamped below 1 is counted once, by the result kept. */
-double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
-                   rad_ff_scratch *w, double *contour, double *errest)
+double rad_ff_pair_within(const rad_ff_poly *a, const rad_ff_poly *b,
+                          const rad_ff_options *opt, double within, rad_ff_scratch *w,
+                          double *contour, double *errest)
 {
     const double c0 = w->clamped;
-    double f = ff_pair_once(a, b, opt, w, contour, errest);
+    double f = ff_pair_once(a, b, opt, within, w, contour, errest);
+    const double goal = within > 0 && within < 1e-6 ? within : 1e-6;
     if (opt->accuracy != RAD_ACCURACY_DEFAULT || !errest || isnan(f) ||
-        !(*errest > 1e-6 * fabs(*contour)))
+        !(*errest > goal * fabs(*contour)))
         return f;
     const double c1 = w->clamped;
     rad_ff_options ref = *opt;
     double s2, e2;
     ref.accuracy = RAD_ACCURACY_REFERENCE;
-    const double f2 = ff_pair_once(a, b, &ref, w, &s2, &e2);
+    const double f2 = ff_pair_once(a, b, &ref, within, w, &s2, &e2);
     if (!isnan(f2) && e2 < *errest) {
         w->clamped = c0 + (w->clamped - c1);
         *contour = s2;
@@ -736,4 +747,10 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
     }
     w->clamped = c1;
     return f;
+}
+
+double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
+                   rad_ff_scratch *w, double *contour, double *errest)
+{
+    return rad_ff_pair_within(a, b, opt, 0, w, contour, errest);
 }

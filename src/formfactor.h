@@ -59,6 +59,14 @@ int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
  * absolute error of S.  NaN only when scratch memory runs out. */
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest);
+/* The same, aiming at an estimate within `within` of S where that is
+ * below the mode's own target (occlusion.c, whose promise is relative to
+ * a part of S); 0 for the mode's target.  Targets below FF_WITHIN_FLOOR
+ * are taken as it: the round-off of S is near it. */
+#define FF_WITHIN_FLOOR 1e-14
+double rad_ff_pair_within(const rad_ff_poly *a, const rad_ff_poly *b,
+                          const rad_ff_options *opt, double within, rad_ff_scratch *w,
+                          double *contour, double *errest);
 
 /* Colinear: parallel edges on one line (distance between the lines below
  * 1e-12 of the longer edge), where the Gauss points would hit r = 0. */

@@ -43,7 +43,8 @@
  * is integrated as its visible part directly (occpoint.c, occ_hidden_at):
  * its value then owes nothing to the kernel's unoccluded S.  Otherwise,
  * when the kernel's estimate of S is too large a part of the occluded
- * value, S is computed again by the reference kernel (sharper_sum).
+ * value, S is computed again by the reference kernel, to a quarter of
+ * the promise of the occluded value (sharper_sum).
  * Measured against independent references (tests/occref.py: parallel
  * rectangles with a blocker between them, centred, off-centre, near
  * either plate, hiding all but 4e-5, small elements in a penumbra):
@@ -111,26 +112,30 @@ void rad_occ_work_free(rad_occ_work *w)
 }
 
 /* The kernel's error estimate e0 of the unoccluded S is relative to S (the
- * default kernel aims at 5e-7 S: formfactor.c), but the promise is
- * relative to the occluded value, which for a pair hidden to a fraction f
- * is f S: e0 may then be up to 5e-7 / f of it.  When e0 takes more than
- * OCC_KERNEL_SHARE of the mode's promise of the occluded value, S and e0
- * are computed again by the reference kernel (5e-10 S): the difference
- * shifts the occluded value, whose hidden part does not depend on S.
- * Returns 0, or -1 when memory ran out. */
+ * default kernel aims at 5e-7 S, the reference kernel at 5e-10 S:
+ * formfactor.c), but the promise is relative to the occluded value, which
+ * for a pair hidden to a fraction f is f S: e0 may then be up to 5e-7 / f
+ * or 5e-10 / f of it.  When e0 takes more than OCC_KERNEL_SHARE of the
+ * mode's promise of the occluded value (of OCC_FLOOR S at least, the
+ * promise's floor), S and e0 are computed again by the reference kernel
+ * aiming at that share (rad_ff_pair_within): the difference shifts the
+ * occluded value, whose hidden part does not depend on S.  Returns 0, or
+ * -1 when memory ran out. */
 static int sharper_sum(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double s0,
                        double *snew, double *e0)
 {
     const double promise = w->occ->accuracy == RAD_ACCURACY_REFERENCE ? 1e-9 : 1e-6;
-    if (w->occ->accuracy != RAD_ACCURACY_DEFAULT || !(*snew > 0) ||
-        *e0 <= OCC_KERNEL_SHARE * promise * *snew)
+    const double target = OCC_KERNEL_SHARE * promise * fmax(*snew, OCC_FLOOR * s0);
+    if (!(*snew > 0) || !(s0 > 0) || *e0 <= target)
         return 0;
     rad_ff_options opt;
     rad_ff_options_init(&opt);
     opt.accuracy = RAD_ACCURACY_REFERENCE;
     double s, e = 0;
-    if (isnan(rad_ff_pair(&polys[i], &polys[j], &opt, &w->kernel, &s, &e)))
+    if (isnan(rad_ff_pair_within(&polys[i], &polys[j], &opt, target / s0, &w->kernel, &s, &e)))
         return -1;
+    if (!(e < *e0))
+        return 0; /* no better than the first */
     double v = *snew + (s - s0);
     *snew = v < 0 ? 0 : v > s ? s : v;
     *e0 = e;
