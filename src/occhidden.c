@@ -342,16 +342,17 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
                      budget * evals, &res->value, &res->error, met);
 }
 
-/* domain_integral again, on c's new domain, from scratch and with the
- * whole budget (before: sp->evals when the pair's first try began; the
- * count keeps every try). */
+/* domain_integral again, on c's new domain, from scratch and with
+ * `budget` times the whole budget (before: sp->evals when the pair's
+ * first try began; the count keeps every try). */
 static int try_again(const rad_occ *o, occ_space *sp, pair_ctx *c, const rad_vec3 *co, int no,
-                     double s, double rel, double before, orient_result *res, int *met)
+                     double s, double rel, double before, double budget, orient_result *res,
+                     int *met)
 {
     const double spent = sp->evals - before;
     sp->evals = before;
     memset(res, 0, sizeof *res);
-    if (domain_integral(o, sp, c, co, no, s, rel, 1, res, met))
+    if (domain_integral(o, sp, c, co, no, s, rel, budget, res, met))
         return -1;
     sp->evals += spent;
     return 0;
@@ -485,13 +486,14 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     if (!met && c.events == OCC_SPLIT_WEDGES) {
         c.events = OCC_SPLIT_ALL;
         sp->arc_left = 0; /* the lenses of the domain kept */
-        if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
+        if (try_again(o, sp, &c, co, no, s, rel, before, 1, res, &met))
             return -1;
     }
     const double arc_tol = narrower_arcs(o, sp, res, s, rel);
     if (sp->arc_left > arc_tol) {
-        /* the narrower lenses may spend the budget on pieces: if they
-         * miss the target with a larger estimate, the first try stays.
+        /* the narrower lenses add pieces, so default mode's budget is
+         * larger (OCC_LENS_BUDGET); if they miss the target with a larger
+         * estimate all the same, the first try stays.
          * (Where the strips' budget, occeee.c's ARC_PIECES, runs out, a
          * chord or two may keep a lens wider than the first try's; the
          * second try stays all the same: keeping the first on that
@@ -499,9 +501,10 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
          * the 5e-8 that narrower lenses everywhere had removed.) */
         const orient_result first = *res;
         const int hidden = sp->any_hidden, visible = sp->any_visible;
+        const double lens_budget = o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_LENS_BUDGET : 1;
         c.arc_tol = arc_tol;
         sp->arc_left = 0;
-        if (try_again(o, sp, &c, co, no, s, rel, before, res, &met))
+        if (try_again(o, sp, &c, co, no, s, rel, before, lens_budget, res, &met))
             return -1;
         if (!met && res->error > first.error) {
             *res = first;

@@ -63,6 +63,16 @@
  * whole budgets (occhidden.c, orient_integral). */
 #define OCC_WEDGE_BLOCKERS 4
 #define OCC_WEDGE_BUDGET 0.25
+/* A pair integrated again with narrower lenses (occhidden.c,
+ * orient_integral) has OCC_LENS_BUDGET times default mode's budgets
+ * above: each strip the lenses add is a piece, and each piece a leaf.
+ * (With the budget of the first try, two nearly hidden pairs of the
+ * closed 6x6 Cornell box in default mode spent their leaves on the
+ * pieces, missed the target by 2e5 and 5e5 times, and kept the first
+ * try, one with a lens estimate of 5e-6 of its value.  Reference mode's
+ * budget, eight times default's, is left as it is: four times more cost
+ * its fill of that box 5% and confirmed no more entries.) */
+#define OCC_LENS_BUDGET 4
 /* The events of three edges (occeee.c) are cut for pairs with at most
  * OCC_EEE_BLOCKERS blockers: their number grows as the square of the
  * blockers' (64 edge triples per pair of quads), and a pair with more

@@ -225,4 +225,25 @@ pair_files kernel '310 0 442.938775510204  310 0 462.315646258503  314 0 473.2  
   '185.333333333333 548.8 0  278 548.8 0  278 548.8 37.833333333333  185.333333333333 548.8 37.833333333333'
 against_pairref "$work/kernel.scene" "$work/kernel.spec" 0 1 "a kernel estimate against a small value"
 kept reference "$work/kernel.scene" "a kernel estimate against a small value"
+
+# Floor element 561 to front-wall element 303, hidden to 4.8e-3: default
+# mode's second try with narrower lenses spent its leaves on their
+# pieces, and the first try stayed, its lens estimate 5e-6 of the value
+# (1.2e-10 off).  That try now has four times the budget
+# (src/occspace.h, OCC_LENS_BUDGET).
+pair_files budget '252.5 0 395.85  252.5 0 450.3  256.666666666667 0 445.911111111111  256.666666666667 0 389.266666666667' \
+  '278 182.933333333333 0  370.666666666667 182.933333333333 0  370.666666666667 274.4 0  278 274.4 0'
+against_pairref "$work/budget.scene" "$work/budget.spec" 0 1 "narrower lenses with a budget for their pieces"
+kept default "$work/budget.scene" "narrower lenses with a budget for their pieces"
+
+# Floor element 572 to front-wall element 309, visible to 1.4e-2: the
+# strips of one arc used up ARC_PIECES (then 64) before its bent end, and
+# reference mode's lens estimate stayed at 4.5e-8 of the value.  Against
+# tests/pairref.py at its tolerance of 1e-9 (six minutes, too long for
+# here: 8.0553333916950256e-05, estimate 8.04e-14) it was 1.1e-9 off, and
+# is 7.7e-10 off now, its estimate 4.0e-14.  Checked here by the
+# estimates alone; src/occeee.c, ARC_PIECES.
+pair_files pieces '260.83333333333337 0 323.84444444444443  260.8333333333333 0 382.68333333333334  265 0 376.1  265 0 315.0666666666667' \
+  '278 274.4 0  370.66666666666663 274.4 0  370.66666666666663 365.8666666666666 0  278 365.8666666666666 0'
+kept reference "$work/pieces.scene" "the strips of a long bent arc"
 done_testing
