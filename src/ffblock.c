@@ -114,36 +114,40 @@ rad_status rad_ff_block_open(rad_ff_block **out, const rad_mesh *mesh,
     return RAD_OK;
 }
 
-/* The pair {i, j}, i < j: its occluded contour sum S and S's estimated
- * error (0 in classic), as fill_column (ffmatrix.c) computes them.
+/* The pair {i, j}, i < j: its occluded contour sum S, S's estimated
+ * error (0 in classic) and what the promise is relative to (*sc, may be
+ * NULL: occlusion.h), as fill_column (ffmatrix.c) computes them.
  * Returns -1 when scratch ran out. */
 static int pair_sum(const rad_ff_block *b, rad_ff_scratch *w, rad_occ_work *ow, int i, int j,
-                    double *s, double *e)
+                    double *s, double *e, double *sc)
 {
     const int want = b->opt.accuracy != RAD_ACCURACY_CLASSIC;
     *e = 0;
     if (isnan(rad_ff_pair(&b->polys[i], &b->polys[j], &b->opt, w, s, want ? e : NULL)))
         return -1;
-    if (ow && rad_occ_pair(ow, b->polys, i, j, s, want ? e : NULL) != 0)
+    if (sc)
+        *sc = fabs(*s);
+    if (ow && rad_occ_pair(ow, b->polys, i, j, s, want ? e : NULL, sc) != 0)
         return -1;
     return 0;
 }
 
 /* Entry F_{gi, gj}, gi != gj, its estimated absolute error and relative
- * error e / |S| (both NaN in classic, and the relative one when S = 0, as
- * the dense fill skips those).  Returns -1 when scratch ran out. */
+ * error e / sc (sc = |S| but for nearly hidden pairs: occlusion.h; both
+ * NaN in classic, and the relative one when S = 0, as the dense fill
+ * skips those).  Returns -1 when scratch ran out. */
 static int entry(const rad_ff_block *b, rad_ff_scratch *w, rad_occ_work *ow, int gi, int gj,
                  double *f, double *ef, double *rel)
 {
     const int i = gi < gj ? gi : gj, j = gi < gj ? gj : gi;
     const int want = b->opt.accuracy != RAD_ACCURACY_CLASSIC;
-    double s, e;
-    if (pair_sum(b, w, ow, i, j, &s, &e) != 0)
+    double s, e, sc;
+    if (pair_sum(b, w, ow, i, j, &s, &e, &sc) != 0)
         return -1;
     const double fji = s * b->inv_t[j];
     *f = gi == j ? fji : fji * (b->polys[j].area / b->polys[i].area);
     *ef = want ? e * b->inv_t[gi] : NAN;
-    *rel = want && s != 0 ? e / fabs(s) : NAN;
+    *rel = want && s != 0 ? e / sc : NAN;
     return 0;
 }
 
@@ -282,7 +286,7 @@ rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, siz
         for (size_t k = 0; k < np; k++) {
             const int i = pi[k], j = pj[k];
             double s, e;
-            if (pair_sum(b, &w, b->occ ? &ow : NULL, i, j, &s, &e) != 0) {
+            if (pair_sum(b, &w, b->occ ? &ow : NULL, i, j, &s, &e, NULL) != 0) {
                 failed = 1;
                 continue;
             }

@@ -193,17 +193,19 @@ static int fill_column(const rad_ff_poly *polys, const double *inv_t, int n, int
         double fij = rad_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
         if (isnan(fij))
             return -1;
-        /* hidden surfaces (occlusion.h): S stays symmetric, or unchanged */
-        if (ow && rad_occ_pair(ow, polys, i, j, &s, want ? &e : NULL) != 0)
+        /* hidden surfaces (occlusion.h): S stays symmetric, or unchanged;
+         * sc is what the promise is relative to */
+        double sc = fabs(s);
+        if (ow && rad_occ_pair(ow, polys, i, j, &s, want ? &e : NULL, &sc) != 0)
             return -1;
         col[j] = s * inv_t[j];
         if (want && s != 0) {
             const double ej = e * inv_t[j], ei = e * inv_t[i];
             const double ea = ej > ei ? ej : ei;
             *maxerr = ea > *maxerr ? ea : *maxerr; /* not fmax: a libm call here */
-            if (e > *maxrel * fabs(s))
-                *maxrel = e / fabs(s);
-            *unmet += e > promise * fabs(s);
+            if (e > *maxrel * sc)
+                *maxrel = e / sc;
+            *unmet += e > promise * sc;
             if (rowerr) {
                 row_i += ei;
                 rowerr[j] += ej;

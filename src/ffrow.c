@@ -114,17 +114,18 @@ static void tally_value(tally *t, double f)
     t->above_one += f > 1;
 }
 
-/* The error estimate e of S for the polygons a, b (as the fill keeps it). */
-static void tally_error(tally *t, double s, double e, double inv_a, double inv_b,
+/* The error estimate e of S for the polygons a, b (as the fill keeps it),
+ * the promise being relative to sc (occlusion.h, rad_occ_pair). */
+static void tally_error(tally *t, double s, double e, double sc, double inv_a, double inv_b,
                         double promise)
 {
     if (s == 0)
         return;
     const double ea = e * inv_a, eb = e * inv_b, m = ea > eb ? ea : eb;
     t->maxerr = m > t->maxerr ? m : t->maxerr;
-    if (e > t->maxrel * fabs(s))
-        t->maxrel = e / fabs(s);
-    t->unmet += e > promise * fabs(s);
+    if (e > t->maxrel * sc)
+        t->maxrel = e / sc;
+    t->unmet += e > promise * sc;
 }
 
 void rad_ffrow_free(rad_ffrow *r)
@@ -265,15 +266,17 @@ rad_status rad_ffrow_create(rad_ffrow **out, const rad_mesh *m, const rad_ff_opt
     return RAD_OK;
 }
 
-/* S of the pair (a, b) with visibility; -1 when scratch ran out. */
-static int pair_sum(rad_ffrow *r, int k, int a, int b, double *s, double *e)
+/* S of the pair (a, b) with visibility, its estimate and what the
+ * promise is relative to (*sc: occlusion.h); -1 when scratch ran out. */
+static int pair_sum(rad_ffrow *r, int k, int a, int b, double *s, double *e, double *sc)
 {
     const int want = r->opt.accuracy != RAD_ACCURACY_CLASSIC;
     *e = 0;
     double f = rad_ff_pair(&r->polys[a], &r->polys[b], &r->opt, &r->w[k], s, want ? e : NULL);
     if (isnan(f))
         return -1;
-    if (r->occ && rad_occ_pair(&r->ow[k], r->polys, a, b, s, want ? e : NULL) != 0)
+    *sc = fabs(*s);
+    if (r->occ && rad_occ_pair(&r->ow[k], r->polys, a, b, s, want ? e : NULL, sc) != 0)
         return -1;
     return 0;
 }
@@ -383,14 +386,14 @@ rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_e
         tally *t = &r->t[k];
 #pragma omp for schedule(dynamic, 256)
         for (int j = 0; j < n; j++) {
-            double s, e, fji, fij;
+            double s, e, sc, fji, fij;
             if (j == i || failed) {
                 to[j] = 0;
                 if (from)
                     from[j] = 0;
                 continue;
             }
-            if (pair_sum(r, k, j < i ? j : i, j < i ? i : j, &s, &e) != 0) {
+            if (pair_sum(r, k, j < i ? j : i, j < i ? i : j, &s, &e, &sc) != 0) {
                 failed = 1;
                 continue;
             }
@@ -406,7 +409,7 @@ rad_status rad_ffrow_column(rad_ffrow *r, int i, double *to, double *from, rad_e
             tally_value(t, fji);
             tally_value(t, fij);
             if (r->opt.accuracy != RAD_ACCURACY_CLASSIC)
-                tally_error(t, s, e, inv_t[i], inv_t[j], promise);
+                tally_error(t, s, e, sc, inv_t[i], inv_t[j], promise);
         }
     }
     rad_status st = loop_end(r, failed, bad, i, err);
@@ -427,12 +430,12 @@ rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to
 #pragma omp for schedule(dynamic, 256)
         for (int q = 0; q < k; q++) {
             const int j = js[q];
-            double s, e;
+            double s, e, sc;
             if (j == i || failed) {
                 to[q] = 0;
                 continue;
             }
-            if (pair_sum(r, w, j < i ? j : i, j < i ? i : j, &s, &e) != 0) {
+            if (pair_sum(r, w, j < i ? j : i, j < i ? i : j, &s, &e, &sc) != 0) {
                 failed = 1;
                 continue;
             }
@@ -444,7 +447,7 @@ rad_status rad_ffrow_pairs(rad_ffrow *r, int i, const int *js, int k, double *to
             t->pairs++;
             tally_value(t, to[q]);
             if (r->opt.accuracy != RAD_ACCURACY_CLASSIC)
-                tally_error(t, s, e, inv_t[i], inv_t[j], promise);
+                tally_error(t, s, e, sc, inv_t[i], inv_t[j], promise);
         }
     }
     return loop_end(r, failed, bad, i, err);
@@ -462,12 +465,12 @@ rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
         tally *t = &r->t[k];
 #pragma omp for schedule(dynamic, 256)
         for (int j = 0; j < n; j++) {
-            double s, e;
+            double s, e, sc;
             if (r->unit.elements[j].surface == surf || failed) {
                 to[j] = 0; /* one plane: nothing seen */
                 continue;
             }
-            if (pair_sum(r, k, a, j, &s, &e) != 0) {
+            if (pair_sum(r, k, a, j, &s, &e, &sc) != 0) {
                 failed = 1;
                 continue;
             }
@@ -478,7 +481,7 @@ rad_status rad_ffrow_patch(rad_ffrow *r, int p, double *to, rad_error *err)
             t->pairs++;
             tally_value(t, to[j]);
             if (r->opt.accuracy != RAD_ACCURACY_CLASSIC)
-                tally_error(t, s, e, inv_p, r->inv_t[j], promise);
+                tally_error(t, s, e, sc, inv_p, r->inv_t[j], promise);
         }
     }
     return loop_end(r, failed, bad, -1 - p, err);

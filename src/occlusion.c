@@ -44,7 +44,10 @@
  * its value then owes nothing to the kernel's unoccluded S.  Otherwise,
  * when the kernel's estimate of S is too large a part of the occluded
  * value, S is computed again by the reference kernel, to a quarter of
- * the promise of the occluded value (sharper_sum).
+ * the promise of the occluded value (sharper_sum).  The promise, and the
+ * fill's count of entries that miss it, are relative to the occluded
+ * value down to that floor, and to OCC_FLOOR of the unoccluded value
+ * below it (rad_occ_pair's *scale).
  * Measured against independent references (tests/occref.py: parallel
  * rectangles with a blocker between them, centred, off-centre, near
  * either plate, hiding all but 4e-5, small elements in a penumbra):
@@ -155,9 +158,12 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
 }
 
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
-                 double *errest)
+                 double *errest, double *scale)
 {
     const rad_occ *o = w->occ;
+    const double s0 = *s;
+    if (scale)
+        *scale = fabs(s0);
     if (!o || !(*s > 0))
         return 0;
     int sa = o->esurf[i], sb = o->esurf[j];
@@ -195,6 +201,8 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
             *errest = e0 + eocc;
     }
     *s = snew;
+    if (scale)
+        *scale = fmax(fabs(snew), OCC_FLOOR * s0);
     w->stats.seconds += rad_seconds() - t0;
     return nb < 0 ? -1 : 0;
 }

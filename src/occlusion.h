@@ -69,9 +69,16 @@ void rad_occ_work_free(rad_occ_work *w);
  * made by the fill: the mesh's normals, centroids and areas): *s is the
  * unoccluded contour sum on entry and the occluded one on return; *errest
  * (may be NULL) is increased by the estimated absolute error of the
- * change, in the units of s.  Returns 0, or -1 when memory ran out. */
+ * change, in the units of s; *scale (may be NULL) receives what the
+ * accuracy promise of the pair is relative to, in the same units: |S|,
+ * or RAD_OCC_FLOOR of the unoccluded |S| where that is larger (issue 20:
+ * the promise holds relative to the occluded value down to pairs hidden
+ * to that part of their unoccluded one; a pair hidden further is
+ * integrated to that floor, and its error relative to its own tiny value
+ * would say nothing).  Returns 0, or -1 when memory ran out. */
+#define RAD_OCC_FLOOR 1e-4
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
-                 double *errest);
+                 double *errest, double *scale);
 
 /* The visibility fields of a form-factor record (vis_*) from v. */
 void rad_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st);

@@ -38,7 +38,7 @@
  * the adaptive rule may use. */
 #define OCC_TOL_DEFAULT 5e-7
 #define OCC_TOL_REFERENCE 5e-10
-#define OCC_FLOOR 1e-4
+#define OCC_FLOOR RAD_OCC_FLOOR
 #define OCC_KERNEL_SHARE 0.25   /* of the promise: see occlusion.c, sharper_sum */
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
