@@ -246,14 +246,18 @@ typedef struct rad_ff_stats {
     long above_one;             /* entries above 1 (only possible in classic) */
     double min_value, max_value;
     double max_errest;          /* largest estimated absolute error */
-    double max_relerr;          /* largest estimated relative error */
+    double max_relerr;          /* largest estimated relative error (of a
+                                   partly hidden entry: relative to the
+                                   entry, or to 1e-4 of its unoccluded value
+                                   when larger; radiosity-files(5)) */
     double max_row_error;       /* largest row sum of the estimated absolute
                                    errors, max_i sum_j |dF_ij| (a bound on
                                    ||dF||_inf; NaN in classic) */
     double promise;             /* the mode's promise on each entry's relative
                                    error: 1e-6 default, 1e-9 reference, NaN classic */
     long promise_unmet;         /* entries whose own error estimate exceeds
-                                   promise x |F_ij| (ordered pairs) */
+                                   promise x |F_ij| (ordered pairs; |F_ij|
+                                   as in max_relerr) */
     long rows_above_one;        /* rows with sum_j F_ij > 1 + RAD_ROW_SUM_SLACK:
                                    impossible (energy from nowhere) */
     int vis_needed;             /* 0: nothing can be blocked, no visibility work */

@@ -676,13 +676,14 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
      * targets are 1e-9 (reference) and 1e-6 (default) with a margin of
      * 100 for the estimates, and of 2 for the a priori bounds.  A caller
      * that needs S within `within` of S (rad_ff_pair_within) tightens
-     * both in the same ratio, down to FF_WITHIN_FLOOR. */
+     * both in the same ratio, the bounds' down to FF_WITHIN_FLOOR and the
+     * general path's down to FF_GENERAL_FLOOR (formfactor.h). */
     p->far = ref ? 1 : 4;
     p->bound_rel = ref ? 5e-10 : 5e-7;
     p->rel = ref ? 1e-11 : 1e-8;
     if (within > 0 && within < p->bound_rel) {
         const double t = within > FF_WITHIN_FLOOR ? within : FF_WITHIN_FLOOR;
-        p->rel = fmax(p->rel * (t / p->bound_rel), FF_WITHIN_FLOOR);
+        p->rel = fmax(p->rel * (t / p->bound_rel), FF_GENERAL_FLOOR);
         p->bound_rel = t;
     }
     p->mea = p->meb = -1;

@@ -62,8 +62,13 @@ double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_opti
 /* The same, aiming at an estimate within `within` of S where that is
  * below the mode's own target (occlusion.c, whose promise is relative to
  * a part of S); 0 for the mode's target.  Targets below FF_WITHIN_FLOOR
- * are taken as it: the round-off of S is near it. */
+ * are taken as it: the round-off of S is near it.  The general path's
+ * own target (formfactor.c, pair_setup) stops at FF_GENERAL_FLOOR: its
+ * round-off bound alone reached 6.6e-14 of S on a pair of the Cornell
+ * box, and a target no method can meet sends a pair through every slower
+ * one (long double, the area rules, cut into parts). */
 #define FF_WITHIN_FLOOR 1e-14
+#define FF_GENERAL_FLOOR 1e-13
 double rad_ff_pair_within(const rad_ff_poly *a, const rad_ff_poly *b,
                           const rad_ff_options *opt, double within, rad_ff_scratch *w,
                           double *contour, double *errest);

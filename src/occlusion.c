@@ -53,8 +53,9 @@
  * either plate, hiding all but 4e-5, small elements in a penumbra):
  * default within 5e-9, reference within 5e-12, every estimate above the
  * error; hiding all but 1.5e-7, beyond the promise's floor: default
- * within 4.2e-7 of the value (6e-10 of the floor), reference 3.5e-11.  Each unordered pair is done once: the result is the symmetric
- * A_i F_ij, and reciprocity stays exact.
+ * within 4.2e-7 of the value (6e-10 of the floor), reference 3.5e-11.
+ * Each unordered pair is done once: the result is the symmetric A_i F_ij,
+ * and reciprocity stays exact.
  */
 #include <config.h>
 

@@ -70,8 +70,9 @@
  * closed 6x6 Cornell box in default mode spent their leaves on the
  * pieces, missed the target by 2e5 and 5e5 times, and kept the first
  * try, one with a lens estimate of 5e-6 of its value.  Reference mode's
- * budget, eight times default's, is left as it is: four times more cost
- * its fill of that box 5% and confirmed no more entries.) */
+ * budgets, eight and ten times default's, are left as they are: four
+ * times more cost its fill of that box 5% and confirmed no more
+ * entries.) */
 #define OCC_LENS_BUDGET 4
 /* The events of three edges (occeee.c) are cut for pairs with at most
  * OCC_EEE_BLOCKERS blockers: their number grows as the square of the
