@@ -81,10 +81,8 @@ void rad_ffrow_stats(const rad_ffrow *row, rad_ff_stats *st, double *min_row_sum
 int rad_ffrow_threads(const rad_ffrow *row);
 
 /* Shared with the dense fill (defined in ffmatrix.c): the element polygons
- * as the kernel wants them, and each accuracy mode's promise on an entry's
- * relative error (NaN for classic). */
+ * as the kernel wants them (rad_ff_promise is in formfactor.h). */
 rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
                              rad_ff_edge **edges);
-double rad_ff_promise(rad_accuracy a);
 
 #endif /* RAD_FFROW_H */

@@ -731,9 +731,8 @@ double rad_ff_pair_within(const rad_ff_poly *a, const rad_ff_poly *b,
 {
     const double c0 = w->clamped;
     double f = ff_pair_once(a, b, opt, within, w, contour, errest);
-    const double goal = within > 0 && within < 1e-6 ? within : 1e-6;
     if (opt->accuracy != RAD_ACCURACY_DEFAULT || !errest || isnan(f) ||
-        !(*errest > goal * fabs(*contour)))
+        !(*errest > 1e-6 * fabs(*contour)))
         return f;
     const double c1 = w->clamped;
     rad_ff_options ref = *opt;

@@ -54,15 +54,21 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
  * number (zero-length edges are dropped). */
 int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
 
+/* Each accuracy mode's promise on an entry's relative error: 1e-6
+ * default, 1e-9 reference, NaN classic (defined in ffmatrix.c). */
+double rad_ff_promise(rad_accuracy a);
+
 /* F from a to b.  *contour receives the symmetric contour sum S (so that
  * F_ba = S / (2 pi A_b)); *errest (may be NULL) an estimate of the
  * absolute error of S.  NaN only when scratch memory runs out. */
 double rad_ff_pair(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
                    rad_ff_scratch *w, double *contour, double *errest);
 /* The same, aiming at an estimate within `within` of S where that is
- * below the mode's own target (occlusion.c, whose promise is relative to
- * a part of S); 0 for the mode's target.  Targets below FF_WITHIN_FLOOR
- * are taken as it: the round-off of S is near it.  The general path's
+ * below the mode's own target; 0 for the mode's target.  (occlusion.c,
+ * whose promise is relative to a part of S, asks in reference mode; a
+ * default-mode pair still goes on to reference's methods by default's
+ * own 1e-6.)  Targets below FF_WITHIN_FLOOR are taken as it: the
+ * round-off of S is near it.  The general path's
  * own target (formfactor.c, pair_setup) stops at FF_GENERAL_FLOOR: its
  * round-off bound alone reached 6.6e-14 of S on a pair of the Cornell
  * box, and a target no method can meet sends a pair through every slower

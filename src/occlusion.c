@@ -129,7 +129,7 @@ void rad_occ_work_free(rad_occ_work *w)
 static int sharper_sum(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double s0,
                        double *snew, double *e0)
 {
-    const double promise = w->occ->accuracy == RAD_ACCURACY_REFERENCE ? 1e-9 : 1e-6;
+    const double promise = rad_ff_promise(w->occ->accuracy);
     const double target = OCC_KERNEL_SHARE * promise * fmax(*snew, OCC_FLOOR * s0);
     if (!(*snew > 0) || !(s0 > 0) || *e0 <= target)
         return 0;
