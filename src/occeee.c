@@ -389,8 +389,11 @@ static void extent(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 x, rad_
  * xa and at two points on either side along the bisector w, spaced by
  * 0.45 of the piece's room on that side ([lo, hi], extent above), gives
  * one-sided second differences whose difference stands for J.  Each
- * value is exact to a few ulps (occpoint.c), so a difference is less its
- * round-off, 8 eps times the sum of the magnitudes.  A side with no room
+ * value is exact to a few ulps, or where the point-to-polygon sums cancel
+ * to sp->noise_tol, the largest the pair's target allows (occpoint.c;
+ * over a lens far narrower than the piece that is far below its share
+ * of the target), so a difference is less its round-off, 8 eps times the
+ * sum of the magnitudes.  A side with no room
  * (the arc along the piece's edge: steps of 1e-17 there met the snapping
  * of the clips, and second differences of 1e14) gives none, and the
  * other side's curvature stands for the jump; the chord's side always

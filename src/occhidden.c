@@ -180,13 +180,20 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
     return 0;
 }
 
-/* Integral of hidden(x) over the pieces of sp->dom and sp->umb: *value
- * and its estimated error *error, the leaves' estimates and the lenses'
- * that the domain's chords left (sp->arc_err, occeee.c eq. 2: no cell's
- * rule sees them, so splitting cannot lower them and they stay out of
- * the test below; narrower_arcs acts on them).  When `adaptive`, the
- * leaf with the largest estimate is split while the sum of the
- * estimates exceeds
+/* The pair's target (1) of integrate below, for the integral v so far:
+ * the occluded value is v itself when c->direct, else whole less v. */
+static double target_of(const pair_ctx *c, double rel, double whole, double v)
+{
+    return rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole);
+}
+
+/* Integral of hidden(x) over the pieces of sp->dom and sp->umb (of area
+ * dom_area): *value and its estimated error *error, the leaves'
+ * estimates and the lenses' that the domain's chords left (sp->arc_err,
+ * occeee.c eq. 2: no cell's rule sees them, so splitting cannot lower
+ * them and they stay out of the test below; narrower_arcs acts on them).
+ * When `adaptive`, the leaf with the largest estimate is split while the
+ * sum of the estimates exceeds
  *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
  * and fewer than max_leaves cells are in use (*met: it ended below
  * tau, or was not adaptive): `whole` is the
@@ -194,21 +201,23 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
  * the occluded A_o F_ot itself, and the target is relative to it down to
  * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target
  * relative to the unoccluded value let a nearly hidden pair's error reach
- * 1e4 times its value). */
+ * 1e4 times its value).  Each evaluation's round-off is kept below
+ * OCC_NOISE_SHARE of tau spread over the domain (sp->noise_tol, occpoint.c):
+ * the rules' estimates see round-off as an error that no split lowers. */
 static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel, double whole,
-                     int max_leaves, double max_evals, double *value, double *error, int *met)
+                     double dom_area, int max_leaves, double max_evals, double *value,
+                     double *error, int *met)
 {
     occ_leaves *lt = &sp->leaves;
     int nleaf = 0;
     if (first_leaves(sp, c, &nleaf) || occ_leaves_build(lt, sp->node, nleaf))
         return -1;
     double v = lt->val[1], err = lt->err[1];
-    /* the occluded value: the integral itself (c->direct), or whole less it */
-    while (adaptive && sp->any_hidden && sp->any_visible &&
-           err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole) &&
+    while (adaptive && sp->any_hidden && sp->any_visible && err > target_of(c, rel, whole, v) &&
            nleaf + 3 <= max_leaves && sp->evals < max_evals && lt->best[1] >= 0) {
         const int worst = lt->best[1];
         tri_node *t = &sp->node[worst];
+        sp->noise_tol = OCC_NOISE_SHARE * target_of(c, rel, whole, v) / dom_area;
         if (t->order >= 2 && t->order < c->order && !t->stalled) {
             if (node_raise(sp, c, t) || occ_leaves_set(lt, sp->node, worst, nleaf))
                 return -1;
@@ -226,8 +235,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
     }
     *value = v;
     *error = err + sp->arc_err;
-    *met = !(adaptive && sp->any_hidden && sp->any_visible &&
-             err > rel * fmax(c->direct ? v : whole - v, OCC_FLOOR * whole));
+    *met = !(adaptive && sp->any_hidden && sp->any_visible && err > target_of(c, rel, whole, v));
     return 0;
 }
 
@@ -315,6 +323,10 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
     sp->any_hidden = sp->any_visible = 0;
     sp->arc_err = 0;
     c->direct = 0;
+    const double area_o = poly_area(co, no);
+    /* until the integral is under way: the largest target, for the
+     * lenses' samples (occeee.c) and the first leaves */
+    sp->noise_tol = rel * fabs(s) / (2 * RAD_PI) / area_o;
     if (occ_support_domain(sp, c, co, no))
         return -1;
     if (sp->dom.np == 0 && sp->umb.np == 0)
@@ -324,7 +336,7 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
         dom_area += poly_area(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k]);
     for (int k = 0; k < sp->umb.np; k++)
         dom_area += poly_area(sp->umb.v + sp->umb.first[k], sp->umb.first[k + 1] - sp->umb.first[k]);
-    if (dom_area < (1 - 1e-9) * poly_area(co, no))
+    if (dom_area < (1 - 1e-9) * area_o)
         sp->any_visible = 1; /* points outside the domain see all of the inner one */
     else if (sp->dom.np > 0 && o->accuracy != RAD_ACCURACY_CLASSIC)
         c->direct = res->direct = 1; /* the domain is all of it: integrate visible(x) */
@@ -338,7 +350,7 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
         o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_LEAVES_REFERENCE : OCC_LEAVES_DEFAULT;
     const double evals =
         o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_EVALS_REFERENCE : OCC_EVALS_DEFAULT;
-    return integrate(sp, c, adaptive, rel, s / (2 * RAD_PI), (int)(budget * leaves),
+    return integrate(sp, c, adaptive, rel, s / (2 * RAD_PI), dom_area, (int)(budget * leaves),
                      budget * evals, &res->value, &res->error, met);
 }
 

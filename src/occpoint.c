@@ -39,20 +39,68 @@
 #include "vec.h"
 
 
-/* Point-to-polygon form factor from a differential area at x with unit
- * normal nrm to polygon q (Lambert 1760; Baum et al. 1989, eq. 6). */
-static double ff_point_polygon(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
+/* The difference q - x in long double: exact where the two exponents
+ * are within 11 of each other, else rounded once in long double. */
+static void diff_long(rad_vec3 q, rad_vec3 x, long double r[3])
 {
-    double sum = 0;
+    r[0] = (long double)q.x - x.x;
+    r[1] = (long double)q.y - x.y;
+    r[2] = (long double)q.z - x.z;
+}
+
+/* ff_point_polygon's sum again in long double (-2 pi times the factor). */
+static long double sum_long(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
+{
+    long double sum = 0, r0[3], r1[3];
+    diff_long(q[m - 1], x, r0);
+    for (int k = 0; k < m; k++) {
+        diff_long(q[k], x, r1);
+        const long double c[3] = {r0[1] * r1[2] - r0[2] * r1[1], r0[2] * r1[0] - r0[0] * r1[2],
+                                  r0[0] * r1[1] - r0[1] * r1[0]};
+        const long double cn = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        if (cn > 0)
+            sum += atan2l(cn, r0[0] * r1[0] + r0[1] * r1[1] + r0[2] * r1[2]) *
+                   (nrm.x * c[0] + nrm.y * c[1] + nrm.z * c[2]) / cn;
+        memcpy(r0, r1, sizeof r0);
+    }
+    return sum;
+}
+
+/* Point-to-polygon form factor from a differential area at x with unit
+ * normal nrm to polygon q (Lambert 1760; Baum et al. 1989, eq. 6).
+ *
+ * Its terms cancel where the polygon is seen nearly edge on: the
+ * factor is then far smaller than its terms, and their round-off, about
+ * (m + 8) eps times the sum of their magnitudes (each term's atan2,
+ * cross product, norm and quotient, then the sum of m), is not small
+ * beside it.  Where that round-off could exceed tol, the sum is done
+ * again in long double (11 more bits on x86-64; no gain where long
+ * double is double), from differences q - x that are exact there.  (The
+ * differences' own rounding in double, an ulp of the coordinates, is a
+ * perturbation of the geometry that this model does not count.)  (Seen on the closed 6x6 Cornell box: a ceiling
+ * element and a side of the short block, visible to 4.3e-2 of its
+ * unoccluded factor, whose hidden(x) is 2.6e-9.  In double the rule's
+ * estimates stopped at the round-off, 4e-11 of hidden(x) on every
+ * cell however small, and the pair spent its 4e5 evaluations with an
+ * estimate of 1.25e-9 of its value; in long double it met its target
+ * in 356, the value moving by 1.3e-11 of itself.) */
+static double ff_point_polygon(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m, double tol)
+{
+    double sum = 0, size = 0;
     rad_vec3 r0 = v3_sub(q[m - 1], x);
     for (int k = 0; k < m; k++) {
         rad_vec3 r1 = v3_sub(q[k], x);
         rad_vec3 c = v3_cross(r0, r1);
         double cn = v3_norm(c);
-        if (cn > 0)
-            sum += atan2(cn, v3_dot(r0, r1)) * v3_dot(nrm, c) / cn;
+        if (cn > 0) {
+            const double t = atan2(cn, v3_dot(r0, r1)) * v3_dot(nrm, c) / cn;
+            sum += t;
+            size += fabs(t);
+        }
         r0 = r1;
     }
+    if ((m + 8) * DBL_EPSILON * size > 2 * RAD_PI * tol)
+        return (double)(-sum_long(x, nrm, q, m) / (2 * RAD_PI_LONG));
     return -sum / (2 * RAD_PI);
 }
 
@@ -157,7 +205,7 @@ static int hidden_last(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, doub
             return -1;
         double am = m ? poly_area(sp->pj0, m) : 0;
         if (am > c->sliver) {
-            *h += fabs(ff_point_polygon(x, c->nx, sp->pj0, m));
+            *h += fabs(ff_point_polygon(x, c->nx, sp->pj0, m, sp->noise_tol));
             sp->any_hidden = 1;
         } else {
             am = 0;
@@ -208,7 +256,7 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
             if (r < 0)
                 return -1;
             if (r > 0) {
-                h += ff_point_polygon(x, c->nx, sp->rem, n);
+                h += ff_point_polygon(x, c->nx, sp->rem, n, sp->noise_tol);
                 sp->any_hidden = 1;
             }
         }
@@ -233,6 +281,6 @@ int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     if (hidden_at(sp, c, x, out))
         return -1;
     if (c->direct)
-        *out = fabs(ff_point_polygon(x, c->nx, c->t, c->nt)) - *out;
+        *out = fabs(ff_point_polygon(x, c->nx, c->t, c->nt, sp->noise_tol)) - *out;
     return 0;
 }

@@ -10,9 +10,11 @@
 
 #include "radiosity.h"
 
-/* pi, to more digits than a double holds: the one definition every
+/* pi, to more digits than a double holds (RAD_PI_LONG: than a long
+ * double on x86-64, 64 bits of mantissa): the one definition every
  * numerical module uses (M_PI is not ISO C). */
 #define RAD_PI 3.14159265358979323846
+#define RAD_PI_LONG 3.141592653589793238462643383279502884L
 
 static inline rad_vec3 v3(double x, double y, double z)
 {

@@ -246,4 +246,21 @@ kept default "$work/budget.scene" "narrower lenses with a budget for their piece
 pair_files pieces '260.83333333333337 0 323.84444444444443  260.8333333333333 0 382.68333333333334  265 0 376.1  265 0 315.0666666666667' \
   '278 274.4 0  370.66666666666663 274.4 0  370.66666666666663 365.8666666666666 0  278 365.8666666666666 0'
 kept reference "$work/pieces.scene" "the strips of a long bent arc"
+
+# A value right to round-off, with estimates that round-off held above
+# the promise: ceiling element 169 of the closed 6x6 Cornell box to
+# element 1088 on the short block's side (here elements 25 and 48),
+# visible to 4.3e-2 of its unoccluded factor.  The block's side is seen
+# nearly edge on, and the point-to-polygon factor's terms cancel to
+# 2.6e-9: in double, each evaluation of hidden(x) carried round-off of
+# 4e-11 of itself, the rules' estimates stopped there on every cell, and
+# the pair spent its 4e5 evaluations with an estimate of 1.25e-9 of its
+# value.  Where round-off could exceed its share of the target, the sum
+# is now done in long double (src/occpoint.c, ff_point_polygon).
+{ echo 'material white reflect 0.725 0.71 0.68'
+  echo 'quad white 343 548.8 227  556 548.8 227  556 548.8 332  343 548.8 332  mesh 6x6'
+  scene 1x1 1x1 | sed -n '4,$p' |
+    sed '/^quad white 240 0 272  240 165 272  82 165 225  82 0 225 /s/mesh 1x1/mesh 6x6/'
+} > "$work/edge.scene"
+kept reference "$work/edge.scene" "a side seen nearly edge on"
 done_testing
