@@ -532,7 +532,10 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
 }
 
 /* The new S of a pair with nb blockers in sp->blk: 0 when one blocker
- * hides all, else S less 2 pi times the integral of the hidden part. */
+ * hides all, else S less 2 pi times the integral of the hidden part.
+ * *direct: the new S does not depend on S, so S's error does not pass to
+ * it (the visible part was integrated itself, or one blocker hides all:
+ * the value is then 0 exactly, not S's estimate). */
 int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
                      const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
                      double *errest, int *direct)
@@ -547,6 +550,7 @@ int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
         if (hides_all(ci, ni, cj, nj, v, n, o->snormal[sp->bid[b]], sp->snap)) {
             st->pairs_blocked++;
             *snew = 0;
+            *direct = 1;
             return 0;
         }
     }

@@ -196,7 +196,7 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
         if (occ_occluded_sum(o, sp, &w->stats, nb, pi, pj, *s, &snew, &eocc, &direct))
             nb = -1;
         else if (direct)
-            e0 = 0; /* the value does not depend on S (occpoint.c) */
+            e0 = 0; /* the value does not depend on S (occhidden.c) */
         else if (errest && snew != *s && sharper_sum(w, polys, i, j, *s, &snew, &e0))
             nb = -1;
         if (errest)
