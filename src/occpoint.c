@@ -66,6 +66,27 @@ static long double sum_long(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
     return sum;
 }
 
+/* The sum of eq. 6 below (-2 pi times the factor) in double, and when
+ * size is not NULL the sum of its terms' magnitudes there. */
+static inline double sum_double(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m, double *size)
+{
+    double sum = 0;
+    rad_vec3 r0 = v3_sub(q[m - 1], x);
+    for (int k = 0; k < m; k++) {
+        rad_vec3 r1 = v3_sub(q[k], x);
+        rad_vec3 c = v3_cross(r0, r1);
+        double cn = v3_norm(c);
+        if (cn > 0) {
+            const double t = atan2(cn, v3_dot(r0, r1)) * v3_dot(nrm, c) / cn;
+            sum += t;
+            if (size)
+                *size += fabs(t);
+        }
+        r0 = r1;
+    }
+    return sum;
+}
+
 /* Point-to-polygon form factor from a differential area at x with unit
  * normal nrm to polygon q (Lambert 1760; Baum et al. 1989, eq. 6).
  *
@@ -77,28 +98,23 @@ static long double sum_long(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
  * again in long double (11 more bits on x86-64; no gain where long
  * double is double), from differences q - x that are exact there.  (The
  * differences' own rounding in double, an ulp of the coordinates, is a
- * perturbation of the geometry that this model does not count.)  (Seen on the closed 6x6 Cornell box: a ceiling
- * element and a side of the short block, visible to 4.3e-2 of its
- * unoccluded factor, whose hidden(x) is 2.6e-9.  In double the rule's
- * estimates stopped at the round-off, 4e-11 of hidden(x) on every
- * cell however small, and the pair spent its 4e5 evaluations with an
- * estimate of 1.25e-9 of its value; in long double it met its target
- * in 356, the value moving by 1.3e-11 of itself.) */
+ * perturbation of the geometry that this model does not count.)
+ * (Seen on the closed 6x6 Cornell box: a ceiling element and a side of
+ * the short block, visible to 4.3e-2 of its unoccluded factor, whose
+ * hidden(x) is 2.6e-9.  In double the rule's estimates stopped at the
+ * round-off, 4e-11 of hidden(x) on every cell however small, and the
+ * pair spent its 4e5 evaluations with an estimate of 1.25e-9 of its
+ * value; in long double it met its target in 356, the value moving by
+ * 1.3e-11 of itself.) */
 static double ff_point_polygon(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m, double tol)
 {
-    double sum = 0, size = 0;
-    rad_vec3 r0 = v3_sub(q[m - 1], x);
-    for (int k = 0; k < m; k++) {
-        rad_vec3 r1 = v3_sub(q[k], x);
-        rad_vec3 c = v3_cross(r0, r1);
-        double cn = v3_norm(c);
-        if (cn > 0) {
-            const double t = atan2(cn, v3_dot(r0, r1)) * v3_dot(nrm, c) / cn;
-            sum += t;
-            size += fabs(t);
-        }
-        r0 = r1;
-    }
+    /* each term is at most its angle, and the angles of a convex polygon
+     * seen from a point off its plane sum to less than 2 pi: from this
+     * tol up, no sum needs its terms' sizes */
+    if (!((m + 8) * DBL_EPSILON > tol))
+        return -sum_double(x, nrm, q, m, NULL) / (2 * RAD_PI);
+    double size = 0;
+    const double sum = sum_double(x, nrm, q, m, &size);
     if ((m + 8) * DBL_EPSILON * size > 2 * RAD_PI * tol)
         return (double)(-sum_long(x, nrm, q, m) / (2 * RAD_PI_LONG));
     return -sum / (2 * RAD_PI);
