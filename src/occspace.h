@@ -40,10 +40,11 @@
 #define OCC_TOL_REFERENCE 5e-10
 #define OCC_FLOOR RAD_OCC_FLOOR
 #define OCC_KERNEL_SHARE 0.25   /* of the promise: see occlusion.c, sharper_sum */
-/* The round-off one evaluation of the integrand may carry, as a share of
- * the pair's target spread over its domain (occhidden.c, integrate): an
- * evaluation that could carry more is done again in long double
- * (occpoint.c, ff_point_polygon). */
+/* The round-off each point-to-polygon sum of the integrand may carry, as
+ * a share of the pair's target spread over its domain (occhidden.c,
+ * integrate; an evaluation adds one sum per hidden piece): a sum that
+ * could carry more is done again in long double (occpoint.c,
+ * ff_point_polygon). */
 #define OCC_NOISE_SHARE 0.125
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
@@ -224,8 +225,8 @@ typedef struct occ_space {
     double arc_err;             /* the error estimate of the lenses the
                                    chords of occeee.c left (its eq. 2), in
                                    the units of the hidden-part integral */
-    double noise_tol;           /* the round-off allowed in one evaluation
-                                   of the integrand (OCC_NOISE_SHARE) */
+    double noise_tol;           /* the round-off allowed in one point-to-
+                                   polygon sum (OCC_NOISE_SHARE) */
     double evals;
 } occ_space;
 
