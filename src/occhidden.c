@@ -201,9 +201,10 @@ static double target_of(const pair_ctx *c, double rel, double whole, double v)
  * the occluded A_o F_ot itself, and the target is relative to it down to
  * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target
  * relative to the unoccluded value let a nearly hidden pair's error reach
- * 1e4 times its value).  Each evaluation's round-off is kept below
- * OCC_NOISE_SHARE of tau spread over the domain (sp->noise_tol, occpoint.c):
- * the rules' estimates see round-off as an error that no split lowers. */
+ * 1e4 times its value).  Each point-to-polygon sum's round-off is kept
+ * below OCC_NOISE_SHARE of tau spread over the domain (sp->noise_tol,
+ * occpoint.c): the rules' estimates see round-off as an error that no
+ * split lowers. */
 static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel, double whole,
                      double dom_area, int max_leaves, double max_evals, double *value,
                      double *error, int *met)
