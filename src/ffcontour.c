@@ -28,8 +28,42 @@
  *   used; the estimate returned (errors and floors summed) says what was
  *   reached, so a caller never waits long and never gets a false claim.
  *
+ * Near-singular points.  The Kronrod-Gauss difference is an estimate of
+ * the 7-point rule's error, an overestimate of the 15-point one's only
+ * where the integrand is smooth on the panel.  The integrand over p is
+ * not smooth near a point of p that nearly meets q: where p passes within
+ * h of q's line above q (its projection crosses q), the h atan term of G
+ * makes a kink of slope pi sin(theta), rounded over a width h / sin(theta);
+ * where p passes near an end of q, x ln|x| does the same.  With the kink
+ * inside a panel both rules err alike and their difference does not show
+ * it: two facing polygons 5e-10 apart, edges crossing, gave S off by 7e-8
+ * of itself under an estimate of 1.2e-9 (issue 20, fuzzed scene 36:223).
+ * In the complex plane of p's parameter these are singularities of the
+ * integrand at s0 +- i d: the lines' nearest approach (s0 there, d their
+ * distance over sin(theta)) when the foot on q's line is on q, and the
+ * feet of q's ends (d their distance from p's line).  Each one nearer to
+ * the edge than a quarter of its length starts a panel, and its rounding,
+ * which the rules then still miss, is bounded by
+ * 4 d^2 (ln(L/d) + 2) (the integral of sqrt(d^2 + x^2) - |x| over
+ * |x| < L is d^2 (ln(2L/d) + 1/2) + O(d^4), the atan step's as much, times
+ * the slopes, at most pi); below 1/16 of the tolerance that is added to
+ * the estimate, above it panels graded at d, 2d, 4d, ... from s0 resolve
+ * the singularity, which then lies at least a panel's width away from
+ * every panel (a Bernstein ellipse of rho > 4: the 15-point rule far
+ * better than the 7-point one, as the estimate assumes).
+ *
+ * Edge pairs within 1e-14 of perpendicular are left out (exactly
+ * perpendicular ones contribute nothing); what they would add is bounded
+ * and added to the estimate: with s^2 >= the centroid distance squared
+ * plus both sizes squared, every distance r <= sqrt(3) s, so
+ * ln(r/s) < 0.55, and r >= |t - t0| along q gives
+ * integral of ln(s/r) dt <= lq (ln(2s/lq) + 1) <= 2s (ln x <= x - 1):
+ * |I_pq| <= 2 s min(lp, lq).  Near-coplanar pairs need it: an element pair
+ * of a 179.9-degree hinge had such pairs, e_p . e_q = 8e-15, worth 1.5e-8
+ * of S (fuzzed scene 36:91).
+ *
  * The error estimate of S is the quadrature's plus 16 eps times the sum of
- * the magnitudes of the terms.  For long thin pairs (two slivers side by
+ * the magnitudes of the terms, plus that bound.  For long thin pairs (two slivers side by
  * side, a long strip and a small patch) the terms exceed S by 1e8 and
  * more, and double's 16 eps of them is more than the tolerance; the long
  * double version (64-bit significand on x86-64, eps = 2^-63, 2048 times
@@ -61,6 +95,7 @@ static const double gk_wg[4] = {
     0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
 #define ADAPT_MAX_PANELS 400
+#define ADAPT_MAX_BREAKS 200 /* panel ends to start from (ffcontour_tmpl.h) */
 
 /* Parallel edge pairs in double, batched so that the compiler vectorises
  * H~ (vecmath.h: log and atan that vectorise): the four arguments of
