@@ -63,11 +63,12 @@
  * of S (fuzzed scene 36:91).
  *
  * The error estimate of S is the quadrature's plus 16 eps times the sum of
- * the magnitudes of the terms, plus that bound.  For long thin pairs (two slivers side by
- * side, a long strip and a small patch) the terms exceed S by 1e8 and
- * more, and double's 16 eps of them is more than the tolerance; the long
- * double version (64-bit significand on x86-64, eps = 2^-63, 2048 times
- * smaller) then gets below it.  Inputs are doubles and convert exactly.
+ * the magnitudes of the terms, plus that bound.  For long thin pairs (two
+ * slivers side by side, a long strip and a small patch) the terms exceed S
+ * by 1e8 and more, and double's 16 eps of them is more than the tolerance;
+ * the long double version (64-bit significand on x86-64, eps = 2^-63, 2048
+ * times smaller) then gets below it.  Inputs are doubles and convert
+ * exactly.
  */
 #include <config.h>
 
