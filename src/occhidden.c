@@ -213,12 +213,12 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
     int nleaf = 0;
     if (first_leaves(sp, c, &nleaf) || occ_leaves_build(lt, sp->node, nleaf))
         return -1;
-    double v = lt->val[1], err = lt->err[1];
-    while (adaptive && sp->any_hidden && sp->any_visible && err > target_of(c, rel, whole, v) &&
+    double v = lt->val[1], err = lt->err[1], tau = target_of(c, rel, whole, v);
+    while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
            nleaf + 3 <= max_leaves && sp->evals < max_evals && lt->best[1] >= 0) {
         const int worst = lt->best[1];
         tri_node *t = &sp->node[worst];
-        sp->noise_tol = OCC_NOISE_SHARE * target_of(c, rel, whole, v) / dom_area;
+        sp->noise_tol = OCC_NOISE_SHARE * tau / dom_area;
         if (t->order >= 2 && t->order < c->order && !t->stalled) {
             if (node_raise(sp, c, t) || occ_leaves_set(lt, sp->node, worst, nleaf))
                 return -1;
@@ -233,10 +233,11 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
         }
         v = lt->val[1];
         err = lt->err[1];
+        tau = target_of(c, rel, whole, v);
     }
     *value = v;
     *error = err + sp->arc_err;
-    *met = !(adaptive && sp->any_hidden && sp->any_visible && err > target_of(c, rel, whole, v));
+    *met = !(adaptive && sp->any_hidden && sp->any_visible && err > tau);
     return 0;
 }
 
