@@ -129,6 +129,24 @@ static void SUF(parallel_setup)(const SUF(edge) *p, const SUF(edge) *q, R u[4], 
     u[3] = p->len - b2;
 }
 
+/* What taking nearly parallel edges as parallel at their mean distance
+ * can miss, times |e_p . e_q| (bound (P) of ffcontour.c). */
+static double SUF(parallel_bound)(const SUF(edge) *p, const SUF(edge) *q, double dot)
+{
+    const SUF(vec) w0 = SUF(vsub)(q->p0, p->p0), w1 = SUF(vaxpy)(w0, 1, q->d);
+    const SUF(vec) x0 = SUF(vaxpy)(w0, -SUF(vdot)(w0, p->e), p->e);
+    const SUF(vec) x1 = SUF(vaxpy)(w1, -SUF(vdot)(w1, p->e), p->e);
+    const SUF(vec) v = SUF(vaxpy)(q->d, -SUF(vdot)(q->d, p->e), p->e); /* x1 - x0 */
+    const double a0 = (double)R_SQRT(SUF(vdot)(x0, x0)), a1 = (double)R_SQRT(SUF(vdot)(x1, x1));
+    const double D = (double)R_SQRT(SUF(vdot)(v, v)), amin = fmin(a0, a1);
+    if (D == 0)
+        return 0;
+    const double spread = fmin(fabs(a1 - a0), D) / 4 + (amin > 0 ? fmin(D / 2, D * D / (4 * amin)) : D / 2);
+    const double cmin = amin - D / 2;
+    const double K = cmin > 0 ? fmin(RAD_PI, (double)p->len / cmin) : RAD_PI;
+    return fabs(dot) * spread * (double)q->len * K;
+}
+
 /* ... and its value; *mag gets the size of the terms added. */
 static R SUF(ln_parallel_edges)(const SUF(edge) *p, const SUF(edge) *q, R *mag)
 {
@@ -300,6 +318,7 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
     const R ln_s = R_LOG((R)scale2) / 2;
     R s = 0, err = 0, mag = 0;
     double skip = 0; /* sum of |e_p . e_q| min(lp, lq) over the pairs left out */
+    double bent = 0; /* bound (P) summed over the pairs taken as parallel */
 #ifdef PAR_FLUSH
     double bu[4 * PAR_BATCH], bd[PAR_BATCH], bdot[PAR_BATCH];
     int nbatch = 0;
@@ -320,7 +339,11 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
             const SUF(edge) eq = SUF(edge_of)(&eb[q], &eb[(q + 1) % nb], origin);
             const R dot = SUF(vdot)(ep.e, eq.e), lplq = ep.len * eq.len;
             R I, m;
-            if (v3_dot(cr, cr) < 1e-26) { /* parallel */
+            /* nearly parallel: the closed form's error bound (ffcontour.c) */
+            const double cr2 = v3_dot(cr, cr);
+            const double bend = cr2 < 1e-26 ? SUF(parallel_bound)(&ep, &eq, dot_d) : HUGE_VAL;
+            if (cr2 == 0 || bend <= tol / (4 * pairs)) {
+                bent += bend;
 #ifdef PAR_FLUSH
                 R u[4], d;
                 SUF(parallel_setup)(&ep, &eq, u, &d);
@@ -355,8 +378,8 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
     if (nbatch > 0)
         PAR_FLUSH(bu, bd, bdot, nbatch, &s, &mag);
 #endif
-    /* the pairs left out as perpendicular, |I_pq| <= 2 s min(lp, lq) each
-     * (ffcontour.c) */
-    *errest = (double)(err + 16 * R_EPS * mag) + 2 * sqrt(scale2) * skip;
+    /* the pairs left out as perpendicular, |I_pq| <= 2 s min(lp, lq) each,
+     * and those taken as parallel, (P) each (ffcontour.c) */
+    *errest = (double)(err + 16 * R_EPS * mag) + 2 * sqrt(scale2) * skip + bent;
     return (double)s;
 }

@@ -237,13 +237,16 @@ static int scratch_reserve(rad_ff_scratch *w, int na, int nb)
     return 0;
 }
 
-/* Is any edge pair neither parallel nor perpendicular? */
+/* Is any edge pair neither parallel nor perpendicular?  Nearly parallel
+ * pairs (directions that differ at all, though by less than the contour's
+ * 1e-13) count as skew: the contour's closed form for them has an error
+ * bound, held against a tolerance that needs the scale of S. */
 static int has_skew(const ff_edge *ea, int na, const ff_edge *eb, int nb)
 {
     for (int p = 0; p < na; p++)
         for (int q = 0; q < nb; q++) {
             rad_vec3 cr = v3_cross(ea[p].e, eb[q].e);
-            if (fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14 && v3_dot(cr, cr) >= 1e-26)
+            if (fabs(v3_dot(ea[p].e, eb[q].e)) >= 1e-14 && v3_dot(cr, cr) > 0)
                 return 1;
         }
     return 0;
