@@ -551,6 +551,68 @@ static int follow_arc(occ_space *sp, const pair_ctx *c, const line3 *l, double t
     return 0;
 }
 
+/* Does the arc of l's conic from xa to xb (two crossings of piece p's
+ * boundary) run inside p: does the chord's bisector meet the conic in p? */
+static int arc_inside(const line3 *l, const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 xa,
+                      rad_vec3 xb)
+{
+    rad_vec3 mid, w;
+    double lo, hi;
+    if (!(sagitta(l, c, xa, xb, &mid, &w) > 0))
+        return 1; /* straight: the chord is the arc */
+    extent(c, p, n, mid, w, &lo, &hi);
+    return hi > lo;
+}
+
+/* Piece p (n vertices), which the conic crosses four times (x, in order
+ * along the boundary): two arcs, from x[0] to x[1] and x[2] to x[3], or
+ * from x[1] to x[2] and x[3] to x[0] (a conic has no inflection, and two
+ * of its arcs do not cross inside a convex piece unless it is a pair of
+ * lines).  The pairing is the one whose first arc runs inside p; that arc
+ * is followed, and then the second in the piece that holds both its ends
+ * (if the first arc's cuts split the second, those pieces are left as
+ * they are, as before).  Before, the first two crossings were taken as
+ * one arc whatever the pairing, and the second arc was left uncut.  0 or
+ * -1. */
+static int follow_two_arcs(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny,
+                           const rad_vec3 *p, int n, const rad_vec3 *x)
+{
+    const int r = arc_inside(l, c, p, n, x[0], x[1]) ? 0 : 1;
+    const rad_vec3 a0 = x[r], a1 = x[r + 1], b0 = x[(r + 2) % 4], b1 = x[(r + 3) % 4];
+    const int start = sp->db.np;
+    if (happens(l, a0, a1) ? follow_arc(sp, c, l, tiny, p, n, a0, a1)
+                           : occ_ps_push(&sp->db, p, n))
+        return -1;
+    if (!happens(l, b0, b1))
+        return 0;
+    occ_ps_clear(&sp->arc2);
+    for (int k = start; k < sp->db.np; k++)
+        if (occ_ps_push(&sp->arc2, sp->db.v + sp->db.first[k],
+                        sp->db.first[k + 1] - sp->db.first[k]))
+            return -1;
+    while (sp->db.np > start)
+        occ_ps_pop(&sp->db);
+    int done = 0;
+    for (int k = 0; k < sp->arc2.np; k++) {
+        const rad_vec3 *q = sp->arc2.v + sp->arc2.first[k];
+        const int m = sp->arc2.first[k + 1] - sp->arc2.first[k];
+        rad_vec3 xs[4];
+        int has0 = 0, has1 = 0;
+        const int nxs = done ? 0 : crossings(l, q, m, tiny, c->snap, xs);
+        for (int i = 0; i < nxs; i++) {
+            has0 |= v3_norm(v3_sub(xs[i], b0)) <= c->snap;
+            has1 |= v3_norm(v3_sub(xs[i], b1)) <= c->snap;
+        }
+        if (has0 && has1) {
+            done = 1;
+            if (follow_arc(sp, c, l, tiny, q, m, b0, b1))
+                return -1;
+        } else if (occ_ps_push(&sp->db, q, m))
+            return -1;
+    }
+    return 0;
+}
+
 /* Cut every piece of sp->dom that the conic of l crosses where its event
  * happens; 0 or -1. */
 static int cut_event(occ_space *sp, const pair_ctx *c, const line3 *l, double tiny)
@@ -561,6 +623,11 @@ static int cut_event(occ_space *sp, const pair_ctx *c, const line3 *l, double ti
         int n = sp->dom.first[k + 1] - sp->dom.first[k];
         rad_vec3 x[4];
         int nx = crossings(l, p, n, tiny, c->snap, x);
+        if (nx == 4) {
+            if (follow_two_arcs(sp, c, l, tiny, p, n, x))
+                return -1;
+            continue;
+        }
         int cut = nx >= 2 && happens(l, x[0], x[1]);
         if (cut ? follow_arc(sp, c, l, tiny, p, n, x[0], x[1]) : occ_ps_push(&sp->db, p, n))
             return -1;

@@ -127,6 +127,7 @@ void occ_space_free(occ_space *sp)
     free(sp->qrad);
     ps_free(&sp->umb);
     ps_free(&sp->arc);
+    ps_free(&sp->arc2);
     free(sp->pj0);
     free(sp->pj1);
     free(sp->hn);

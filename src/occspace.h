@@ -207,6 +207,8 @@ typedef struct occ_space {
     polyset umb;                /* its pieces inside some blocker's umbra */
     polyset arc;                /* a piece cut along an arc and its strips,
                                    in the order made (occeee.c, follow_arc) */
+    polyset arc2;               /* the pieces after one of two arcs is cut
+                                   (occeee.c, follow_two_arcs) */
     rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
     int cappj0, cappj1;
     rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
