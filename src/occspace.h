@@ -69,6 +69,9 @@
  * whole budgets (occhidden.c, orient_integral). */
 #define OCC_WEDGE_BLOCKERS 4
 #define OCC_WEDGE_BUDGET 0.25
+/* A blocker within this part of the outer element's size of its plane
+ * has every event plane cut whole (occdomain.c, near_outer). */
+#define OCC_NEAR_OUTER 1e-4
 /* A pair integrated again with narrower lenses (occhidden.c,
  * orient_integral) has OCC_LENS_BUDGET times default mode's budgets
  * above: each strip the lenses add is a piece, and each piece a leaf.
