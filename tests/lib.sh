@@ -17,6 +17,25 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # expect_num GOT WANT RELTOL: relative comparison with awk
 close_to() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1; exit !(g == g + 0 && d <= t * s) }'; }
+# against_value SCENE I J WANT SLACK WHAT: F(I -> J) of SCENE in default and
+# reference modes within their promises (1e-6, 1e-9) of WANT, an
+# independent value known to SLACK (absolute), and each mode's error
+# estimate, with SLACK, at or above the difference.  Four checks.
+against_value() {
+  for mode in default reference; do
+    tol=1e-9
+    [ "$mode" = default ] && tol=1e-6
+    row=$("$RADIOSITY" formfactor -q --threads 1 --accuracy "$mode" "$1" |
+      awk -F '\t' -v i="$2" -v j="$3" '$1 == i && $2 == j { printf "%.17g %.3g\n", $3, $4 }')
+    got=${row%% *}
+    est=${row##* }
+    close_to "$got" "$4" "$tol"
+    ok $? "$6 F($2 -> $3), $mode: within $tol of $4 ($got)"
+    awk -v g="$got" -v e="$est" -v w="$4" -v s="$5" \
+      'BEGIN { d = g - w; if (d < 0) d = -d; exit !(g == g + 0 && d <= e + s) }'
+    ok $? "$6 F($2 -> $3), $mode: its estimate $est covers the difference"
+  done
+}
 # against_pairref SCENE SPEC I J WHAT: F(I -> J) of SCENE in reference and
 # default modes within their promises (1e-9, 1e-6) of tests/pairref.py's
 # value for SPEC (to 1e-9 of the value: with 1e-10 the value moved by
