@@ -83,21 +83,21 @@
  * of the tolerance, or the unit directions agree exactly (D is then
  * round-off, and the caller may have no scale for a tolerance: formfactor.c
  * counts any other pair as skew), it is added to the estimate; otherwise
- * the pair goes
- * to the adaptive quadrature like a skew one (the lines' nearest approach
- * is then out of reach, the feet of q's ends are not).  Strips meeting
+ * the pair goes to the adaptive quadrature like a skew one (the lines'
+ * nearest approach is then out of reach, the feet of q's ends are not).
+ * Strips meeting
  * end to end along a 32-degree hinge, 700 from the origin, had three such
  * pairs with sin(theta) near 4e-14: default was 5.4e-9 off under an
  * estimate of 4.3e-10 of itself (fuzzed scene 39:150).  Exactly parallel
  * edges (D = 0, as between axis-aligned walls) add nothing.
  *
  * The error estimate of S is the quadrature's plus 16 eps times the sum of
- * the magnitudes of the terms, plus those two bounds.  For long thin pairs (two
- * slivers side by side, a long strip and a small patch) the terms exceed S
- * by 1e8 and more, and double's 16 eps of them is more than the tolerance;
- * the long double version (64-bit significand on x86-64, eps = 2^-63, 2048
- * times smaller) then gets below it.  Inputs are doubles and convert
- * exactly.
+ * the magnitudes of the terms, plus those two bounds.  For long thin pairs
+ * (two slivers side by side, a long strip and a small patch) the terms
+ * exceed S by 1e8 and more, and double's 16 eps of them is more than the
+ * tolerance; the long double version (64-bit significand on x86-64,
+ * eps = 2^-63, 2048 times smaller) then gets below it.  Inputs are
+ * doubles and convert exactly.
  */
 #include <config.h>
 

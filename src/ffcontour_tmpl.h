@@ -141,7 +141,8 @@ static double SUF(parallel_bound)(const SUF(edge) *p, const SUF(edge) *q, double
     const double D = (double)R_SQRT(SUF(vdot)(v, v)), amin = fmin(a0, a1);
     if (D == 0)
         return 0;
-    const double spread = fmin(fabs(a1 - a0), D) / 4 + (amin > 0 ? fmin(D / 2, D * D / (4 * amin)) : D / 2);
+    const double below = amin > 0 ? fmin(D / 2, D * D / (4 * amin)) : D / 2;
+    const double spread = fmin(fabs(a1 - a0), D) / 4 + below;
     const double cmin = amin - D / 2;
     const double K = cmin > 0 ? fmin(RAD_PI, (double)p->len / cmin) : RAD_PI;
     return fabs(dot) * spread * (double)q->len * K;

@@ -417,11 +417,13 @@ static void extent(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 x, rad_
  * neighbouring piece, which the conic crosses at the same two points and
  * which is estimated there.  Left: about 150 chords with no arc across
  * them that is not straight, 190 arcs that bend more than their chords
- * (the strips spent), and 560 pieces the conic crossed more than twice
- * (only the first two crossings are cut).  Taking the whole piece
- * across the chord's middle for the lens of those gave estimates up to
- * 1e-5 of F on pairs where default and reference agree to 1e-16: far
- * from a bound, so they are left to the rules as before.
+ * (the strips spent), some 330 pieces the conic crosses three times
+ * (the first two crossings are cut), and the second arcs of pieces it
+ * crosses four times that the first arc's cuts split (6 of 222;
+ * follow_two_arcs, below).  Taking the whole piece across the chord's
+ * middle for the lens of those gave estimates up to 1e-5 of F on pairs
+ * where default and reference agree to 1e-16: far from a bound, so they
+ * are left to the rules as before.
  *
  * Measured against what narrowing the lenses changed (reference mode's
  * second try, occhidden.c, on the open 6x6 Cornell box: the 106 pairs
