@@ -212,8 +212,9 @@ double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q)
     eq.d = vec_of_d(q->d);
     eq.len = q->len;
     eq.e = vec_of_d(q->e);
-    double mag;
-    return ln_parallel_edges_d(&ep, &eq, &mag);
+    double u[4], d, a[2], mag;
+    parallel_setup_d(&ep, &eq, u, &d, a);
+    return ln_parallel_u_d(u, d, &mag);
 }
 
 double rad_ln_parallel(double a1, double a2, double b1, double b2, double d)

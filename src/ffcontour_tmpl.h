@@ -109,15 +109,18 @@ static R SUF(ln_point_segment)(SUF(vec) x, const SUF(edge) *q, R *mag)
 }
 
 /* Parallel edges: the closed form in p's coordinate.  _setup gives the
- * four arguments of H (signs +, +, -, -) and the distance of the lines. */
-static void SUF(parallel_setup)(const SUF(edge) *p, const SUF(edge) *q, R u[4], R *dist)
+ * four arguments of H (signs +, +, -, -), the distance of the lines, and
+ * in a[] the distances of q's two ends from p's line. */
+static void SUF(parallel_setup)(const SUF(edge) *p, const SUF(edge) *q, R u[4], R *dist, R a[2])
 {
     SUF(vec) w0 = SUF(vsub)(q->p0, p->p0);
     SUF(vec) w1 = SUF(vaxpy)(w0, 1, q->d);
     R b1 = SUF(vdot)(w0, p->e), b2 = SUF(vdot)(w1, p->e);
     /* distance between the lines, from both ends of q (mean of two) */
     SUF(vec) x0 = SUF(vaxpy)(w0, -b1, p->e), x1 = SUF(vaxpy)(w1, -b2, p->e);
-    *dist = (R_SQRT(SUF(vdot)(x0, x0)) + R_SQRT(SUF(vdot)(x1, x1))) / 2;
+    a[0] = R_SQRT(SUF(vdot)(x0, x0));
+    a[1] = R_SQRT(SUF(vdot)(x1, x1));
+    *dist = (a[0] + a[1]) / 2;
     if (b1 > b2) {
         R t = b1;
         b1 = b2;
@@ -130,14 +133,13 @@ static void SUF(parallel_setup)(const SUF(edge) *p, const SUF(edge) *q, R u[4], 
 }
 
 /* What taking nearly parallel edges as parallel at their mean distance
- * can miss, times |e_p . e_q| (bound (P) of ffcontour.c). */
-static double SUF(parallel_bound)(const SUF(edge) *p, const SUF(edge) *q, double dot)
+ * can miss, times |e_p . e_q| (bound (P) of ffcontour.c); a[] as
+ * parallel_setup gives it. */
+static double SUF(parallel_bound)(const SUF(edge) *p, const SUF(edge) *q, const R a[2],
+                                  double dot)
 {
-    const SUF(vec) w0 = SUF(vsub)(q->p0, p->p0), w1 = SUF(vaxpy)(w0, 1, q->d);
-    const SUF(vec) x0 = SUF(vaxpy)(w0, -SUF(vdot)(w0, p->e), p->e);
-    const SUF(vec) x1 = SUF(vaxpy)(w1, -SUF(vdot)(w1, p->e), p->e);
-    const SUF(vec) v = SUF(vaxpy)(q->d, -SUF(vdot)(q->d, p->e), p->e); /* x1 - x0 */
-    const double a0 = (double)R_SQRT(SUF(vdot)(x0, x0)), a1 = (double)R_SQRT(SUF(vdot)(x1, x1));
+    const SUF(vec) v = SUF(vaxpy)(q->d, -SUF(vdot)(q->d, p->e), p->e); /* across p's line */
+    const double a0 = (double)a[0], a1 = (double)a[1];
     const double D = (double)R_SQRT(SUF(vdot)(v, v)), amin = fmin(a0, a1);
     if (D == 0)
         return 0;
@@ -148,16 +150,15 @@ static double SUF(parallel_bound)(const SUF(edge) *p, const SUF(edge) *q, double
     return fabs(dot) * spread * (double)q->len * K;
 }
 
-/* ... and its value; *mag gets the size of the terms added. */
-static R SUF(ln_parallel_edges)(const SUF(edge) *p, const SUF(edge) *q, R *mag)
+/* ... and its value from them; *mag gets the size of the terms added. */
+static R SUF(ln_parallel_u)(const R u[4], R d, R *mag)
 {
-    R u[4], d;
-    SUF(parallel_setup)(p, q, u, &d);
     R h1 = SUF(h_parallel)(u[0], d), h2 = SUF(h_parallel)(u[1], d);
     R h3 = SUF(h_parallel)(u[2], d), h4 = SUF(h_parallel)(u[3], d);
     *mag = R_FABS(h1) + R_FABS(h2) + R_FABS(h3) + R_FABS(h4);
     return h1 + h2 - h3 - h4;
 }
+
 
 /* Gauss-Kronrod 7-15 on [a, b] of p's parameter: the integral; *err the
  * Kronrod-Gauss difference, *floor 64 eps times the size of the terms. */
@@ -342,12 +343,16 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
             R I, m;
             /* nearly parallel: the closed form's error bound (ffcontour.c) */
             const double cr2 = v3_dot(cr, cr);
-            const double bend = cr2 < 1e-26 ? SUF(parallel_bound)(&ep, &eq, dot_d) : HUGE_VAL;
-            if (cr2 == 0 || bend <= tol / (4 * pairs)) {
+            const int near = cr2 < 1e-26;
+            R u[4] = {0, 0, 0, 0}, d = 0, a[2];
+            double bend = HUGE_VAL;
+            if (near) {
+                SUF(parallel_setup)(&ep, &eq, u, &d, a);
+                bend = SUF(parallel_bound)(&ep, &eq, a, dot_d);
+            }
+            if (near && (cr2 == 0 || bend <= tol / (4 * pairs))) {
                 bent += bend;
 #ifdef PAR_FLUSH
-                R u[4], d;
-                SUF(parallel_setup)(&ep, &eq, u, &d);
                 if (PAR_OK(u, d)) { /* batched: PAR_FLUSH adds dot (H sum) */
                     for (int k = 0; k < 4; k++)
                         bu[4 * nbatch + k] = u[k];
@@ -362,7 +367,7 @@ static double SUF(contour)(const rad_ff_edge *ea, int na, const rad_ff_edge *eb,
                     continue;
                 }
 #endif
-                I = SUF(ln_parallel_edges)(&ep, &eq, &m) - lplq * ln_s;
+                I = SUF(ln_parallel_u)(u, d, &m) - lplq * ln_s;
                 m += lplq * R_FABS(ln_s); /* as the batched path counts it */
             } else {
                 R e = 0;

@@ -299,8 +299,8 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
     return 0;
 }
 
-/* Does blocker p (n vertices) come within OCC_NEAR_OUTER of outer
- * polygon o's size of o's plane?  The wedges of occevent.c assume a
+/* Does blocker p (n vertices) come within tol of the outer plane (normal
+ * c->nx, through o0)?  The wedges of occevent.c assume a
  * blocker strictly between the two elements.  A blocker vertex v on the
  * outer plane breaks that: seen from x in that plane, v's shadow runs
  * along the line where the two planes meet, and crosses the inner
@@ -310,14 +310,12 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
  * element to a corner of the inner one: default was 2.8e-9 off under an
  * estimate of 1.65e-9 (the same with the vertex 1e-6 of the triangle
  * above the outer plane; 1e-3 above, the wedges held).  Such a blocker's
- * planes are cut whole. */
-static int near_outer(const pair_ctx *c, const rad_vec3 *p, int n, const rad_vec3 *o, int no)
+ * planes are cut whole (split_events: tol is OCC_NEAR_OUTER of the outer
+ * element's size). */
+static int near_outer(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 o0, double tol)
 {
-    double size = 0;
-    for (int k = 1; k < no; k++)
-        size = fmax(size, v3_norm(v3_sub(o[k], o[0])));
     for (int k = 0; k < n; k++)
-        if (fabs(v3_dot(c->nx, v3_sub(p[k], o[0]))) <= OCC_NEAR_OUTER * size)
+        if (fabs(v3_dot(c->nx, v3_sub(p[k], o0))) <= tol)
             return 1;
     return 0;
 }
@@ -394,10 +392,14 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
 {
     if (dom_spheres(sp))
         return -1;
+    double size = 0; /* of the outer element, from its first vertex */
+    for (int k = 1; k < no; k++)
+        size = fmax(size, v3_norm(v3_sub(o[k], o[0])));
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
-        const int whole = c->events == OCC_SPLIT_WEDGES && near_outer(c, p, np, o, no);
+        const int whole = c->events == OCC_SPLIT_WEDGES &&
+                          near_outer(c, p, np, o[0], OCC_NEAR_OUTER * size);
         if (split_dom(sp, c, sp->bn[b], p[0], NULL) ||
             split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV, whole) ||
             split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE, whole))
