@@ -83,6 +83,22 @@
  * times the sum of the magnitudes of the terms, as in formfactor.c, and
  * the quadratic form's share above.
  *
+ * Edge pairs within 1e-14 of perpendicular are left out of the rule
+ * (exactly perpendicular ones contribute nothing).  What one would add is
+ * (e_p . e_q) times the integral of ln(r/s) over the pair, at most
+ * |e_p . e_q| lp lq L / 2 with L >= |ln(r^2/s^2)| on the real edges
+ * (D <= r <= R, the L of the round-off term).  The dots themselves err by
+ * up to 3 eps a, a = sum_i |e_p,i e_q,i| (Higham 2002, eq. 3.5; 4 eps
+ * here, a margin for directions a few ulps off unit length): a few eps of
+ * the dot wherever a ~ |e_p . e_q|, which the round-off term counts, but
+ * not where the products cancel, as they do on nearly perpendicular
+ * pairs.  So
+ *   X = sum over the pairs left out of (|e_p . e_q| + 4 eps a) lp lq
+ *       + sum over the others of 4 eps (a - |e_p . e_q|) lp lq
+ * and X L / 2 is added to the bound (X = 0 for edges along the axes).
+ * Only pairs more than about 1e5 of their sizes apart are kept off this
+ * path by it (there L ~ size / c); the general path then takes them.
+ *
  * Which rule (rad_ff_gauss_tiers).  The 3 x 3 and 4 x 4 rules cost about
  * what the classic nine-point rule does (three logs per edge pair, the
  * logs and distances being most of the work), the 6 x 6 rule about twice
@@ -178,7 +194,9 @@ bounds_apart(const rad_ff_poly *a, const rad_ff_poly *b, double sep2, double sca
     const double t1 = scale2 * inv_d2 - 1, t2 = rhi - 1;
     const double lb = l1 > l2 ? l1 : l2, lt = t1 > t2 ? t1 : t2;
     const double kappa = (R + lmax) * (R + lmax) * inv_d2;
-    g->roundoff = DBL_EPSILON * (8 * ((lt < lb ? lt : lb) + 1) + 8 * kappa);
+    g->lr = lt < lb ? lt : lb;
+    g->roundoff = DBL_EPSILON * (8 * (g->lr + 1) + 8 * kappa);
+    g->px = 0; /* the caller's */
     return 1;
 }
 
@@ -225,7 +243,7 @@ static inline __attribute__((always_inline)) double bound_k(const rad_ff_gauss_b
         const double ellipse = (64.0 / 15.0) * g->M / (pow_k(g->rho2, k) * (1 - 1 / g->rho2));
         e = ellipse < e ? ellipse : e;
     }
-    return g->pp * (e + g->roundoff);
+    return g->pp * (e + g->roundoff) + 0.5 * g->px * g->lr;
 }
 
 double rad_ff_gauss_bound(const rad_ff_gauss_bounds *g, int k)
@@ -284,13 +302,25 @@ static int colinear_closed(const rad_ff_edge *ep, const rad_ff_edge *eq, rad_vec
     return 1;
 }
 
+/* X's share of one edge pair (see the top of the file): dot = e_p . e_q
+ * as computed, kept whether the pair is in the rule */
+static inline double left_out(const rad_ff_edge *ep, const rad_ff_edge *eq, double dot, int kept)
+{
+    const double a = fabs(ep->e.x * eq->e.x) + fabs(ep->e.y * eq->e.y) +
+                     fabs(ep->e.z * eq->e.z);
+    const double x = kept ? 4 * DBL_EPSILON * fmax(a - fabs(dot), 0)
+                          : fabs(dot) + 4 * DBL_EPSILON * a;
+    return x * ep->len * eq->len;
+}
+
 /* The edge pairs from position *pos (q * na + p) on that are not
  * perpendicular, up to a full batch, padded to a multiple of 4 with copies
  * of the first, weighted 0; advances *pos, adds sum |cf| to *acf and
- * returns the count.  col (or NULL) takes the colinear pairs. */
+ * returns the count.  col (or NULL) takes the colinear pairs; skip (or
+ * NULL) takes X (see the top of the file). */
 static inline __attribute__((always_inline)) int
 fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batch *bt, int *pos,
-           double *acf, colinear_sum *col)
+           double *acf, colinear_sum *col, double *skip)
 {
     const int na = a->nedges, nb = b->nedges;
     int m = 0, q = *pos / na, p = *pos - q * na;
@@ -298,9 +328,12 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
     while (q < nb && m < BATCH) {
         const rad_ff_edge *ep = &a->edges[p], *eq = &b->edges[q];
         const double dot = v3_dot(ep->e, eq->e);
-        /* perpendicular pairs contribute nothing */
-        if (fabs(dot) >= 1e-14 &&
-            !(col && fabs(dot) > 1 - 1e-12 && colinear_closed(ep, eq, shift, dot, col))) {
+        /* perpendicular pairs contribute nothing; the nearly perpendicular
+         * ones left out are bounded (see the top of the file) */
+        const int kept = fabs(dot) >= 1e-14;
+        if (skip)
+            *skip += left_out(ep, eq, dot, kept);
+        if (kept && !(col && fabs(dot) > 1 - 1e-12 && colinear_closed(ep, eq, shift, dot, col))) {
             const rad_vec3 w = v3_sub(ep->mid, v3_add(eq->mid, shift));
             bt->wx[m] = w.x;
             bt->wy[m] = w.y;
@@ -381,7 +414,7 @@ double rad_ff_nine_point(const rad_ff_poly *a, const rad_ff_poly *b, double scal
     pair_batch bt;
     double s = 0, acf = 0;
     for (int pos = 0; pos < end;) {
-        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, touch ? &col : NULL);
+        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, touch ? &col : NULL, NULL);
         if (m > 0)
             s += nine_eval(&bt, m, inv_s2);
     }
@@ -493,7 +526,7 @@ double rad_ff_gauss_sum(const rad_ff_poly *a, const rad_ff_poly *b, int k, doubl
     pair_batch bt;
     double s = 0, acf = 0;
     for (int pos = 0; pos < end;) {
-        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, NULL);
+        const int m = fill_pairs(a, b, shift, &bt, &pos, &acf, NULL, NULL);
         if (m > 0)
             s += quad_eval_any(&bt, m, 1.0 / scale2, k);
     }
@@ -514,35 +547,42 @@ static const int tier_k[4] = {3, 4, 6, 8};
 /* The derivative bound without a division or a square root, for the fast
  * path: with d = D^2/s^2, mu = lmax^2/s^2, rr = R^2/s^2 and P = g.pp, the
  * bound on the K-point rule's error in S times d^K is
- *   T_K = P (2 C_K mu^K + 8 eps d^(K-1) z),   z = max(1, rr d) + 2 rr + 2 mu
+ *   T_K = P (2 C_K mu^K + 8 eps d^(K-1) z) + X z d^(K-1) / 2,
+ *   z = max(1, rr d) + 2 rr + 2 mu
  * (the round-off term: (L + 1) d <= max(s^2/D^2, R^2/s^2) d = max(1, rr d)
  * by |ln x| <= max(x, 1/x) - 1, and kappa d <= (R + lmax)^2 / s^2 <=
- * 2 rr + 2 mu), so a result s_K is accepted when T_K <= rel s_K d^K.
+ * 2 rr + 2 mu; X as at the top of the file, L d <= z), so a result s_K is
+ * accepted when T_K <= rel s_K d^K.
  * fast_bounds fills T_K and d^K for the four tiers. */
-static inline void fast_bounds(double d, double mu, double z, double pp, double log_err,
-                               double *t, double *dk)
+static inline void fast_bounds(double d, double mu, double z, double pp, double px,
+                               double log_err, double *t, double *dk)
 {
     const double d2 = d * d, d3 = d2 * d, d4 = d2 * d2, d5 = d4 * d, d6 = d4 * d2, d7 = d6 * d;
     const double m2 = mu * mu, m3 = m2 * mu, m4 = m2 * m2, m6 = m4 * m2, m8 = m4 * m4;
-    const double r = 8 * DBL_EPSILON * z + log_err * d;
-    t[0] = pp * (2 * C3 * m3 + r * d2);
-    t[1] = pp * (2 * C4 * m4 + r * d3);
-    t[2] = pp * (2 * C6 * m6 + r * d5);
-    t[3] = pp * (2 * C8 * m8 + r * d7);
+    /* the round-off, and px L / 2 with L d <= z (as above) */
+    const double r = pp * (8 * DBL_EPSILON * z + log_err * d) + 0.5 * px * z;
+    t[0] = pp * 2 * C3 * m3 + r * d2;
+    t[1] = pp * 2 * C4 * m4 + r * d3;
+    t[2] = pp * 2 * C6 * m6 + r * d5;
+    t[3] = pp * 2 * C8 * m8 + r * d7;
     dk[0] = d3;
     dk[1] = d4;
     dk[2] = d6;
     dk[3] = d7 * d;
 }
 
-/* sum |e_p . e_q| lp lq over the edge pairs that are not perpendicular */
-static double sum_ll(const rad_ff_poly *a, const rad_ff_poly *b)
+/* sum |e_p . e_q| lp lq over the edge pairs that are not perpendicular;
+ * *skip takes X (see the top of the file) */
+static double sum_ll(const rad_ff_poly *a, const rad_ff_poly *b, double *skip)
 {
     double pp = 0;
     for (int q = 0; q < b->nedges; q++)
         for (int p = 0; p < a->nedges; p++) {
-            const double dot = fabs(v3_dot(a->edges[p].e, b->edges[q].e));
-            pp += dot >= 1e-14 ? dot * a->edges[p].len * b->edges[q].len : 0;
+            const rad_ff_edge *ep = &a->edges[p], *eq = &b->edges[q];
+            const double dot = v3_dot(ep->e, eq->e);
+            const int kept = fabs(dot) >= 1e-14;
+            pp += kept ? fabs(dot) * ep->len * eq->len : 0;
+            *skip += left_out(ep, eq, dot, kept);
         }
     return pp;
 }
@@ -564,7 +604,7 @@ static inline double tier_sum(const rad_ff_poly *a, const rad_ff_poly *b, const 
 /* The general tiers: the bounds of rad_ff_gauss_apart (the centroid
  * distance less the radii too, and the ellipse bound), from tier t on. */
 static int tiers_general(const rad_ff_poly *a, const rad_ff_poly *b, const pair_batch *bt, int m,
-                         double pp, double scale2, double dmin, double rel, double *s,
+                         double pp, double px, double scale2, double dmin, double rel, double *s,
                          double *e)
 {
     const rad_vec3 sep = v3_sub(b->centroid, a->centroid);
@@ -573,6 +613,7 @@ static int tiers_general(const rad_ff_poly *a, const rad_ff_poly *b, const pair_
     if (!bounds_apart(a, b, sep2, scale2, inv_s2, dmin, &g))
         return 0;
     g.pp = pp;
+    g.px = px;
     /* The first rule whose bound is within rel / 2 of the guess at S is
      * tried (or the 8 x 8 rule if its bound is within 4 rel of it). */
     const double sep4 = sep2 * sep2, G = guess_g(a, b, sep);
@@ -617,15 +658,15 @@ tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, do
     const double sep2 = v3_dot(sep, sep), inv_s2 = 1 / scale2;
     pair_batch bt;
     int m = 0;
-    double pp;
+    double pp, px = 0;
     const int one_batch = a->nedges * b->nedges <= BATCH;
     if (one_batch) {
         double acf = 0;
         int pos = 0;
-        m = fill_pairs(a, b, sep, &bt, &pos, &acf, NULL);
+        m = fill_pairs(a, b, sep, &bt, &pos, &acf, NULL, &px);
         pp = 8 * acf; /* sum |e_p . e_q| lp lq */
     } else {
-        pp = sum_ll(a, b);
+        pp = sum_ll(a, b, &px);
     }
     if (!(pp > 0))
         return 0; /* every edge pair perpendicular: the general path */
@@ -642,7 +683,7 @@ tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, do
         const double z = (rr * d > 1 ? rr * d : 1) + 2 * rr + 2 * mu;
         if (d > 1e-30 && d <= 1 && rr < 1e300) {
             double tk[4], dk[4];
-            fast_bounds(d, mu, z, pp, short_log ? LOG_SHORT_ERR : 0, tk, dk);
+            fast_bounds(d, mu, z, pp, px, short_log ? LOG_SHORT_ERR : 0, tk, dk);
             /* the guess at S (as in tiers_general), times sep^4 */
             const double sep4 = sep2 * sep2, G = guess_g(a, b, sep);
             const double rg = rel * G;
@@ -665,7 +706,7 @@ tiers(const rad_ff_poly *a, const rad_ff_poly *b, double scale2, double gap2, do
         }
     }
     const double dmin = (sqrt(gap2) > dplane ? sqrt(gap2) : dplane) - tol;
-    return tiers_general(a, b, one_batch ? &bt : NULL, m, pp, scale2, dmin, rel, s, e);
+    return tiers_general(a, b, one_batch ? &bt : NULL, m, pp, px, scale2, dmin, rel, s, e);
 }
 
 RAD_KERNEL_CLONES

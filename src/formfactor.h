@@ -111,6 +111,9 @@ typedef struct rad_ff_gauss_bounds {
     double q2;              /* (2h / D)^2, the derivative bound */
     double rho2, M;         /* the ellipse bound (rho2 = 0: not computed) */
     double roundoff;        /* per unit pp */
+    double px, lr;          /* the pairs left out as perpendicular and the
+                               dots' round-off (ffgauss.c), and the bound
+                               on |ln(r^2 / s^2)| that they are taken at */
 } rad_ff_gauss_bounds;
 /* The nodes (weights = 0) or weights (1) of ffgauss.c's K-point rules,
  * K = 3, 4, 6, 8, or NULL. */
