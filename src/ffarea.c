@@ -38,8 +38,15 @@
  * integral's value (Stokes: any surface spanning the contour gives it);
  * with one normal, a leaf twisted by 1e-13 of its size at a 179.9-degree
  * hinge was off by 6e-10 of S, which the orders' agreement cannot see
- * (fuzzed scene 36:91).  On a planar polygon the caller's normal is kept:
- * the cross product of a sliver's edges is much the worse normal.
+ * (fuzzed scene 36:91).  A twisted polygon of more than four vertices
+ * (the scene accepts 1e-6 of its size off its plane, scene.c) is
+ * integrated over its fan of triangles, each with its own normal: the fan
+ * spans the contour too.  With one normal a pentagon with one vertex 5e-7
+ * off the plane of the others (2.6e-7 of its size), 5 from a plate at 30
+ * degrees to it, was off by 5e-7 of S in reference mode under an estimate
+ * of 2e-12 of it (tests/twisted.sh).  On a planar polygon the
+ * caller's normal is kept: the cross product of a sliver's edges is much
+ * the worse normal.
  *
  * A quadrilateral longer than the pair's distance (a strip beside another
  * polygon) is cut into n_u x n_v equal parts of its parameter square, each
@@ -73,24 +80,35 @@ typedef struct area_side {
  * a x b + u a x c + v c x b, off the plane only through c's part along
  * the normal, 4 times the vertices' alternating distance from it: twisted
  * when that is beyond the round-off of the coordinates relative to the
- * origin (64 eps of their largest). */
+ * origin (64 eps of their largest).  A polygon of more vertices is twisted
+ * when its vertices' heights along the normal spread by as much; a
+ * triangle never is. */
 static area_side side_of(const rad_vec3 *p, int n, rad_vec3 origin, rad_vec3 nrm)
 {
     area_side sd = {nrm, 0};
-    if (n != 4)
+    if (n < 4)
         return sd;
-    double big = 0;
-    for (int k = 0; k < 4; k++)
-        big = fmax(big, v3_maxabs(v3_sub(p[k], origin)));
-    const rad_vec3 c = v3_add(v3_sub(p[0], p[1]), v3_sub(p[2], p[3]));
-    sd.twisted = fabs(v3_dot(c, nrm)) > 64 * DBL_EPSILON * big;
+    double big = 0, hlo = INFINITY, hhi = -INFINITY;
+    for (int k = 0; k < n; k++) {
+        const rad_vec3 q = v3_sub(p[k], origin);
+        big = fmax(big, v3_maxabs(q));
+        hlo = fmin(hlo, v3_dot(q, nrm));
+        hhi = fmax(hhi, v3_dot(q, nrm));
+    }
+    if (n == 4) {
+        const rad_vec3 c = v3_add(v3_sub(p[0], p[1]), v3_sub(p[2], p[3]));
+        sd.twisted = fabs(v3_dot(c, nrm)) > 64 * DBL_EPSILON * big;
+    } else {
+        sd.twisted = hhi - hlo > 64 * DBL_EPSILON * big;
+    }
     return sd;
 }
 
 /* Gauss points of polygon p (n vertices) relative to `origin`, order k, a
  * quadrilateral cut into nu x nv parts: fills pts, w (the weights, the
  * Jacobian included) and nv_ (the unit normals: the surface's own,
- * P_u x P_v / |P_u x P_v|, on a twisted quadrilateral, sd's elsewhere)
+ * P_u x P_v / |P_u x P_v|, on a twisted quadrilateral, each fan
+ * triangle's on another twisted polygon, sd's elsewhere)
  * (room for count_points(n, k, nu, nv)); returns the count. */
 static int count_points(int n, int k, int nu, int nv)
 {
@@ -127,13 +145,15 @@ static int polygon_points(const rad_vec3 *p, int n, rad_vec3 origin, int k, int 
     }
     for (int t = 1; t + 1 < n; t++) {
         rad_vec3 v0 = v3_sub(p[0], origin), e1 = v3_sub(p[t], p[0]), e2 = v3_sub(p[t + 1], p[t]);
-        double twice = v3_norm(v3_cross(e1, e2)); /* 2 A_t */
+        const rad_vec3 cr = v3_cross(e1, e2);
+        const double twice = v3_norm(cr); /* 2 A_t */
+        const rad_vec3 nt = sd->twisted && twice > 0 ? v3_scale(cr, 1 / twice) : sd->nrm;
         for (int i = 0; i < k; i++) {
             double u = 0.5 * (1 + x[i]);
             for (int j = 0; j < k; j++) {
                 double v = 0.5 * (1 + x[j]);
                 pts[m] = v3_add(v0, v3_add(v3_scale(e1, u), v3_scale(e2, u * v)));
-                nv_[m] = sd->nrm;
+                nv_[m] = nt;
                 w[m++] = 0.25 * gw[i] * gw[j] * twice * u;
             }
         }

@@ -336,6 +336,9 @@ typedef struct pair_state {
     int touch;                  /* both have two vertices near the other's
                                    plane: colinear edge pairs may exist */
     double tol;                 /* "on the plane" (see pair_setup) */
+    int ambiguous;              /* a clip, or F = 0, that a twisted
+                                   polygon's plane cannot decide (see
+                                   pair_setup) */
     double dplane;              /* larger of each polygon's smallest vertex
                                    distance from the other's plane */
     double scale2;              /* s^2 of the ln(r/s) every I_pq integrates */
@@ -611,11 +614,24 @@ static double pair_finish(pair_state *p, int finish, double *contour, double *er
     return pair_done(p->a, p->b, p->w, p->s, p->e, contour, errest);
 }
 
+/* How far a twisted polygon's plane is uncertain at the other polygon's
+ * vertices (see pair_setup): 2 twist (1 + reach radius / area) for each,
+ * reach the farthest the other's vertices can be from its centroid. */
+static double plane_doubt(const rad_ff_poly *a, const rad_ff_poly *b)
+{
+    const double c = v3_norm(v3_sub(b->centroid, a->centroid));
+    const double da = a->area > 0 ? a->radius / a->area : 0;
+    const double db = b->area > 0 ? b->radius / b->area : 0;
+    return 2 * a->twist * (1 + (c + b->radius) * da) + 2 * b->twist * (1 + (c + a->radius) * db);
+}
+
 /* Clip each polygon to the front of the other's plane and fill p for the
  * methods; 1 to go on, 0 when F = 0 (one wholly behind the other's plane,
- * or both on one plane), -1 when scratch memory ran out. */
+ * or both on one plane), -1 when scratch memory ran out.  wide: take
+ * every vertex within the twisted planes' doubt as on the plane (the
+ * second look at an ambiguous pair, ff_pair_once). */
 static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
-                      const rad_ff_options *opt, double within, rad_ff_scratch *w)
+                      const rad_ff_options *opt, double within, rad_ff_scratch *w, int wide)
 {
     if (scratch_reserve(w, a->n, b->n) != 0)
         return -1;
@@ -634,23 +650,46 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
      * fully.  A twisted polygon (the scene accepts a vertex 1e-6 of a
      * quad's size off its plane) is planar only to within its twist, so
      * two faces of one twisted panel lie on one plane and see nothing of
-     * each other (they used to give F = 2/9 both ways). */
+     * each other (they used to give F = 2/9 both ways).
+     *
+     * That plane is the Newell normal's through the centroid, and a
+     * twisted polygon's plane is uncertain: the planes through three of
+     * its vertices (its fan's triangles, which the contour's Stokes value
+     * integrates over) tilt from it by up to about 2 twist / width, width
+     * >= area / radius, so at the other polygon's vertices they part from
+     * it by up to plane_doubt.  A clip whose vertices behind the plane all
+     * lie within that doubt, or an F = 0 for a polygon wholly behind it
+     * within the doubt, is ambiguous: ff_pair_once adds to the estimate
+     * what taking those vertices as on the plane changes.  A pentagon
+     * twisted by 3.5e-7 of its size 0.05 from a plate hinged at 179.9
+     * degrees lost a sliver of the plate this way: both modes 1e-6 of F
+     * off the contour integral of the pair, under estimates of 1e-16
+     * (tests/twisted.sh).  A planar polygon has no doubt beyond
+     * round-off, which rtol holds. */
     const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
     const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
                          1e-12 * (a->size + b->size);
-    const double tol = rtol + a->twist + b->twist;
+    const double wtol = rtol + plane_doubt(a, b);
+    const double tol = wide ? wtol : rtol + a->twist + b->twist;
+    p->ambiguous = 0;
     /* A colinear edge pair lies on both planes: each polygon then has two
      * vertices near the other's plane, allowing for non-planar polygons
      * (the scene's 1e-6 of a quad's size, less for its elements). */
     const double ntol = tol + 1e-5 * (a->size + b->size);
     int nega, negb, neara, nearb;
     double mina, minb;
-    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, ntol, dist, &negb, &nearb, &minb))
+    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, ntol, dist, &negb, &nearb, &minb)) {
+        p->ambiguous = wtol > tol && minb < -tol && minb >= -wtol;
         return 0; /* B wholly behind A's plane, or on it */
+    }
     p->pb = negb ? cb : b->v;
     p->nb = negb ? poly_clip_side(b->v, dist, b->n, 1.0, cb, b->n + 1) : b->n;
-    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina))
+    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina)) {
+        p->ambiguous = wtol > tol && mina < -tol && mina >= -wtol;
         return 0;
+    }
+    p->ambiguous = wtol > tol && (negb || nega) && (!negb || minb >= -wtol) &&
+                   (!nega || mina >= -wtol);
     p->pa = nega ? ca : a->v;
     p->na = nega ? poly_clip_side(a->v, dist, a->n, 1.0, ca, a->n + 1) : a->n;
     /* (a clip that would not fit in n + 1 vertices returns -1: its
@@ -696,6 +735,41 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
     return 1;
 }
 
+/* The methods in order on a set-up pair: how to store the result
+ * (FIN_*), or -1 when memory ran out. */
+static int run_methods(pair_state *p)
+{
+    int finish = FIN_CLAMPED;
+    for (int k = 0; k < FF_NMETHODS; k++) {
+        const ff_method *m = &ff_methods[k];
+        if (!m->applies(p))
+            continue;
+        const int r = m->run(p);
+        if (r == FF_FAIL)
+            return -1;
+        finish = m->finish;
+        if (r == FF_DONE)
+            break;
+    }
+    return finish;
+}
+
+/* An ambiguous pair (pair_setup) looked at again with the vertices within
+ * the planes' doubt taken as on them: twice |S_wide - s| (the wide look is
+ * one reading the twist allows, not the farthest: a fan triangle's plane
+ * may clip between the two) plus S_wide's own estimate, or NaN when
+ * memory ran out.  (It reuses the scratch space, so the first look's
+ * polygons are gone after it.) */
+static double doubt_of(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_options *opt,
+                       double within, rad_ff_scratch *w, double s)
+{
+    pair_state q;
+    const int go = pair_setup(&q, a, b, opt, within, w, 1);
+    if (go <= 0)
+        return go < 0 ? NAN : 2 * fabs(s);
+    return run_methods(&q) < 0 ? NAN : 2 * fabs(q.s - s) + q.e;
+}
+
 static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
                            const rad_ff_options *opt, double within, rad_ff_scratch *w,
                            double *contour, double *errest)
@@ -704,20 +778,24 @@ static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
     *contour = 0;
     if (errest)
         *errest = 0;
-    const int go = pair_setup(&p, a, b, opt, within, w);
-    if (go <= 0)
-        return go < 0 ? NAN : 0.0;
-    int finish = FIN_CLAMPED;
-    for (int k = 0; k < FF_NMETHODS; k++) {
-        const ff_method *m = &ff_methods[k];
-        if (!m->applies(&p))
-            continue;
-        const int r = m->run(&p);
-        if (r == FF_FAIL)
+    const int go = pair_setup(&p, a, b, opt, within, w, 0);
+    const int doubt = p.ambiguous && go >= 0 && opt->accuracy != RAD_ACCURACY_CLASSIC;
+    if (go <= 0) {
+        if (go < 0)
             return NAN;
-        finish = m->finish;
-        if (r == FF_DONE)
-            break;
+        const double e = doubt ? doubt_of(a, b, opt, within, w, 0) : 0;
+        if (errest)
+            *errest = e;
+        return isnan(e) ? NAN : 0.0;
+    }
+    const int finish = run_methods(&p);
+    if (finish < 0)
+        return NAN;
+    if (doubt && finish != FIN_RAW) {
+        const double e = doubt_of(a, b, opt, within, w, p.s);
+        if (isnan(e))
+            return NAN;
+        p.e += e;
     }
     return pair_finish(&p, finish, contour, errest);
 }
