@@ -244,8 +244,10 @@ int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)
               "estimates say so)%s",
               c->strict ? "" : "warning: ", st->promise_unmet, mode, st->promise,
               c->strict ? "; --strict makes that an error"
-                        : c->ff.accuracy == RAD_ACCURACY_DEFAULT ? "; try --accuracy reference"
-                                                                 : "");
+                        : c->ff.accuracy == RAD_ACCURACY_DEFAULT
+                            ? "; try --accuracy reference (it cannot lift a twisted polygon's "
+                              "doubt: radiosity(1), ACCURACY MODES)"
+                            : "");
     return c->strict;
 }
 

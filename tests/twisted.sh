@@ -56,4 +56,7 @@ for mode in default reference; do
 done
 "$RADIOSITY" formfactor -q --strict --accuracy reference "$work/hinge.scene" > "$work/strict.out" 2>&1
 ok $(($? == 0)) "hinged at 179.9 degrees: --strict refuses what the twist leaves undecided"
+"$RADIOSITY" formfactor -q --accuracy default "$work/hinge.scene" > "$work/default.out" 2> "$work/default.err"
+grep -q "cannot lift a twisted polygon's doubt" "$work/default.err"
+ok $? "hinged at 179.9 degrees: default's warning does not promise that reference mode helps"
 done_testing
