@@ -24,6 +24,7 @@
  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -63,6 +64,35 @@ static void ff_poly_lengths(rad_ff_poly *p)
     }
 }
 
+double rad_ff_normal_doubt(const rad_vec3 *p, int n)
+{
+    rad_vec3 lo, hi;
+    v3_bounds(p, n, &lo, &hi);
+    const double size = v3_norm(v3_sub(hi, lo)), twice = v3_norm(v3_newell(p, n));
+    return twice > 0 ? DBL_EPSILON * (4 + 8.0 * (n - 2) * (size / twice) * size) : INFINITY;
+}
+
+double rad_ff_element_doubt(const rad_mesh *m, int e)
+{
+    const rad_element *el = &m->elements[e];
+    const int s = el->surface, v0 = m->surface_vfirst[s];
+    const int n = m->surface_n[s], mm = m->surface_m[s];
+    rad_vec3 c[4];
+    if (n == 1 && mm == 1 && el->nverts != 4) /* a polygon, its vertices in order */
+        return rad_ff_normal_doubt(m->vertices + v0, m->surface_vfirst[s + 1] - v0);
+    if (n == 1 && mm == 1) { /* the element is its surface */
+        for (int k = 0; k < 4; k++)
+            c[k] = rad_mesh_vertex(m, e, k);
+        return rad_ff_normal_doubt(c, 4);
+    }
+    /* a quad's grid, row-major: its corners */
+    c[0] = m->vertices[v0];
+    c[1] = m->vertices[v0 + n];
+    c[2] = m->vertices[v0 + mm * (n + 1) + n];
+    c[3] = m->vertices[v0 + mm * (n + 1)];
+    return rad_ff_normal_doubt(c, 4);
+}
+
 void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges)
 {
     rad_vec3 nw = v3_newell(v, n), lo = v[0], hi = v[0], c = v3(0, 0, 0);
@@ -77,6 +107,7 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->v = v;
     poly->n = n;
     poly->normal = nrm;
+    poly->nu = rad_ff_normal_doubt(v, n);
     poly->area = a;
     poly->centroid = a > 0 ? v3_add(v[0], v3_scale(c, 1.0 / a)) : v[0];
     poly->size = v3_norm(v3_sub(hi, lo));
@@ -157,6 +188,7 @@ rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         rad_ff_poly_make(p, *pts + at, el->nverts, *edges + at);
         /* the mesh's own normal (shared by a surface), centroid and area */
         p->normal = el->normal;
+        p->nu = rad_ff_element_doubt(m, e);
         p->centroid = el->centroid;
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);

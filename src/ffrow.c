@@ -179,6 +179,7 @@ static rad_status patch_polys(rad_ffrow *r, int P, int Q, rad_error *err)
         rad_ff_poly *q = &r->polys[r->n + p];
         rad_ff_poly_make(q, r->grid.corner + c0, k, r->pedges + c0);
         q->normal = r->unit.elements[r->grid.member[r->grid.first[p]]].normal;
+        q->nu = rad_ff_element_doubt(&r->unit, r->grid.member[r->grid.first[p]]);
     }
     return RAD_OK;
 }

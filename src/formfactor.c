@@ -481,9 +481,10 @@ static int run_closed(pair_state *p)
 static int run_area_distant(pair_state *p)
 {
     const rad_ff_poly *a = p->a, *b = p->b;
+    const rad_ff_poly *const el[2] = {a, b};
     p->area_tried = 1;
     const int r = rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid,
-                              p->rel, &p->s, &p->e);
+                              el, p->rel, &p->s, &p->e);
     return r < 0 ? FF_FAIL : r == 0 ? FF_DONE : FF_NEXT;
 }
 
@@ -530,9 +531,10 @@ static int run_contour_long(pair_state *p)
 static int run_area_whole(pair_state *p)
 {
     const rad_ff_poly *a = p->a, *b = p->b;
+    const rad_ff_poly *const el[2] = {a, b};
     double s, e;
-    if (rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid, p->rel, &s,
-                    &e) != 0)
+    if (rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid, el, p->rel,
+                    &s, &e) != 0)
         return FF_NEXT;
     return take_if_better(p, s, e);
 }
@@ -542,9 +544,10 @@ static int run_area_whole(pair_state *p)
 static int run_area_split(pair_state *p)
 {
     const rad_ff_poly *a = p->a, *b = p->b;
+    const rad_ff_poly *const el[2] = {a, b};
     double s, e;
     const int r = rad_ff_area_adaptive(p->pa, p->na, a->normal, p->pb, p->nb, b->normal,
-                                       a->centroid, p->rel, &s, &e);
+                                       a->centroid, el, p->rel, &s, &e);
     if (r < 0)
         return FF_FAIL;
     return r == 0 ? take_if_better(p, s, e) : FF_NEXT;

@@ -30,11 +30,18 @@ typedef struct rad_ff_poly {
     rad_vec3 centroid;
     double area;
     double size;            /* bounding-box diagonal */
+    double nu;              /* bound on normal's error, radians (ffarea.c, R3) */
     double twist;           /* largest vertex distance from the plane through
                                the centroid (0 for a planar polygon; the scene
                                accepts 1e-6 of a quad's size) */
     rad_vec3 lo, hi;        /* bounding box */
 } rad_ff_poly;
+
+/* R3 of ffarea.c: the bound on the error of the unit normal of the
+ * Newell vector of polygon p (n vertices). */
+double rad_ff_normal_doubt(const rad_vec3 *p, int n);
+/* The same for the normal of mesh element e (its surface's). */
+double rad_ff_element_doubt(const rad_mesh *m, int e);
 
 /* Per-thread work space for clipping; grows as needed. */
 typedef struct rad_ff_scratch {
@@ -142,15 +149,34 @@ double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q);
 
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to
- * `origin`: orders rise until two agree to rel_tol.  Returns 0 with *s and
- * *err set, 1 when it did not converge (use the contour), -1 out of memory. */
+ * `origin`: orders rise until two agree to rel_tol.  el: the elements a
+ * and b were clipped from (their normals norm_a and norm_b are their
+ * Newell vectors', ffmatrix.c).  Returns 0 with *s and *err set (*err
+ * with the round-off), 1 when it did not converge (use the contour), -1
+ * out of memory. */
 int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, int nb,
-                rad_vec3 norm_b, rad_vec3 origin, double rel_tol, double *s, double *err);
+                rad_vec3 norm_b, rad_vec3 origin, const rad_ff_poly *const el[2],
+                double rel_tol, double *s, double *err);
+/* One polygon of an area rule: p (n vertices) cut nu x nv (a
+ * quadrilateral), twisted or not (ffarea.c), and the normal of its plane
+ * with the bound on that normal's error (radians). */
+typedef struct rad_ff_area_part {
+    const rad_vec3 *p;
+    int n, nu, nv, twisted;
+    rad_vec3 nrm;
+    double doubt;
+} rad_ff_area_part;
+/* The area rule of order k over a and b, points relative to origin, in
+ * long double (ffarealong.c): *s the sum S, nu the bounds on the normals'
+ * error; 0, or -1 out of memory. */
+int rad_ff_area_long(const rad_ff_area_part *a, const rad_ff_area_part *b, rad_vec3 origin,
+                     int k, double *s, double nu[2]);
 /* The same by cutting both polygons into parts until every pair of parts
  * is small against its distance (strips end to end, a strip beside a
  * plate); the same returns.  Polygons that touch are not for it. */
 int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b,
-                         int nb, rad_vec3 norm_b, rad_vec3 origin, double rel_tol, double *s,
+                         int nb, rad_vec3 norm_b, rad_vec3 origin,
+                         const rad_ff_poly *const el[2], double rel_tol, double *s,
                          double *err);
 
 #endif /* RAD_FORMFACTOR_H */

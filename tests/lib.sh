@@ -17,6 +17,18 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # expect_num GOT WANT RELTOL: relative comparison with awk
 close_to() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1; exit !(g == g + 0 && d <= t * s) }'; }
+# estimate_covers SCENE I J WANT MODE WHAT: F(I -> J) of SCENE in MODE (left
+# in $got) and its error estimate at or above the difference from WANT, an
+# independent value, whatever the promise.  One check.
+estimate_covers() {
+  row=$("$RADIOSITY" formfactor -q --threads 1 --accuracy "$5" "$1" 2> "$work/covers.err" |
+    awk -F '\t' -v i="$2" -v j="$3" '$1 == i && $2 == j { printf "%.17g %.3g\n", $3, $4 }')
+  got=${row%% *}
+  est=${row##* }
+  awk -v g="$got" -v e="$est" -v w="$4" \
+    'BEGIN { d = g - w; if (d < 0) d = -d; exit !(g == g + 0 && d <= e) }'
+  ok $? "$6 F($2 -> $3), $5: $got, its estimate $est covers the difference from $4"
+}
 # against_value SCENE I J WANT SLACK WHAT: F(I -> J) of SCENE in default and
 # reference modes within their promises (1e-6, 1e-9) of WANT, an
 # independent value known to SLACK (absolute), and each mode's error
