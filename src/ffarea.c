@@ -136,10 +136,10 @@ typedef struct area_side {
  * origin (64 eps of their largest).  A polygon of more vertices is twisted
  * when its vertices' heights along the normal spread by as much; a
  * triangle never is. */
-static area_side side_of(const rad_vec3 *p, int n, rad_vec3 origin, rad_vec3 nrm,
-                         const rad_ff_poly *el)
+static area_side side_of(const rad_vec3 *p, int n, rad_vec3 origin, const rad_ff_poly *el)
 {
-    area_side sd = {nrm, 0, el->nu}; /* the surface's normal, ffmatrix.c */
+    const rad_vec3 nrm = el->normal; /* the surface's, ffmatrix.c */
+    area_side sd = {nrm, 0, el->nu};
     if (n < 4)
         return sd;
     double big = 0, hlo = INFINITY, hhi = -INFINITY;
@@ -366,16 +366,16 @@ static double tail(double d, double d1, double d2, double qmin)
     return q <= 0.5 ? d : q < 1 ? d * q / (1 - q) : INFINITY;
 }
 
-int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, int nb,
-                rad_vec3 norm_b, rad_vec3 origin, const rad_ff_poly *const el[2],
-                double rel_tol, double *s_out, double *err_out)
+int rad_ff_area(const rad_vec3 *a, int na, const rad_vec3 *b, int nb, rad_vec3 origin,
+                const rad_ff_poly *const el[2], double rel_tol, double *s_out,
+                double *err_out)
 {
     enum { SMALL = 2 * AREA_ORDER_MAX * AREA_ORDER_MAX * 3 };
     rad_vec3 pts_small[2 * SMALL];
     double w_small[SMALL];
     const double D = vertex_box_gap(a, na, b, nb);
-    const area_side sa = side_of(a, na, origin, norm_a, el[0]);
-    const area_side sb = side_of(b, nb, origin, norm_b, el[1]);
+    const area_side sa = side_of(a, na, origin, el[0]);
+    const area_side sb = side_of(b, nb, origin, el[1]);
     int nua, nva, nub, nvb;
     split_counts(a, na, D, &nua, &nva);
     split_counts(b, nb, D, &nub, &nvb);
@@ -594,10 +594,9 @@ static int walk_cuts(const patch *ta, int ma, const patch *tb, int mb, patch *st
     return 1;
 }
 
-int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b,
-                         int nb, rad_vec3 norm_b, rad_vec3 origin,
-                         const rad_ff_poly *const el[2], double rel_tol, double *s_out,
-                         double *err_out)
+int rad_ff_area_adaptive(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+                         rad_vec3 origin, const rad_ff_poly *const el[2], double rel_tol,
+                         double *s_out, double *err_out)
 {
     patch *stack = malloc(sizeof *stack * 2 * ADAPT_STACK);
     patch *ta = malloc(sizeof *ta * (size_t)(na > 2 ? na - 2 : 1));
@@ -610,8 +609,8 @@ int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_v
     }
     const int ma = polygon_patches(a, na, origin, ta), mb = polygon_patches(b, nb, origin, tb);
     double s = 0, e = 0, ro = 0;
-    const area_side sa = side_of(a, na, origin, norm_a, el[0]);
-    const area_side sb = side_of(b, nb, origin, norm_b, el[1]);
+    const area_side sa = side_of(a, na, origin, el[0]);
+    const area_side sb = side_of(b, nb, origin, el[1]);
     const int ok = walk_cuts(ta, ma, tb, mb, stack, &sa, &sb, rel_tol, NULL, NULL, NULL) &&
                    walk_cuts(ta, ma, tb, mb, stack, &sa, &sb, rel_tol, &s, &e, &ro);
     free(stack);

@@ -21,9 +21,8 @@
  * element's own vertices', which sit off it by the mesh's rounding), so
  * that both sums integrate the same thing.  Its error bound stays the
  * double one (ffarea.c, R3); a twisted polygon's point normals are
- * bounded as R3 is, with the long double's epsilon u:
- *     nu = u (4 + 8 (n - 2) size^2 / (2 A)),
- * size the polygon's bounding-box diagonal, A its area.
+ * bounded by R3 with the long double's epsilon (rad_ff_normal_doubt,
+ * scaled).
  */
 #include <config.h>
 
@@ -52,17 +51,6 @@ static lv3 lv_cross(lv3 a, lv3 b)
     return (lv3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 static lv3 lv_lerp(lv3 a, lv3 b, long double t) { return lv_add(a, lv_scale(lv_sub(b, a), t)); }
-
-/* The error bound of a twisted polygon's point normals (above). */
-static double twisted_doubt(const rad_vec3 *p, int n)
-{
-    const rad_vec3 nw = v3_newell(p, n);
-    const double twice = v3_norm(nw);
-    rad_vec3 lo, hi;
-    v3_bounds(p, n, &lo, &hi);
-    const double size = v3_norm(v3_sub(hi, lo));
-    return twice > 0 ? LDBL_EPSILON * (4 + 8.0 * (n - 2) * size * size / twice) : INFINITY;
-}
 
 /* Gauss points of p (n vertices) relative to origin, order k, cut nu x nv
  * (a quadrilateral), as polygon_points in ffarea.c but in long double;
@@ -119,7 +107,8 @@ int rad_ff_area_long(const rad_ff_area_part *a, const rad_ff_area_part *b, rad_v
     for (int c = 0; c < 2; c++) {
         const rad_ff_area_part *q = side[c];
         nrm[c] = lv_of(q->nrm, v3(0, 0, 0));
-        nu[c] = q->twisted ? twisted_doubt(q->p, q->n) : q->doubt;
+        nu[c] = q->twisted ? rad_ff_normal_doubt(q->p, q->n) * (LDBL_EPSILON / DBL_EPSILON)
+                            : q->doubt;
         cap[c] = q->n == 4 ? k * k * q->nu * q->nv : (q->n - 2) * k * k;
     }
     const size_t tot = (size_t)cap[0] + (size_t)cap[1];

@@ -64,12 +64,18 @@ static void ff_poly_lengths(rad_ff_poly *p)
     }
 }
 
+/* R3 of ffarea.c for a polygon of n vertices, bounding-box diagonal
+ * size and Newell vector of length twice (twice its area). */
+static double doubt_of(int n, double size, double twice)
+{
+    return twice > 0 ? DBL_EPSILON * (4 + 8.0 * (n - 2) * (size / twice) * size) : INFINITY;
+}
+
 double rad_ff_normal_doubt(const rad_vec3 *p, int n)
 {
     rad_vec3 lo, hi;
     v3_bounds(p, n, &lo, &hi);
-    const double size = v3_norm(v3_sub(hi, lo)), twice = v3_norm(v3_newell(p, n));
-    return twice > 0 ? DBL_EPSILON * (4 + 8.0 * (n - 2) * (size / twice) * size) : INFINITY;
+    return doubt_of(n, v3_norm(v3_sub(hi, lo)), v3_norm(v3_newell(p, n)));
 }
 
 double rad_ff_element_doubt(const rad_mesh *m, int e)
@@ -107,10 +113,10 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->v = v;
     poly->n = n;
     poly->normal = nrm;
-    poly->nu = rad_ff_normal_doubt(v, n);
     poly->area = a;
     poly->centroid = a > 0 ? v3_add(v[0], v3_scale(c, 1.0 / a)) : v[0];
     poly->size = v3_norm(v3_sub(hi, lo));
+    poly->nu = doubt_of(n, poly->size, 2 * a);
     poly->lo = lo;
     poly->hi = hi;
     poly->edges = edges;

@@ -483,8 +483,7 @@ static int run_area_distant(pair_state *p)
     const rad_ff_poly *a = p->a, *b = p->b;
     const rad_ff_poly *const el[2] = {a, b};
     p->area_tried = 1;
-    const int r = rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid,
-                              el, p->rel, &p->s, &p->e);
+    const int r = rad_ff_area(p->pa, p->na, p->pb, p->nb, a->centroid, el, p->rel, &p->s, &p->e);
     return r < 0 ? FF_FAIL : r == 0 ? FF_DONE : FF_NEXT;
 }
 
@@ -533,8 +532,7 @@ static int run_area_whole(pair_state *p)
     const rad_ff_poly *a = p->a, *b = p->b;
     const rad_ff_poly *const el[2] = {a, b};
     double s, e;
-    if (rad_ff_area(p->pa, p->na, a->normal, p->pb, p->nb, b->normal, a->centroid, el, p->rel,
-                    &s, &e) != 0)
+    if (rad_ff_area(p->pa, p->na, p->pb, p->nb, a->centroid, el, p->rel, &s, &e) != 0)
         return FF_NEXT;
     return take_if_better(p, s, e);
 }
@@ -546,8 +544,8 @@ static int run_area_split(pair_state *p)
     const rad_ff_poly *a = p->a, *b = p->b;
     const rad_ff_poly *const el[2] = {a, b};
     double s, e;
-    const int r = rad_ff_area_adaptive(p->pa, p->na, a->normal, p->pb, p->nb, b->normal,
-                                       a->centroid, el, p->rel, &s, &e);
+    const int r =
+        rad_ff_area_adaptive(p->pa, p->na, p->pb, p->nb, a->centroid, el, p->rel, &s, &e);
     if (r < 0)
         return FF_FAIL;
     return r == 0 ? take_if_better(p, s, e) : FF_NEXT;

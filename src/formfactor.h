@@ -150,13 +150,12 @@ double rad_ff_ln_parallel_edges(const rad_ff_edge *p, const rad_ff_edge *q);
 /* Area-area quadrature of the symmetric sum S = 2 pi A_a F_ab for polygons
  * a and b (already clipped to face each other), points relative to
  * `origin`: orders rise until two agree to rel_tol.  el: the elements a
- * and b were clipped from (their normals norm_a and norm_b are their
- * Newell vectors', ffmatrix.c).  Returns 0 with *s and *err set (*err
- * with the round-off), 1 when it did not converge (use the contour), -1
- * out of memory. */
-int rad_ff_area(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b, int nb,
-                rad_vec3 norm_b, rad_vec3 origin, const rad_ff_poly *const el[2],
-                double rel_tol, double *s, double *err);
+ * and b were clipped from (their normals, and those normals' error
+ * bounds, are the rules').  Returns 0 with *s and *err set (*err with the
+ * round-off), 1 when it did not converge (use the contour), -1 out of
+ * memory. */
+int rad_ff_area(const rad_vec3 *a, int na, const rad_vec3 *b, int nb, rad_vec3 origin,
+                const rad_ff_poly *const el[2], double rel_tol, double *s, double *err);
 /* One polygon of an area rule: p (n vertices) cut nu x nv (a
  * quadrilateral), twisted or not (ffarea.c), and the normal of its plane
  * with the bound on that normal's error (radians). */
@@ -174,9 +173,8 @@ int rad_ff_area_long(const rad_ff_area_part *a, const rad_ff_area_part *b, rad_v
 /* The same by cutting both polygons into parts until every pair of parts
  * is small against its distance (strips end to end, a strip beside a
  * plate); the same returns.  Polygons that touch are not for it. */
-int rad_ff_area_adaptive(const rad_vec3 *a, int na, rad_vec3 norm_a, const rad_vec3 *b,
-                         int nb, rad_vec3 norm_b, rad_vec3 origin,
-                         const rad_ff_poly *const el[2], double rel_tol, double *s,
-                         double *err);
+int rad_ff_area_adaptive(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
+                         rad_vec3 origin, const rad_ff_poly *const el[2], double rel_tol,
+                         double *s, double *err);
 
 #endif /* RAD_FORMFACTOR_H */
