@@ -35,7 +35,7 @@
  * OCC_FLOOR of the unoccluded one (occhidden.c, integrate), half of each
  * mode's promise (the kernel's error of the unoccluded S adds to it); the
  * order of the rule on a cell (occrule.c); the largest number of cells
- * the adaptive rule may use. */
+ * the adaptive rule may add to the domain's first ones. */
 #define OCC_TOL_DEFAULT 5e-7
 #define OCC_TOL_REFERENCE 5e-10
 #define OCC_FLOOR RAD_OCC_FLOOR
@@ -50,7 +50,8 @@
 #define OCC_ORDER_REFERENCE 10
 #define OCC_LEAVES_DEFAULT 1024
 #define OCC_LEAVES_REFERENCE 8192
-/* ... and the most evaluations of hidden(x) it may spend on a pair: a
+/* ... and the most evaluations of hidden(x) it may spend on a pair
+ * beyond those of the first cells: a
  * pair whose integrand keeps a kink inside a piece (in the lens a chord of
  * occeee.c leaves) converges slowly there, and stops here with its
  * estimate (which the fill then reports as an unmet promise).  Default's
