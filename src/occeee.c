@@ -43,7 +43,8 @@
  * in doubt, cut) and the two blocker edges must lie between x and the
  * inner edge (happens).  Edges that share an end meet
  * there, and their event is the plane through that vertex and e3,
- * which occdomain.c's vertex-edge cuts already follow.
+ * which occdomain.c's vertex-edge cuts already follow; two edges in one
+ * plane make the quadric a pair of planes (coplanar_lines).
  */
 #include <config.h>
 
@@ -661,6 +662,70 @@ static int any_parallel(const line3 *l)
     return 0;
 }
 
+/* Cut every piece of sp->dom by the whole plane through p with unit
+ * normal nrm (both sides kept; only sides without area dropped, as in
+ * cut_chord); 0 or -1. */
+static int cut_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 p)
+{
+    occ_ps_clear(&sp->db);
+    for (int k = 0; k < sp->dom.np; k++) {
+        int n = occ_load_rem(sp, &sp->dom, k);
+        if (n < 0)
+            return -1;
+        int r = occ_cut_piece(sp, &nrm, &p, 1, c->snap, 0, &sp->db, &n);
+        if (r < 0 || (r == 1 && occ_ps_push(&sp->db, sp->rem, n)))
+            return -1;
+    }
+    polyset t = sp->dom;
+    sp->dom = sp->db;
+    sp->db = t;
+    return 0;
+}
+
+/* Two of the three lines in one plane (within tol, event units: lines i
+ * and j, k the third).  The lines that meet all three then lie in that
+ * plane or pass through the point P where lines i and j cross, so the
+ * quadric of (1) is a pair of planes and its conic a pair of lines; and
+ * computed from rounded vertices (a scene turned and scaled) it is a
+ * hyperbola hugging them, whose sharp turn near P follow_arc cut into
+ * strips until its budget ran out, for each such triple, each strip then
+ * cut again by the next events: a room with a box pushed against a wall
+ * grew domains of 158,161 pieces for one pair and ran out of memory at
+ * 2.5 GB, where the same room unturned took 1.4 s (tests/occturned.sh).
+ * The plane of i and j holds an edge and the ends of the other, and is
+ * cut by occdomain.c as a vertex-edge event; the plane through P and
+ * line k is one too when P is an end of either segment.  Only when P lies
+ * inside both segments (two edges crossing like an X) is it an event of
+ * its own, and then it is cut whole (when in doubt, cut).  1 when two
+ * lines lie in one plane (their triple is done: *err -1 on memory), 0 when
+ * not. */
+static int coplanar_lines(occ_space *sp, const pair_ctx *c, const line3 *l, double tol, int *err)
+{
+    *err = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++) {
+            const rad_vec3 w = v3_cross(l[i].u, l[j].u);
+            const double wn = v3_norm(w);
+            if (!(fabs(v3_dot(v3_sub(l[j].a, l[i].a), w)) <= tol * wn))
+                continue;
+            /* P = a_i + s u_i = a_j + t u_j, in the plane of the two */
+            const rad_vec3 d = v3_sub(l[j].a, l[i].a);
+            const double si = v3_dot(v3_cross(d, l[j].u), w) / (wn * wn);
+            const double tj = v3_dot(v3_cross(d, l[i].u), w) / (wn * wn);
+            const double ei = tol / v3_norm(l[i].u), ej = tol / v3_norm(l[j].u);
+            if (!(si > ei && si < 1 - ei && tj > ej && tj < 1 - ej))
+                return 1;
+            const line3 *lk = &l[3 - i - j];
+            const rad_vec3 pp = v3_add(l[i].a, v3_scale(l[i].u, si));
+            rad_vec3 nrm = v3_cross(v3_sub(lk->a, pp), lk->u);
+            const double len = v3_norm(nrm);
+            if (len > 0)
+                *err = cut_plane(sp, c, v3_scale(nrm, 1.0 / len), v3_scale(pp, 1.0 / l[i].inv));
+            return 1;
+        }
+    return 0;
+}
+
 /* Is the conic of l crossed by outer polygon o's boundary where its event
  * happens?  (The test before the pieces are looked at.) */
 static int crosses_outer(const line3 *l, const rad_vec3 *o, int no, double tiny, double tol)
@@ -690,6 +755,9 @@ static int cut_triple(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int n
                   {v3_scale(t0, inv), v3_scale(v3_sub(t1, t0), inv), inv}};
     if (any_parallel(l))
         return 0;
+    int err;
+    if (coplanar_lines(sp, c, l, c->snap * inv, &err))
+        return err;
     /* g's round-off scale: its terms' sizes at o[0] */
     const rad_vec3 oo = v3_scale(o[0], inv);
     double s = v3_norm(v3_sub(l[0].a, oo)) * v3_norm(v3_sub(l[1].a, oo)) *
