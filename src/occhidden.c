@@ -223,7 +223,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
         return -1;
     double v = lt->val[1], err = lt->err[1], tau = target_of(c, rel, whole, v);
     max_leaves += nleaf; /* the budgets count from here */
-    max_evals += sp->evals;
+    max_evals += sp->evals + OCC_EVALS_PER_CELL * nleaf;
     while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
            nleaf + 3 <= max_leaves && sp->evals < max_evals && lt->best[1] >= 0) {
         const int worst = lt->best[1];
