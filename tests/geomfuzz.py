@@ -13,6 +13,9 @@
 # thin strips, tiny elements beside large ones, a panel's two faces with a
 # tiny twist, two to four blockers at random angles between plates (edges
 # of two blockers not parallel: the events of three edges, src/occeee.c),
+# closed rooms with one or two boxes on a floor cut around them (or whole), one
+# sometimes pushed against a wall or turned (furniture: pairs that see ten
+# blockers at once),
 # each at a random orientation, scale (1e-6 .. 1e6) and translation (up to
 # 1e6 times the scene's size).  Each scene runs through
 # `formfactor` in classic, default and reference mode and `solve` in
@@ -28,9 +31,13 @@
 #     machines are shared, so wall time would blame the neighbours), or
 #     hung for five times that on the wall clock.
 #
-# Reported but not failed (issue 20, item 2, is open): pairs where default
-# and reference differ by more than their two error estimates together (a
-# line per such scene names its worst pair).
+# Reported but not failed: pairs where default and reference differ by
+# more than their two error estimates together (a line per such scene
+# names its worst pair), and scenes where a mode warns that its own
+# estimates miss its promise (honest, but worth a look).  Scene numbers
+# name families in the order of FAMILIES: the eighth, room, came after
+# seed 47; a scene of an earlier seed is made again by the geomfuzz.py of
+# its time (git log tests/geomfuzz.py).
 # Scenes are a pure function of the seed: a finding is reproduced with
 # --seed S --scenes N and its number.
 import math
@@ -285,8 +292,52 @@ def fam_crossed(rng, sc):
         z = prev[2] + gaps[i + 1]
 
 
+def fam_room(rng, sc):
+    """A closed room (the unit cube, walls facing in, the ceiling lit) with
+    one or two boxes standing on the floor, as furniture stands in the
+    rooms validators model: each box five faces (none under it), upright,
+    sometimes turned about the vertical or pushed against a wall (a face
+    back to back with the wall's plane).  The floor is cut into rectangles
+    around upright footprints, as the closed Cornell box's is, or left
+    whole under the boxes.  Every pair sees several blockers at once, and
+    a pair's domain can start with more pieces than the adaptive rule's
+    whole budget (src/occhidden.c, integrate)."""
+    walls = [list(reversed(f)) for f in CUBE]  # inward
+    sc.quad(walls[1], mesh(rng, 2), "e")  # the ceiling, z = 1
+    for f in walls[2:]:
+        sc.quad(f, mesh(rng, 2))
+    boxes, turned = [], False
+    for k in range(rng.randint(1, 2)):
+        lo, hi = (0.0, 0.45) if k == 0 else (0.55, 1.0)
+        wx, wy = rng.uniform(0.1, 0.35), rng.uniform(0.1, 0.6)
+        x0 = lo if rng.random() < 0.15 else rng.uniform(lo + 0.02, hi - wx - 0.02)
+        y0 = rng.uniform(0.02, 0.98 - wy)
+        h = rng.uniform(0.1, 0.6)
+        a = rng.uniform(0, 90) if x0 > lo and rng.random() < 0.3 else 0.0
+        turned = turned or a != 0
+        boxes.append((x0, y0, wx, wy, h, a))
+    if turned or rng.random() < 0.3:
+        sc.quad(walls[0], mesh(rng, 2))  # the floor whole
+    else:
+        xs = sorted({0.0, 1.0} | {b[0] for b in boxes} | {b[0] + b[2] for b in boxes})
+        ys = sorted({0.0, 1.0} | {b[1] for b in boxes} | {b[1] + b[3] for b in boxes})
+        for i in range(len(xs) - 1):
+            for j in range(len(ys) - 1):
+                cx, cy = 0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1])
+                if any(b[0] < cx < b[0] + b[2] and b[1] < cy < b[1] + b[3] for b in boxes):
+                    continue
+                sc.quad(rect((xs[i], ys[j], 0.0), (xs[i + 1] - xs[i], 0, 0),
+                             (0, ys[j + 1] - ys[j], 0)))
+    for x0, y0, wx, wy, h, a in boxes:
+        c = (x0 + 0.5 * wx, y0 + 0.5 * wy, 0.0)
+        m = rot((0, 0, 1), a)
+        for f in CUBE[1:]:  # outward, no bottom
+            pts = [(x0 + p[0] * wx, y0 + p[1] * wy, p[2] * h) for p in f]
+            sc.quad([add(apply(m, (p[0] - c[0], p[1] - c[1], p[2])), c) for p in pts])
+
+
 FAMILIES = [fam_hinge, fam_coplanar, fam_blocker, fam_strips, fam_tiny, fam_twist,
-            fam_crossed]
+            fam_crossed, fam_room]
 
 
 def make_scene(seed, idx):
@@ -348,7 +399,7 @@ def check_table(out, mode):
 
 def one(prog, path, limit):
     """Run a scene through the modes: (problems, estimate misses, seconds)."""
-    problems, tables, spent, refused = [], {}, 0.0, 0
+    problems, tables, spent, refused, flagged = [], {}, 0.0, 0, set()
     runs = [("formfactor", m) for m in ("classic", "default", "reference")] + [("solve", "default")]
     for cmd, mode in runs:
         args = [prog, cmd, "-q", "--threads", "1", "--accuracy", mode, path]
@@ -367,6 +418,8 @@ def one(prog, path, limit):
         elif rc == 1:
             refused += 1
         elif rc == 0 and cmd == "formfactor":
+            if "promise" in err:
+                flagged.add(mode)
             p, tables[mode] = check_table(out, mode)
             if p:
                 problems.append(p)
@@ -379,7 +432,7 @@ def one(prog, path, limit):
                 ratio = abs(v - w) / (e + f + 1e-15)
                 if worst is None or ratio > worst[0]:
                     worst = (ratio, key, v, e, w, f)
-    return problems, (misses, worst), spent, refused
+    return problems, (misses, worst), spent, refused, flagged
 
 
 def miss_line(path, fam, misses, worst):
@@ -427,13 +480,16 @@ def main():
     keep = keep or tempfile.mkdtemp(prefix="radiosity-geomfuzz.")
     os.makedirs(keep, exist_ok=True)
     t0, idx, found, misses_total, miss_scenes, refused_total = time.monotonic(), 0, 0, 0, 0, 0
+    promise = {"default": 0, "reference": 0}
     while (scenes is None or idx < scenes) and (seconds is None or time.monotonic() - t0 < seconds):
         fam, text = make_scene(seed, idx)
         path = os.path.join(keep, "scene-%d-%d-%s.scene" % (seed, idx, fam))
         with open(path, "w") as f:
             f.write(text)
-        problems, (misses, worst), spent, refused = one(prog, path, limit)
+        problems, (misses, worst), spent, refused, flagged = one(prog, path, limit)
         refused_total += refused
+        for mode in flagged:
+            promise[mode] += 1
         if misses:
             print(("# " if tap else "geomfuzz: ") + miss_line(path, fam, misses, worst))
         misses_total += misses
@@ -451,9 +507,10 @@ def main():
         idx += 1
     summary = ("%d scenes, seed %d, %.0f s: %d with findings; %d of %d runs refused with a "
                "message (exit 1); default and reference differ by more than their two "
-               "estimates in %d pairs of %d scenes (issue 20, open)"
+               "estimates in %d pairs of %d scenes; a mode's own estimates say it missed its "
+               "promise in %d scenes (default) and %d (reference)"
                % (idx, seed, time.monotonic() - t0, found, refused_total, 4 * idx, misses_total,
-                  miss_scenes))
+                  miss_scenes, promise["default"], promise["reference"]))
     if tap:
         print("# " + summary)
         print("1..%d" % idx)

@@ -7,9 +7,9 @@
 : "${top_srcdir:=.}"
 command -v python3 > /dev/null || { echo "1..0 # SKIP python3 not found"; exit 0; }
 keep=$(mktemp -d)
-# two scenes of each of the seven families; a finding keeps its scene and
+# two scenes of each of the eight families; a finding keeps its scene and
 # names it in the failing line
-python3 "$top_srcdir/tests/geomfuzz.py" "$RADIOSITY" --seed 20261201 --scenes 14 \
+python3 "$top_srcdir/tests/geomfuzz.py" "$RADIOSITY" --seed 20261201 --scenes 16 \
   --limit 60 --keep "$keep" --tap
 rc=$?
 [ $rc -eq 0 ] && rm -rf "$keep"
