@@ -696,7 +696,10 @@ static int cut_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 p)
  * cut by occdomain.c as a vertex-edge event; the plane through P and
  * line k is one too when P is an end of either segment.  Only when P lies
  * inside both segments (two edges crossing like an X) is it an event of
- * its own, and then it is cut whole (when in doubt, cut).  1 when two
+ * its own, and then it is cut whole (when in doubt, cut).  The first
+ * such pair is enough: if two pairs lie in planes, they share a line, and
+ * the plane through one pair's crossing and its third line is the other
+ * pair's plane; three lines through one point leave no plane.  1 when two
  * lines lie in one plane (their triple is done: *err -1 on memory), 0 when
  * not. */
 static int coplanar_lines(occ_space *sp, const pair_ctx *c, const line3 *l, double tol, int *err)

@@ -196,8 +196,10 @@ static double target_of(const pair_ctx *c, double rel, double whole, double v)
  * sum of the estimates exceeds
  *     tau = rel * max(whole - value, OCC_FLOOR * whole)                 (1)
  * and the budgets are not spent: max_leaves cells and max_evals
- * evaluations of hidden(x) beyond the first leaves' (*met: it ended below
- * tau, or was not adaptive).  (The budgets once counted the first leaves
+ * evaluations of hidden(x) beyond those spent until the first leaves
+ * were evaluated (the lenses' samples too), and OCC_EVALS_PER_CELL more
+ * for each first leaf, up to OCC_EVALS_CELLS_MAX times max_evals (*met:
+ * it ended below tau, or was not adaptive).  (The budgets once counted the first leaves
  * too: a domain cut along the events of many blockers can start with more
  * cells than that, and then no cell was ever split.  Seen in a closed
  * room with two blocks standing on a floor cut around them, 1x1 mesh:
@@ -223,7 +225,7 @@ static int integrate(occ_space *sp, const pair_ctx *c, int adaptive, double rel,
         return -1;
     double v = lt->val[1], err = lt->err[1], tau = target_of(c, rel, whole, v);
     max_leaves += nleaf; /* the budgets count from here */
-    max_evals += sp->evals + OCC_EVALS_PER_CELL * nleaf;
+    max_evals += sp->evals + fmin(OCC_EVALS_PER_CELL * nleaf, OCC_EVALS_CELLS_MAX * max_evals);
     while (adaptive && sp->any_hidden && sp->any_visible && err > tau &&
            nleaf + 3 <= max_leaves && sp->evals < max_evals && lt->best[1] >= 0) {
         const int worst = lt->best[1];

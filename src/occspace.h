@@ -73,6 +73,10 @@
  * cell from order 3 to 5 takes about 40) none did, for 11% more time
  * over the 20 rooms.  The closed Cornell box's tables do not change. */
 #define OCC_EVALS_PER_CELL 64
+/* ... but no more than this many times the budget above, so that a
+ * domain cut into a runaway number of pieces stops with its estimate
+ * (default mode: 4e5 more at most, 6,250 cells' worth). */
+#define OCC_EVALS_CELLS_MAX 10
 /* In default mode a pair with at most OCC_WEDGE_BLOCKERS blockers is
  * first integrated on
  * a domain cut only where each event happens (occevent.c), with
