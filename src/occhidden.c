@@ -199,14 +199,15 @@ static double target_of(const pair_ctx *c, double rel, double whole, double v)
  * evaluations of hidden(x) beyond those spent until the first leaves
  * were evaluated (the lenses' samples too), and OCC_EVALS_PER_CELL more
  * for each first leaf, up to OCC_EVALS_CELLS_MAX times max_evals (*met:
- * it ended below tau, or was not adaptive).  (The budgets once counted the first leaves
- * too: a domain cut along the events of many blockers can start with more
- * cells than that, and then no cell was ever split.  Seen in a closed
- * room with two blocks standing on a floor cut around them, 1x1 mesh:
- * pairs with 6 and 8 blockers started with 957 to 1,428 pieces, and in
- * default mode 6 entries missed their promise by their own estimates,
- * F(3 -> 11) of a wall to a floor strip 2.9e-6 off under an estimate of
- * 2.2e-2 of itself; none now, tests/closure.sh.)  `whole` is the
+ * it ended below tau, or was not adaptive).  (The budgets once counted
+ * the first leaves too: a domain cut along the events of many blockers
+ * can start with more cells than that, and then no cell was ever split.
+ * Seen in a closed room with two blocks standing on a floor cut around
+ * them, 1x1 mesh: pairs with 6 and 8 blockers started with 957 to 1,428
+ * pieces, and in default mode 6 entries missed their promise by their
+ * own estimates, F(3 -> 11) of a wall to a floor strip 2.9e-6 off under
+ * an estimate of 2.2e-2 of itself; none now, tests/closure.sh.)  `whole`
+ * is the
  * unoccluded integral S / (2 pi), so whole - value is the visible part,
  * the occluded A_o F_ot itself, and the target is relative to it down to
  * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target

@@ -66,11 +66,11 @@
  * of thousands of pieces spends the budgets above on raising a few
  * hundred cells' orders (each of orders 1 to 3 first, occhidden.c eq. 2,
  * whose differences overstate a smooth cell's error).  Seen in rooms of
- * the geometry fuzzer (tests/geomfuzz.py, family room, seed 99: pairs
- * with 7 to 10 blockers and 2,298 to 4,225 pieces): in 5 rooms of 20, 54
- * default entries missed the promise by their own estimates, up to
- * 3.6e-5 of their values; with 64 evaluations more a cell (raising a
- * cell from order 3 to 5 takes about 40) none did, for 11% more time
+ * the geometry fuzzer (tests/geomfuzz.py at af114e8, family room, seed
+ * 99: pairs with 7 to 10 blockers and 2,298 to 4,225 pieces): in 5 rooms
+ * of 20, 54 default entries missed the promise by their own estimates,
+ * up to 3.6e-5 of their values; with 64 evaluations more a cell (raising
+ * a cell from order 3 to 5 takes about 40) none did, for 11% more time
  * over the 20 rooms.  The closed Cornell box's tables do not change. */
 #define OCC_EVALS_PER_CELL 64
 /* ... but no more than this many times the budget above, so that a
