@@ -226,7 +226,8 @@ static int dom_spheres(occ_space *sp)
 }
 
 /* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses (their spheres in sp->pcen / prad, kept up to date), but
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date; sides
+ * of no more than `sliver` area dropped), but
  * with a wedge w (not NULL) and c->events OCC_SPLIT_WEDGES only where the
  * plane's chord of the piece meets w.  A
  * piece whose bounding sphere the plane misses is copied without looking
@@ -234,7 +235,7 @@ static int dom_spheres(occ_space *sp)
  * pieces, most of them far from any one plane (issue 20: reference mode
  * slowed as K^4).  Returns 0 or -1. */
 static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
-                     const occ_wedge *w)
+                     const occ_wedge *w, double sliver)
 {
     occ_ps_clear(&sp->db);
     for (int k = 0; k < sp->dom.np; k++) {
@@ -260,7 +261,7 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
             int m = poly_clip_side(p, sp->d, n, side, sp->tmp, n + 1);
             rad_vec3 cen;
             double rad;
-            if (m < 3 || !(poly_area(sp->tmp, m) > c->sliver))
+            if (m < 3 || !(poly_area(sp->tmp, m) > sliver))
                 continue;
             sphere(sp->tmp, m, &cen, &rad);
             if (push_db(sp, sp->tmp, m, cen, rad))
@@ -280,6 +281,15 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
     return 0;
 }
 
+/* Split every piece of sp->dom that the plane through a with unit
+ * normal nrm crosses, after occeee.c has cut pieces its own way:
+ * split_dom with their spheres measured again, dropping only sides
+ * without area, as occeee.c's chords do.  0 or -1. */
+int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
+{
+    return dom_spheres(sp) ? -1 : split_dom(sp, c, nrm, a, NULL, 0);
+}
+
 /* Split sp->dom along the planes through an edge of e and a vertex of f
  * (kind OCC_EVENT_EV when e is the blocker, OCC_EVENT_VE when e is the
  * inner element: their wedges, occevent.c). */
@@ -293,7 +303,7 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
             if (!poly_edge_plane(e, ne, k, f[l], &nrm))
                 continue;
             occ_event_wedge(&w, kind, nrm, e[k], e[(k + 1) % ne], f[l]);
-            if (split_dom(sp, c, nrm, e[k], whole ? NULL : &w))
+            if (split_dom(sp, c, nrm, e[k], whole ? NULL : &w, c->sliver))
                 return -1;
         }
     return 0;
@@ -353,7 +363,7 @@ static int split_blocker_pair(occ_space *sp, const pair_ctx *c, int a, int b)
             if (!poly_edge_plane(pa, na, k, pb[l], &nrm))
                 continue;
             poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
-            if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL))
+            if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL, c->sliver))
                 return -1;
         }
     return 0;
@@ -400,7 +410,7 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
         const int whole = c->events == OCC_SPLIT_WEDGES &&
                           near_outer(c, p, np, o[0], OCC_NEAR_OUTER * size);
-        if (split_dom(sp, c, sp->bn[b], p[0], NULL) ||
+        if (split_dom(sp, c, sp->bn[b], p[0], NULL, c->sliver) ||
             split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV, whole) ||
             split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE, whole))
             return -1;

@@ -662,26 +662,6 @@ static int any_parallel(const line3 *l)
     return 0;
 }
 
-/* Cut every piece of sp->dom by the whole plane through p with unit
- * normal nrm (both sides kept; only sides without area dropped, as in
- * cut_chord); 0 or -1. */
-static int cut_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 p)
-{
-    occ_ps_clear(&sp->db);
-    for (int k = 0; k < sp->dom.np; k++) {
-        int n = occ_load_rem(sp, &sp->dom, k);
-        if (n < 0)
-            return -1;
-        int r = occ_cut_piece(sp, &nrm, &p, 1, c->snap, 0, &sp->db, &n);
-        if (r < 0 || (r == 1 && occ_ps_push(&sp->db, sp->rem, n)))
-            return -1;
-    }
-    polyset t = sp->dom;
-    sp->dom = sp->db;
-    sp->db = t;
-    return 0;
-}
-
 /* Two of the three lines in one plane (within tol, event units: lines i
  * and j, k the third).  The lines that meet all three then lie in that
  * plane or pass through the point P where lines i and j cross, so the
@@ -723,7 +703,8 @@ static int coplanar_lines(occ_space *sp, const pair_ctx *c, const line3 *l, doub
             rad_vec3 nrm = v3_cross(v3_sub(lk->a, pp), lk->u);
             const double len = v3_norm(nrm);
             if (len > 0)
-                *err = cut_plane(sp, c, v3_scale(nrm, 1.0 / len), v3_scale(pp, 1.0 / l[i].inv));
+                *err = occ_split_plane(sp, c, v3_scale(nrm, 1.0 / len),
+                                       v3_scale(pp, 1.0 / l[i].inv));
             return 1;
         }
     return 0;

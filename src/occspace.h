@@ -312,8 +312,9 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
 rad_status occ_find_solids(rad_occ *o);
 int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
-/* occdomain.c: the domain of integration */
+/* occdomain.c: the domain of integration; sp->dom cut by a whole plane */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a);
 
 /* occevent.c: the wedges of the event planes */
 void occ_event_wedge(occ_wedge *w, int kind, rad_vec3 nrm, rad_vec3 e0, rad_vec3 e1,
