@@ -2,7 +2,8 @@
 # geomfuzz.sh -- a short fixed-seed run of the geometry fuzzer (geomfuzz.py:
 # random valid scenes from the hard families through every accuracy mode
 # and a solve).  Copyright (C) 2026 The radiosity authors.  GPLv3+, see
-# COPYING.  The long run: `make fuzz-geometry GEOMFUZZ_SECONDS=1800`.
+# COPYING.  The long run: `make fuzz-geometry GEOMFUZZ_SECONDS=1800` (one
+# family only: GEOMFUZZ_FAMILY=room, say).
 : "${RADIOSITY:?set RADIOSITY to the program}"
 : "${top_srcdir:=.}"
 command -v python3 > /dev/null || { echo "1..0 # SKIP python3 not found"; exit 0; }
