@@ -421,9 +421,10 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
 }
 
 /* The domain of integration: the outer polygon o cut to the union of the
- * blockers' penumbras, as disjoint convex pieces (W_b minus the earlier
- * W's), then cut along every umbra, the pieces inside one going to
- * sp->umb.  Pieces not known to be hidden end in sp->dom.
+ * blockers' penumbras, as disjoint convex pieces (each in the W_b of one
+ * blocker b and in no earlier W), then cut along every umbra, the pieces
+ * inside one going to sp->umb.  Pieces not known to be hidden end in
+ * sp->dom.
  *
  * The union is taken as a partition of o, blocker by blocker: each piece
  * not yet in a penumbra is cut by W_b's planes, its part inside goes to

@@ -416,7 +416,7 @@ def check_table(out, mode):
 def one(prog, path, limit):
     """Run a scene through the modes: (problems, (estimate misses, worst
     pair), CPU seconds, runs refused, modes that warned of a missed
-    promise)."""
+    promise, {mode: rows_over of its table})."""
     problems, tables, spent, refused, flagged = [], {}, 0.0, 0, set()
     runs = [("formfactor", m) for m in ("classic", "default", "reference")] + [("solve", "default")]
     for cmd, mode in runs:
@@ -457,9 +457,12 @@ def one(prog, path, limit):
 def rows_over(table):
     """Rows of F that sum above 1 by more than their estimates: a row's
     true factors sum to at most 1 (the summation relation, closed scene or
-    not), so sum F - 1 <= sum |error| <= sum of the estimates, up to the
-    sum's own round-off.  (count, worst (excess / estimates, row, sum,
-    estimates))."""
+    not, as long as no two surfaces overlap in one plane facing the same
+    way, which the families do not make on purpose; fam_crossed's panel
+    could in principle lie flat on a box's top), so sum F - 1 <= sum
+    |error| <= sum of the estimates, up to the sum's own round-off and the
+    table's rounding of the estimates to three digits (0.5%).  (count,
+    worst (excess / estimates, row, sum, estimates))."""
     rows, ests, ns = {}, {}, {}
     for (i, _), (v, e) in table.items():
         rows[i] = rows.get(i, 0.0) + v
@@ -467,7 +470,7 @@ def rows_over(table):
         ns[i] = ns.get(i, 0) + 1
     count, worst = 0, None
     for i, r in rows.items():
-        allowed = ests[i] + 2.3e-16 * ns[i] * max(r, 1.0)
+        allowed = ests[i] * (1 + 5e-3) + 2.3e-16 * ns[i] * max(r, 1.0)
         if r - 1 > allowed:
             count += 1
             ratio = (r - 1) / allowed

@@ -15,13 +15,17 @@
 # of itself, and row 13 summed to 1 + 1.3e-4.
 #
 # Independent values: the room is closed (the box's open bottom stands on
-# the floor's hole), so every row of F sums to 1 (the summation relation),
-# within each mode's promise (1e-6 default, 1e-9 reference); and F is
-# invariant under rotation, scaling and translation, so default mode's
-# entries above 1e-6 are within its promise of the room's upright ones.
-# (Not reference's: the room's coordinates, rounded at 2e10, are another
-# room by 1e-10 of its size, and entries of partly hidden pairs move by up
-# to 5e-9 of themselves with it.)
+# the floor's hole), so every one of its 22 rows of F sums to 1 (the
+# summation relation), within each mode's promise (1e-6 default, 1e-9
+# reference); and F is invariant under rotation, scaling and translation,
+# so default mode's entries above 1e-6 are within 2e-6 of the upright
+# room's (each within its promise of its room's true value; the two rooms
+# differ only by the far one's coordinates rounded at 2e10, half an ulp,
+# 8e-11 of the room).  The failure was 5%.  (Nothing finer is asked of
+# the comparison: the partly hidden pairs of a box standing on the floor
+# move with that rounding by more than reference mode's 1e-9, so the
+# upright room is no reference for the far one at that level, nor the
+# estimates of one for the other's difference.)
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 . "${top_srcdir:-.}/tests/lib.sh"
 
@@ -75,10 +79,10 @@ for case in "default 1e-6" "reference 1e-9"; do
   set -- $case
   "$RADIOSITY" formfactor -q --threads 1 --accuracy "$1" "$work/far.scene" -o "$work/far-$1.tsv"
   ok $? "$1: the room turned and moved: formfactor"
-  awk -F '\t' -v tol="$2" 'NR > 1 { r[$1] += $3 }
+  awk -F '\t' -v tol="$2" 'NR > 1 { if (!($1 in r)) n++; r[$1] += $3 }
     END { w = 0; for (i in r) { d = r[i] - 1; if (d < 0) d = -d; if (d > w) w = d }
-          printf "%.3g\n", w; exit !(w <= tol) }' "$work/far-$1.tsv" > "$work/rows"
-  ok $? "$1: turned and moved, rows of F sum to 1 within $2 (worst $(cat "$work/rows"))"
+          printf "%.3g\n", w; exit !(n == 22 && w <= tol) }' "$work/far-$1.tsv" > "$work/rows"
+  ok $? "$1: turned and moved, the 22 rows of F sum to 1 within $2 (worst $(cat "$work/rows"))"
 done
 
 "$RADIOSITY" formfactor -q --threads 1 --accuracy default "$work/upright.scene" -o "$work/up.tsv"
@@ -87,9 +91,9 @@ awk -F '\t' '
   FNR == 1 { next }
   NR == FNR { f[$1 " " $2] = $3; next }
   { k = $1 " " $2; d = $3 - f[k]; if (d < 0) d = -d
-    if (f[k] > 1e-6 && d > 1e-6 * f[k]) bad++
+    if (f[k] > 1e-6 && d > 2e-6 * f[k]) bad++
     n++ }
   END { printf "%d %d\n", n, bad; exit !(n > 0 && bad == 0) }' \
   "$work/up.tsv" "$work/far-default.tsv" > "$work/cmp"
-ok $? "default: turned and moved, every entry above 1e-6 within 1e-6 of upright (entries, off: $(cat "$work/cmp"))"
+ok $? "default: turned and moved, every entry above 1e-6 within 2e-6 of upright (entries, off: $(cat "$work/cmp"))"
 done_testing
