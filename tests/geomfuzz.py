@@ -34,10 +34,11 @@
 # Reported but not failed: pairs where default and reference differ by
 # more than their two error estimates together (a line per such scene
 # names its worst pair); rows of F that sum above 1 by more than the sum
-# of their estimates (the true factors of a row sum to at most 1, so
-# such a row has an estimate below its error, in a mode of its own, with
-# no second mode to compare: the check that would have found seed 51's
-# scene 79 had its rows been within 1e-6); and scenes where a mode warns
+# of their estimates and the scene's own rounding (the true factors of a
+# row sum to at most 1, so such a row has an estimate below its error, in
+# a mode of its own, with no second mode to compare: the check that would
+# have found seed 51's scene 79 had its rows been within 1e-6; see
+# rows_over); and scenes where a mode warns
 # that its own estimates miss its promise (honest, but worth a look).  Scene numbers
 # name families in the order of FAMILIES: the eighth, room, came after
 # seed 47; a scene of an earlier seed is made again by the geomfuzz.py of
@@ -450,19 +451,47 @@ def one(prog, path, limit):
                 ratio = abs(v - w) / (e + f + 1e-15)
                 if worst is None or ratio > worst[0]:
                     worst = (ratio, key, v, e, w, f)
-    over = {m: rows_over(tables[m]) for m in ("default", "reference") if m in tables}
+    rho = rounding(path)
+    over = {m: rows_over(tables[m], rho) for m in ("default", "reference") if m in tables}
     return problems, (misses, worst), spent, refused, flagged, over
 
 
-def rows_over(table):
+def rounding(path):
+    """rho = 2 eps x the largest |coordinate| / the diagonal of the scene's
+    box: how far, relative to its size, the scene's rounded coordinates
+    may leave surfaces that should meet (a twist, a gap, an overlap
+    along a shared edge)."""
+    xs = []
+    with open(path) as f:
+        for line in f:
+            w = line.split()
+            if w and w[0] == "quad":
+                xs += [float(v) for v in w[2:14]]
+            elif w and w[0] == "polygon":
+                xs += [float(v) for v in w[3:3 + 3 * int(w[2])]]
+    if not xs:
+        return 0.0
+    pts = [xs[k:k + 3] for k in range(0, len(xs), 3)]
+    diag = math.sqrt(sum((max(p[i] for p in pts) - min(p[i] for p in pts)) ** 2
+                         for i in range(3)))
+    return 2.3e-16 * max(abs(v) for v in xs) / diag if diag > 0 else 0.0
+
+
+def rows_over(table, rho):
     """Rows of F that sum above 1 by more than their estimates: a row's
     true factors sum to at most 1 (the summation relation, closed scene or
     not, as long as no two surfaces overlap in one plane facing the same
     way, which the families do not make on purpose; fam_crossed's panel
     could in principle lie flat on a box's top), so sum F - 1 <= sum
-    |error| <= sum of the estimates, up to the sum's own round-off and the
-    table's rounding of the estimates to three digits (0.5%).  (count,
-    worst (excess / estimates, row, sum, estimates))."""
+    |error| <= sum of the estimates, up to the sum's own round-off, the
+    table's rounding of the estimates to three digits (0.5%), and the
+    scene's own rounding: surfaces that meet in the scene the fuzzer
+    meant meet only within rho of its size in the coordinates it wrote
+    (rounding), and the program integrates planar polygons through the
+    rounded vertices, so a row of a room far from the origin may pass 1 by
+    about rho (seen: up to 0.9 rho in reference mode, in 4 rooms of seed
+    54, family room); 100 rho is allowed.  (count, worst (excess /
+    allowance, row, sum, estimates))."""
     rows, ests, ns = {}, {}, {}
     for (i, _), (v, e) in table.items():
         rows[i] = rows.get(i, 0.0) + v
@@ -470,7 +499,7 @@ def rows_over(table):
         ns[i] = ns.get(i, 0) + 1
     count, worst = 0, None
     for i, r in rows.items():
-        allowed = ests[i] * (1 + 5e-3) + 2.3e-16 * ns[i] * max(r, 1.0)
+        allowed = ests[i] * (1 + 5e-3) + 2.3e-16 * ns[i] * max(r, 1.0) + 100 * rho
         if r - 1 > allowed:
             count += 1
             ratio = (r - 1) / allowed
