@@ -111,6 +111,7 @@ void occ_space_free(occ_space *sp)
     free(sp->bc);
     free(sp->rem);
     free(sp->tmp);
+    free(sp->tmp2);
     free(sp->d);
     free(sp->cone);
     free(sp->conep);

@@ -205,8 +205,9 @@ typedef struct occ_space {
     rad_vec3 *bn, *bc;          /* clipped blockers: normal, centroid */
     int capbn, capbc;
     polyset cur, next;          /* visible pieces before / after a blocker */
-    rad_vec3 *rem, *tmp;        /* the piece being cut, and the cut's output */
-    int caprem, captmp;
+    rad_vec3 *rem, *tmp, *tmp2; /* the piece being cut, and the cut's output
+                                   (tmp2: the other side, occdomain.c) */
+    int caprem, captmp, captmp2;
     double *d;                  /* signed distances */
     int capd;
     rad_vec3 *cone, *conep;     /* cone planes: inward normal, point */
