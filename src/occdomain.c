@@ -243,8 +243,10 @@ static int dom_spheres(occ_space *sp)
  * too, and the two sides then overlap in the triangle between.  Seen in a
  * fuzzed room turned and moved 1e6 away (tests/geomfuzz.py seed 55, scene
  * 375): the sides of 97% of a floor strip overlapped by 1.8% of it, and
- * the pair, integrated over its pieces, came out 1.7% high in both modes
- * with estimates of 2e-7 of itself.  Such a plane has no event on the
+ * two pairs, integrated over their pieces, came out 1.7% and 2.2% high
+ * in both modes with estimates of 1.5e-7 and 5e-7 of themselves.  (The
+ * penumbras' partition below cuts with occ_cut_piece, whose sides could
+ * overlap the same way; not seen.)  Such a plane has no event on the
  * piece to cut; the piece stays whole when the sides' areas add up to
  * more than its own.  Returns 0 or -1. */
 static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
