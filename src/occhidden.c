@@ -206,9 +206,9 @@ static double target_of(const pair_ctx *c, double rel, double whole, double v)
  * them, 1x1 mesh: pairs with 6 and 8 blockers started with 957 to 1,428
  * pieces, and in default mode 6 entries missed their promise by their
  * own estimates, F(3 -> 11) of a wall to a floor strip 2.9e-6 off under
- * an estimate of 2.2e-2 of itself; none now, tests/closure.sh.)  `whole`
- * is the
- * unoccluded integral S / (2 pi), so whole - value is the visible part,
+ * an estimate of 2.2e-2 of itself; none now, tests/closure.sh.)
+ * `whole` is the unoccluded integral S / (2 pi), so whole - value is the
+ * visible part,
  * the occluded A_o F_ot itself, and the target is relative to it down to
  * pairs hidden to OCC_FLOOR of their unoccluded value (issue 20: a target
  * relative to the unoccluded value let a nearly hidden pair's error reach

@@ -38,9 +38,8 @@
 # row sum to at most 1, so such a row has an estimate below its error, in
 # a mode of its own, with no second mode to compare: the check that would
 # have found seed 51's scene 79 had its rows been within 1e-6; see
-# rows_over); and scenes where a mode warns
-# that its own estimates miss its promise (honest, but worth a look).  Scene numbers
-# name families in the order of FAMILIES: the eighth, room, came after
+# rows_over); and scenes where a mode warns that its own estimates miss
+# its promise (honest, but worth a look).  Scene numbers name families in the order of FAMILIES: the eighth, room, came after
 # seed 47; a scene of an earlier seed is made again by the geomfuzz.py of
 # its time (git log tests/geomfuzz.py).
 # Scenes are a pure function of the seed: a finding is reproduced with
@@ -395,20 +394,19 @@ def run(cmd, limit):
 def check_table(out, mode):
     """F in [0, 1] and rows <= 1 + 1e-6 (not in classic): a problem or None;
     and the table as {(i, j): (F, error)}."""
-    table, rows = {}, {}
+    table = {}
     for line in out.splitlines()[1:]:
         f = line.split("\t")
         if len(f) < 4:
             continue
         i, j, v, e = int(f[0]), int(f[1]), float(f[2]), float(f[3])
         table[(i, j)] = (v, e)
-        rows[i] = rows.get(i, 0.0) + v
     if mode == "classic":
         return None, table
     for (i, j), (v, _) in table.items():
         if not (0 <= v <= 1):
             return "%s F(%d,%d) = %r outside [0, 1]" % (mode, i, j, v), table
-    for i, r in rows.items():
+    for i, (r, _, _) in row_sums(table).items():
         if r > 1 + 1e-6:
             return "%s row %d sums to %r > 1 + 1e-6" % (mode, i, r), table
     return None, table
@@ -492,20 +490,24 @@ def rows_over(table, rho):
     about rho (seen: up to 0.9 rho in reference mode, in 4 rooms of seed
     54, family room); 100 rho is allowed.  (count, worst (excess /
     allowance, row, sum, estimates))."""
-    rows, ests, ns = {}, {}, {}
-    for (i, _), (v, e) in table.items():
-        rows[i] = rows.get(i, 0.0) + v
-        ests[i] = ests.get(i, 0.0) + e
-        ns[i] = ns.get(i, 0) + 1
     count, worst = 0, None
-    for i, r in rows.items():
-        allowed = ests[i] * (1 + 5e-3) + 2.3e-16 * ns[i] * max(r, 1.0) + 100 * rho
+    for i, (r, est, n) in row_sums(table).items():
+        allowed = est * (1 + 5e-3) + 2.3e-16 * n * max(r, 1.0) + 100 * rho
         if r - 1 > allowed:
             count += 1
             ratio = (r - 1) / allowed
             if worst is None or ratio > worst[0]:
-                worst = (ratio, i, r, ests[i])
+                worst = (ratio, i, r, est)
     return count, worst
+
+
+def row_sums(table):
+    """{row: (sum of F, sum of the estimates, entries)} of a table."""
+    rows = {}
+    for (i, _), (v, e) in table.items():
+        r, est, n = rows.get(i, (0.0, 0.0, 0))
+        rows[i] = (r + v, est + e, n + 1)
+    return rows
 
 
 def miss_line(path, fam, misses, worst):
