@@ -60,10 +60,11 @@ rad_status rad_ff_block_fill(rad_ff_block *b, const int *rows, int nr, const int
 rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, size_t np,
                               double *fij, double *fji, rad_error *err);
 
-/* Shared with ffmatrix.c: the element polygons of a (normalized) mesh
- * (rad_ff_promise, each mode's promise, is in formfactor.h). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
-                             rad_ff_edge **edges);
+/* Shared with ffmatrix.c: the element polygons of a (normalized) mesh,
+ * off its frame's offset (rad_frame_offset, mesh.h; rad_ff_promise, each
+ * mode's promise, is in formfactor.h). */
+rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **polys,
+                             rad_vec3 **pts, rad_ff_edge **edges);
 /* The fill's statistics of a dense F (n x n): pairs, extremes, the
  * classic rule's faults, rows summing above 1 + RAD_ROW_SUM_SLACK; the
  * error fields are left to the caller (also the hemicube's, hcmatrix.c). */

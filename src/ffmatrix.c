@@ -122,12 +122,19 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
     ff_poly_lengths(poly);
+    rad_ff_poly_offset(poly, v3(0, 0, 0));
+}
+
+void rad_ff_poly_offset(rad_ff_poly *poly, rad_vec3 off)
+{
+    poly->umag = fmax(v3_maxabs(v3_add(poly->lo, off)), v3_maxabs(v3_add(poly->hi, off)));
 }
 
 /* The two polygons in the frame of their common bounding box (mesh.h):
- * out[0..na) is a, out[na..na+nb) is b.  -1 if the box is not finite. */
+ * out[0..na) is a, out[na..na+nb) is b; *off the frame's offset.  -1 if
+ * the box is not finite. */
 static int polygons_normalized(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
-                               rad_vec3 *out)
+                               rad_vec3 *out, rad_vec3 *off)
 {
     rad_vec3 alo, ahi, blo, bhi;
     rad_frame fr;
@@ -140,6 +147,7 @@ static int polygons_normalized(const rad_vec3 *a, int na, const rad_vec3 *b, int
         out[k] = rad_frame_apply(&fr, a[k]);
     for (int k = 0; k < nb; k++)
         out[na + k] = rad_frame_apply(&fr, b[k]);
+    *off = rad_frame_offset(&fr);
     return 0;
 }
 
@@ -151,8 +159,8 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     double s;
     const size_t nab = (size_t)na + (size_t)nb;
     rad_ff_edge *ea = malloc(sizeof *ea * (size_t)na), *eb = malloc(sizeof *eb * (size_t)nb);
-    rad_vec3 *v = malloc(sizeof *v * nab);
-    if (!ea || !eb || !v || polygons_normalized(a, na, b, nb, v) != 0) {
+    rad_vec3 *v = malloc(sizeof *v * nab), off;
+    if (!ea || !eb || !v || polygons_normalized(a, na, b, nb, v, &off) != 0) {
         free(ea);
         free(eb);
         free(v);
@@ -160,6 +168,8 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     }
     rad_ff_poly_make(&pa, v, na, ea);
     rad_ff_poly_make(&pb, v + na, nb, eb);
+    rad_ff_poly_offset(&pa, off);
+    rad_ff_poly_offset(&pb, off);
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
@@ -174,8 +184,8 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 /* Element polygons with contiguous vertices, as the kernel wants them
  * (ffblock.h; also the per-shot rows of ffrow.c, which must see the same
  * polygons). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **pts,
-                             rad_ff_edge **edges)
+rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **polys,
+                             rad_vec3 **pts, rad_ff_edge **edges)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
     for (int e = 0; e < m->nelements; e++)
@@ -199,6 +209,7 @@ rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_ff_poly **polys, rad_vec3 **
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
         ff_poly_lengths(p);
+        rad_ff_poly_offset(p, off);
         at += (size_t)el->nverts;
     }
     return RAD_OK;
@@ -310,7 +321,7 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     return rad_ff_matrix_occ(m, opt, RAD_OCC_AUTO, F, errest, stats, NULL, err);
 }
 
-static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
+static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_options *opt,
                                  rad_occ_mode mode, double *F, double *errest,
                                  rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err);
 
@@ -319,19 +330,21 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
                              rad_occ_stats *vstats, rad_error *err)
 {
     rad_mesh unit;
+    rad_frame fr;
     if (opt->quadrature < 1 || opt->quadrature > RAD_GAUSS_MAX)
         return rad_fail(err, RAD_ERR_INVALID, "quadrature must be from 1 to %d, not %d",
                         RAD_GAUSS_MAX, opt->quadrature);
-    rad_status st = rad_mesh_normalized(m, &unit, NULL, err);
+    rad_status st = rad_mesh_normalized(m, &unit, &fr, err);
     if (st != RAD_OK)
         return st;
-    st = ff_matrix_unit(&unit, opt, mode, F, errest, stats, vstats, err);
+    st = ff_matrix_unit(&unit, rad_frame_offset(&fr), opt, mode, F, errest, stats, vstats, err);
     rad_mesh_free(&unit);
     return st;
 }
 
-/* The fill itself, on a mesh of size about 1 (rad_mesh_normalized). */
-static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
+/* The fill itself, on a mesh of size about 1 (rad_mesh_normalized) whose
+ * frame's offset is off. */
+static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_options *opt,
                                  rad_occ_mode mode, double *F, double *errest,
                                  rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err)
 {
@@ -342,7 +355,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0, clamped = 0;
     long unmet = 0;
-    if (rad_ff_mesh_polys(m, &polys, &pts, &edges) != RAD_OK) {
+    if (rad_ff_mesh_polys(m, off, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
         free(edges);
@@ -350,7 +363,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, const rad_ff_options *opt,
     }
     rad_occ *occ = NULL;
     rad_occ_stats vst;
-    rad_status vs = rad_occ_create(&occ, m, mode, opt->accuracy, &vst, err);
+    rad_status vs = rad_occ_create(&occ, m, off, mode, opt->accuracy, &vst, err);
     if (vs != RAD_OK) {
         free(polys);
         free(pts);

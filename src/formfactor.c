@@ -666,31 +666,46 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
      * degrees lost a sliver of the plate this way: both modes 1e-6 of F
      * off the contour integral of the pair, under estimates of 1e-16
      * (tests/twisted.sh).  A planar polygon has no doubt beyond
-     * round-off, which rtol holds. */
+     * round-off, which rtol holds.
+     *
+     * Deciding what is on the plane also allows for the rounding of the
+     * coordinates as the user gave them (urnd, FF_ROUND ulps of them, as
+     * visibility's OCC_ROUND does): the frame (mesh.h) makes them small
+     * but keeps their rounding.  A box face pressed against a wall of a
+     * room 7e5 from the origin lay up to 5.5e-12 off the wall's plane in
+     * the frame, beyond the frame's round-off and twists, and saw the wall
+     * fully (F = 1) where visibility took it as on the plane (OCC_SNAP):
+     * the wall's row summed to 1.016 in both modes (fuzzed scene 57:119,
+     * tests/occfar.sh room c).  Only the decision allows for it: the
+     * bounds that follow (p->tol) are on the geometry as given, which the
+     * frame holds exactly, so a scene moved by an exact amount keeps its
+     * F bit for bit unless a vertex lies within urnd of a plane. */
     const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
     const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
                          1e-12 * (a->size + b->size);
+    const double urnd = FF_ROUND * DBL_EPSILON * fmax(a->umag, b->umag);
     const double wtol = rtol + plane_doubt(a, b);
     const double tol = wide ? wtol : rtol + a->twist + b->twist;
+    const double ctol = tol + urnd, cwtol = wtol + urnd; /* for the decision */
     p->ambiguous = 0;
     /* A colinear edge pair lies on both planes: each polygon then has two
      * vertices near the other's plane, allowing for non-planar polygons
      * (the scene's 1e-6 of a quad's size, less for its elements). */
-    const double ntol = tol + 1e-5 * (a->size + b->size);
+    const double ntol = ctol + 1e-5 * (a->size + b->size);
     int nega, negb, neara, nearb;
     double mina, minb;
-    if (!plane_side(b->v, b->n, a->normal, a->centroid, tol, ntol, dist, &negb, &nearb, &minb)) {
-        p->ambiguous = wtol > tol && minb < -tol && minb >= -wtol;
+    if (!plane_side(b->v, b->n, a->normal, a->centroid, ctol, ntol, dist, &negb, &nearb, &minb)) {
+        p->ambiguous = cwtol > ctol && minb < -ctol && minb >= -cwtol;
         return 0; /* B wholly behind A's plane, or on it */
     }
     p->pb = negb ? cb : b->v;
     p->nb = negb ? poly_clip_side(b->v, dist, b->n, 1.0, cb, b->n + 1) : b->n;
-    if (!plane_side(a->v, a->n, b->normal, b->centroid, tol, ntol, dist, &nega, &neara, &mina)) {
-        p->ambiguous = wtol > tol && mina < -tol && mina >= -wtol;
+    if (!plane_side(a->v, a->n, b->normal, b->centroid, ctol, ntol, dist, &nega, &neara, &mina)) {
+        p->ambiguous = cwtol > ctol && mina < -ctol && mina >= -cwtol;
         return 0;
     }
-    p->ambiguous = wtol > tol && (negb || nega) && (!negb || minb >= -wtol) &&
-                   (!nega || mina >= -wtol);
+    p->ambiguous = cwtol > ctol && (negb || nega) && (!negb || minb >= -cwtol) &&
+                   (!nega || mina >= -cwtol);
     p->pa = nega ? ca : a->v;
     p->na = nega ? poly_clip_side(a->v, dist, a->n, 1.0, ca, a->n + 1) : a->n;
     /* (a clip that would not fit in n + 1 vertices returns -1: its

@@ -337,6 +337,11 @@ rad_vec3 rad_frame_apply(const rad_frame *fr, rad_vec3 p)
     return shrink(p, fr->shift, fr->exponent);
 }
 
+rad_vec3 rad_frame_offset(const rad_frame *fr)
+{
+    return shrink(fr->shift, v3(0, 0, 0), fr->exponent);
+}
+
 /* Is surface s's grid the bilinear subdivision of its four corners, as
  * rad_mesh_build makes it (bit for bit: the same formula on the same
  * corners)?  A mesh built otherwise keeps its own vertices. */

@@ -45,11 +45,12 @@ typedef struct rad_occ_stats {
 /* Per-scene data, read-only once built (shared by the fill's threads). */
 typedef struct rad_occ rad_occ;
 
-/* Build the culling data of a mesh.  *occ is NULL on return when the mode
- * is RAD_OCC_OFF or when no pair of surfaces can be blocked: then no
+/* Build the culling data of a mesh (normalized, off its frame's offset:
+ * rad_frame_offset, mesh.h).  *occ is NULL on return when the mode is
+ * RAD_OCC_OFF or when no pair of surfaces can be blocked: then no
  * visibility work is needed.  stats (may be NULL) is cleared and receives
  * the setup's share. */
-rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, rad_occ_mode mode,
+rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, rad_vec3 off, rad_occ_mode mode,
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err);
 void rad_occ_free(rad_occ *occ);
 

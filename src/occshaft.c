@@ -355,11 +355,13 @@ void rad_occ_free(rad_occ *o)
 }
 
 /* The largest absolute coordinate of the mesh. */
-static double scene_magnitude(const rad_mesh *m)
+/* The largest |coordinate| of the vertices as the user gave them (the
+ * mesh's plus off), in the mesh's units. */
+static double scene_magnitude(const rad_mesh *m, rad_vec3 off)
 {
     double x = 0;
     for (int k = 0; k < m->nvertices; k++)
-        x = fmax(x, v3_maxabs(m->vertices[k]));
+        x = fmax(x, v3_maxabs(v3_add(m->vertices[k], off)));
     return x;
 }
 
@@ -373,7 +375,7 @@ static double scene_size(const rad_mesh *m)
     return L > 0 ? L : 1.0;
 }
 
-rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
+rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_vec3 off, rad_occ_mode mode,
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err)
 {
     double t0 = rad_seconds(), blockable = 0;
@@ -391,7 +393,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_occ_mode mode,
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
     o->mode = mode;
     o->accuracy = accuracy;
-    o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m);
+    o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m, off);
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = find_twins(o);

@@ -21,7 +21,8 @@
 /* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
  * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
  * round-off of mesh vertices interpolated at the scene's coordinates
- * (OCC_ROUND ulps of the largest), plus the surfaces' own departures from
+ * (OCC_ROUND ulps of the largest as the user gave them: the frame's shift,
+ * mesh.h, keeps their rounding), plus the surfaces' own departures from
  * planarity (the scene accepts 1e-6 of a quad's size; scene.c): two
  * faces of one twisted panel lie on one plane as far as the data can say.
  * Nothing larger: a blocker 1e-9 of the scene's size from an element is
