@@ -519,10 +519,18 @@ def miss_line(path, fam, misses, worst):
             % (os.path.basename(path), fam, misses, i, j, v, e, w, f, ratio))
 
 
+USAGE = ("usage: geomfuzz.py RADIOSITY [--seed S] [--scenes N | --seconds T]\n"
+         "                   [--family NAME] [--limit SECONDS] [--keep DIR] [--tap]\n"
+         "(the comment at the top of tests/geomfuzz.py says what it checks)")
+
+
 def main():
     a = sys.argv[1:]
-    if not a:
-        print(__doc__ if __doc__ else "usage: geomfuzz.py RADIOSITY [options]", file=sys.stderr)
+    if not a or a[0] in ("-h", "--help"):
+        print(USAGE, file=sys.stderr if not a else sys.stdout)
+        return 2 if not a else 0
+    if not os.access(a[0], os.X_OK):
+        print("geomfuzz.py: %s: not an executable program\n%s" % (a[0], USAGE), file=sys.stderr)
         return 2
     prog, seed, scenes, seconds, limit, keep, tap = a[0], 1, None, None, 60.0, None, False
     family = None
