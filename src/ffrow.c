@@ -246,7 +246,7 @@ rad_status rad_ffrow_create(rad_ffrow **out, const rad_mesh *m, const rad_ff_opt
     r->row_min = NAN;
     r->row_max = NAN;
     tally_init(&r->all);
-    rad_frame fr;
+    rad_frame fr = {{0, 0, 0}, 0};
     rad_status st = rad_mesh_normalized(m, &r->unit, &fr, err);
     r->off = rad_frame_offset(&fr);
     if (st == RAD_OK &&
