@@ -122,12 +122,7 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
     poly->edges = edges;
     poly->nedges = rad_ff_edges(v, n, poly->centroid, edges);
     ff_poly_lengths(poly);
-    rad_ff_poly_offset(poly, v3(0, 0, 0));
-}
-
-void rad_ff_poly_offset(rad_ff_poly *poly, rad_vec3 off)
-{
-    poly->umag = fmax(v3_maxabs(v3_add(poly->lo, off)), v3_maxabs(v3_add(poly->hi, off)));
+    poly->snap = 0;
 }
 
 /* The two polygons in the frame of their common bounding box (mesh.h):
@@ -168,8 +163,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
     }
     rad_ff_poly_make(&pa, v, na, ea);
     rad_ff_poly_make(&pb, v + na, nb, eb);
-    rad_ff_poly_offset(&pa, off);
-    rad_ff_poly_offset(&pb, off);
+    pa.snap = pb.snap = rad_occ_scene_snap(v, (int)nab, off); /* the two are the scene */
     rad_ff_scratch_init(&w);
     double f = rad_ff_pair(&pa, &pb, opt, &w, &s, errest);
     if (errest)
@@ -183,7 +177,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 
 /* Element polygons with contiguous vertices, as the kernel wants them
  * (ffblock.h; also the per-shot rows of ffrow.c, which must see the same
- * polygons). */
+ * polygons), each with the scene's snap (rad_occ_scene_snap). */
 rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **polys,
                              rad_vec3 **pts, rad_ff_edge **edges)
 {
@@ -196,6 +190,7 @@ rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **poly
     if (!*polys || !*pts || !*edges)
         return RAD_ERR_NOMEM;
     size_t at = 0;
+    const double snap = rad_occ_scene_snap(m->vertices, m->nvertices, off);
     for (int e = 0; e < m->nelements; e++) {
         const rad_element *el = &m->elements[e];
         rad_ff_poly *p = &(*polys)[e];
@@ -209,7 +204,7 @@ rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **poly
         p->area = el->area;
         p->nedges = rad_ff_edges(p->v, p->n, p->centroid, p->edges);
         ff_poly_lengths(p);
-        rad_ff_poly_offset(p, off);
+        p->snap = snap;
         at += (size_t)el->nverts;
     }
     return RAD_OK;

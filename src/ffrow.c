@@ -179,7 +179,7 @@ static rad_status patch_polys(rad_ffrow *r, int P, int Q, rad_error *err)
         const int c0 = r->grid.cfirst[p], k = r->grid.cfirst[p + 1] - c0;
         rad_ff_poly *q = &r->polys[r->n + p];
         rad_ff_poly_make(q, r->grid.corner + c0, k, r->pedges + c0);
-        rad_ff_poly_offset(q, r->off);
+        q->snap = r->n > 0 ? r->polys[0].snap : 0; /* the scene's */
         q->normal = r->unit.elements[r->grid.member[r->grid.first[p]]].normal;
         q->nu = rad_ff_element_doubt(&r->unit, r->grid.member[r->grid.first[p]]);
     }

@@ -668,25 +668,28 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
      * (tests/twisted.sh).  A planar polygon has no doubt beyond
      * round-off, which rtol holds.
      *
-     * Deciding what is on the plane also allows for the rounding of the
-     * coordinates as the user gave them (urnd, FF_ROUND ulps of them, as
-     * visibility's OCC_ROUND does): the frame (mesh.h) makes them small
-     * but keeps their rounding.  A box face pressed against a wall of a
-     * room 7e5 from the origin lay up to 5.5e-12 off the wall's plane in
-     * the frame, beyond the frame's round-off and twists, and saw the wall
-     * fully (F = 1) where visibility took it as on the plane (OCC_SNAP):
-     * the wall's row summed to 1.016 in both modes (fuzzed scene 57:119,
-     * tests/occfar.sh room c).  Only the decision allows for it: the
-     * bounds that follow (p->tol) are on the geometry as given, which the
-     * frame holds exactly, so a scene moved by an exact amount keeps its
-     * F bit for bit unless a vertex lies within urnd of a plane. */
+     * Deciding what is on the plane allows for as much as visibility
+     * does (the scene's snap, rad_occ_scene_snap: OCC_SNAP of its size and
+     * OCC_ROUND ulps of its coordinates as the user gave them, which the
+     * frame of mesh.h keeps), so that a surface visibility takes as on a
+     * plane, and lets light pass, is on it here too and sees nothing
+     * there.  A box face pressed against a wall of a room 7e5 from the
+     * origin lay up to 5.5e-12 off the wall's plane in the frame, beyond
+     * the frame's round-off and twists: it saw the wall fully (F = 1)
+     * where visibility let the wall see past it, and the wall's row
+     * summed to 1.016 in both modes (fuzzed scene 57:119); the same with
+     * the face 5e-12 off the wall of the room at the origin
+     * (tests/occfar.sh, rooms c and d).  Only the decision allows for it:
+     * the bounds that follow (p->tol) are on the geometry as given, which
+     * the frame holds exactly, so a scene moved by an exact amount keeps
+     * its F bit for bit unless a vertex lies within the snap of a plane. */
     const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
     const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
                          1e-12 * (a->size + b->size);
-    const double urnd = FF_ROUND * DBL_EPSILON * fmax(a->umag, b->umag);
+    const double snap = fmax(a->snap, b->snap);
     const double wtol = rtol + plane_doubt(a, b);
     const double tol = wide ? wtol : rtol + a->twist + b->twist;
-    const double ctol = tol + urnd, cwtol = wtol + urnd; /* for the decision */
+    const double ctol = tol + snap, cwtol = wtol + snap; /* for the decision */
     p->ambiguous = 0;
     /* A colinear edge pair lies on both planes: each polygon then has two
      * vertices near the other's plane, allowing for non-planar polygons

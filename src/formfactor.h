@@ -35,9 +35,9 @@ typedef struct rad_ff_poly {
                                the centroid (0 for a planar polygon; the scene
                                accepts 1e-6 of a quad's size) */
     rad_vec3 lo, hi;        /* bounding box */
-    double umag;            /* largest |coordinate| of its vertices as the
-                               user gave them, in its own units: they were
-                               rounded to eps of it (rad_ff_poly_offset) */
+    double snap;            /* its scene's on-plane tolerance beyond the
+                               pair's round-off and twists, in its own
+                               units (rad_occ_scene_snap; 0 unless set) */
 } rad_ff_poly;
 
 /* R3 of ffarea.c: the bound on the error of the unit normal of the
@@ -60,10 +60,6 @@ void rad_ff_scratch_free(rad_ff_scratch *w);
 /* Fill poly from n vertices (normal, centroid, area, size and edges
  * computed); `edges` must have room for n. */
 void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *edges);
-/* A polygon in a frame (mesh.h) whose offset is off: its umag is that of
- * its vertices as the user gave them (rad_ff_poly_make takes them as
- * given, offset 0). */
-void rad_ff_poly_offset(rad_ff_poly *poly, rad_vec3 off);
 /* Compute the edges of p[0..n) relative to `origin` into e; returns their
  * number (zero-length edges are dropped). */
 int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);

@@ -31,7 +31,8 @@ int rad_frame_fit(rad_frame *frame, rad_vec3 lo, rad_vec3 hi);
 rad_vec3 rad_frame_apply(const rad_frame *frame, rad_vec3 p);
 /* shift 2^-exponent: a point's coordinates as the user gave them are, in
  * the frame's units, its coordinates in the frame plus this.  They carry
- * the user's rounding, eps of their size (formfactor.c, pair_setup). */
+ * the user's rounding, eps of their size (rad_occ_scene_snap,
+ * occlusion.h). */
 rad_vec3 rad_frame_offset(const rad_frame *frame);
 
 /* A private copy of the mesh's geometry in the frame of its bounding box

@@ -45,6 +45,14 @@ typedef struct rad_occ_stats {
 /* Per-scene data, read-only once built (shared by the fill's threads). */
 typedef struct rad_occ rad_occ;
 
+/* What lies within this of a plane is on it, beyond the surfaces' own
+ * twists, for visibility and the kernel's decision alike (formfactor.c,
+ * pair_setup): OCC_SNAP of the diagonal of the box of the n points v
+ * (a scene's vertices, in a frame whose offset is off: rad_frame_offset,
+ * mesh.h) plus OCC_ROUND ulps of their largest coordinate as the user
+ * gave them (v[k] + off), which the frame keeps (occspace.h). */
+double rad_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off);
+
 /* Build the culling data of a mesh (normalized, off its frame's offset:
  * rad_frame_offset, mesh.h).  *occ is NULL on return when the mode is
  * RAD_OCC_OFF or when no pair of surfaces can be blocked: then no

@@ -354,25 +354,16 @@ void rad_occ_free(rad_occ *o)
     free(o);
 }
 
-/* The largest absolute coordinate of the mesh. */
-/* The largest |coordinate| of the vertices as the user gave them (the
- * mesh's plus off), in the mesh's units. */
-static double scene_magnitude(const rad_mesh *m, rad_vec3 off)
+double rad_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off)
 {
-    double x = 0;
-    for (int k = 0; k < m->nvertices; k++)
-        x = fmax(x, v3_maxabs(v3_add(m->vertices[k], off)));
-    return x;
-}
-
-static double scene_size(const rad_mesh *m)
-{
-    if (m->nvertices < 1)
-        return 1.0;
+    if (n < 1)
+        return OCC_SNAP;
     rad_vec3 lo, hi;
-    v3_bounds(m->vertices, m->nvertices, &lo, &hi);
-    double L = v3_norm(v3_sub(hi, lo));
-    return L > 0 ? L : 1.0;
+    v3_bounds(v, n, &lo, &hi);
+    const double L = v3_norm(v3_sub(hi, lo));
+    /* the largest |coordinate| as the user gave them, from the box */
+    const double mag = fmax(v3_maxabs(v3_add(lo, off)), v3_maxabs(v3_add(hi, off)));
+    return OCC_SNAP * (L > 0 ? L : 1.0) + OCC_ROUND * DBL_EPSILON * mag;
 }
 
 rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_vec3 off, rad_occ_mode mode,
@@ -393,7 +384,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_vec3 off, rad_oc
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
     o->mode = mode;
     o->accuracy = accuracy;
-    o->snap = OCC_SNAP * scene_size(m) + OCC_ROUND * DBL_EPSILON * scene_magnitude(m, off);
+    o->snap = rad_occ_scene_snap(m->vertices, m->nvertices, off);
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = find_twins(o);

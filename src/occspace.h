@@ -20,14 +20,16 @@
 
 /* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
  * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
- * round-off of mesh vertices interpolated at the scene's coordinates
- * (OCC_ROUND ulps of the largest as the user gave them: the frame's shift,
- * mesh.h, keeps their rounding), plus the surfaces' own departures from
- * planarity (the scene accepts 1e-6 of a quad's size; scene.c): two
- * faces of one twisted panel lie on one plane as far as the data can say.
- * Nothing larger: a blocker 1e-9 of the scene's size from an element is
- * in front of it, and hides what lies behind (issue 20: a tolerance of
- * 1e-9 L let a floor's light through to an element 1e-9 above it). */
+ * rounding of the scene's coordinates (OCC_ROUND ulps of the largest as
+ * the user gave them: the frame's shift, mesh.h, keeps their rounding),
+ * plus the surfaces' own departures from planarity (the scene accepts
+ * 1e-6 of a quad's size; scene.c): two faces of one twisted panel lie on
+ * one plane as far as the data can say.  The kernel decides what is on a
+ * plane with the same first two (rad_occ_scene_snap, occshaft.c).
+ * Nothing larger: near the origin a blocker 1e-9 of the scene's size
+ * from an element is in front of it, and hides what lies behind (issue
+ * 20: a tolerance of 1e-9 L let a floor's light through to an element
+ * 1e-9 above it); far from it, what the coordinates' rounding resolves. */
 #define OCC_SNAP 1e-11
 #define OCC_ROUND 16
 #define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element

@@ -526,10 +526,10 @@ USAGE = ("usage: geomfuzz.py RADIOSITY [--seed S] [--scenes N | --seconds T]\n"
 
 def main():
     a = sys.argv[1:]
-    if not a or a[0] in ("-h", "--help"):
+    if not a or "-h" in a or "--help" in a:
         print(USAGE, file=sys.stderr if not a else sys.stdout)
         return 2 if not a else 0
-    if not os.access(a[0], os.X_OK):
+    if not (os.path.isfile(a[0]) and os.access(a[0], os.X_OK)):
         print("geomfuzz.py: %s: not an executable program\n%s" % (a[0], USAGE), file=sys.stderr)
         return 2
     prog, seed, scenes, seconds, limit, keep, tap = a[0], 1, None, None, 60.0, None, False

@@ -29,8 +29,11 @@
 # pair_setup), working in the frame that shifts the room to the origin,
 # took it as in front of the wall and gave F(20, 7) = 1, while visibility
 # took it as on the wall's plane and let the wall see past it: row 7
-# summed to 1.0156 in both modes.  The kernel's tolerance now counts the
-# user's coordinates' rounding, as visibility's does.
+# summed to 1.0156 in both modes.  Room d is room c upright with the box
+# moved 5e-12 off the wall: the same, at the origin.  The kernel now
+# decides what is on a plane with visibility's tolerance (1e-11 of the
+# scene's size, and 16 ulps of its coordinates as written), and both
+# rooms are room c upright, whose face lies in the wall's plane.
 #
 # Independent values.  Rooms a and b are closed (the boxes' open bottoms
 # stand on the floor's holes), so every one of their rows of F (22 and
@@ -40,9 +43,10 @@
 # the wall sees nothing (all else is behind or in its plane): row 20 is
 # 0.  The wall element under it sees, from there, only the floor inside
 # the box (the box's faces show it their backs), and the floor element
-# under the box only that face: rows 7 and 15 are 1 - (A/A_k)(1 - F), A
-# the face's or the footprint's area and F from it to the other,
-# perpendicular rectangles with a common edge (Howell's catalogue, C-14).
+# under the box, from there, only the wall behind that face: rows 7 and
+# 15 are 1 - (A/A_k)(1 - F), A the face's or the footprint's area and F
+# from it to the other, perpendicular rectangles with a common edge
+# (Howell's catalogue, C-14).  Room d's rows are room c's.
 # And F is invariant under rotation, scaling and translation, so default
 # mode's entries above 1e-6 (in either room) are within 2e-6 of the
 # upright room's (each within its promise of its room's true value; the
@@ -131,6 +135,22 @@ quad w -67018.74650565292 719526.0745042828 -10.256157003332826 -67018.731509751
 quad w -67018.72389752198 719525.892694153 -10.292518492127401 -67018.70890162035 719525.8581040942 -10.110241786496609 -67018.73150975128 719526.0399142241 -10.073880297702033 -67018.74650565292 719526.0745042828 -10.256157003332826 mesh 1x1
 quad w -67018.438826113 719525.9313656508 -10.308632747699356 -67018.46143424393 719526.1131757807 -10.27227125890478 -67018.44643834229 719526.078585722 -10.089994553273987 -67018.42383021137 719525.8967755921 -10.126356042068563 mesh 1x1
 SCENE
+cat > "$work/d-far.scene" <<'SCENE'
+material e reflect 0.4 emit 1
+material w reflect 0.6 0.5 0.3
+quad e 0 1 1 1 1 1 1 0 1 0 0 1 mesh 1x1
+quad w 0 0 1 1 0 1 1 0 0 0 0 0 mesh 2x2
+quad w 1 1 0 1 1 1 0 1 1 0 1 0 mesh 2x1
+quad w 0 1 0 0 1 1 0 0 1 0 0 0 mesh 2x1
+quad w 1 0 1 1 1 1 1 1 0 1 0 0 mesh 2x2
+quad w 1 0 0 1 1 0 0 1 0 0 0 0 mesh 2x2
+quad w 5e-12 0.27180820981348625 0.18613475400598586 0.28813341043361346 0.27180820981348625 0.18613475400598586 0.28813341043361346 0.4585920655745357 0.18613475400598586 5e-12 0.4585920655745357 0.18613475400598586 mesh 1x1
+quad w 5e-12 0.27180820981348625 0.0 0.28813341043361346 0.27180820981348625 0.0 0.28813341043361346 0.27180820981348625 0.18613475400598586 5e-12 0.27180820981348625 0.18613475400598586 mesh 1x1
+quad w 5e-12 0.4585920655745357 0.0 5e-12 0.4585920655745357 0.18613475400598586 0.28813341043361346 0.4585920655745357 0.18613475400598586 0.28813341043361346 0.4585920655745357 0.0 mesh 1x1
+quad w 5e-12 0.27180820981348625 0.0 5e-12 0.27180820981348625 0.18613475400598586 5e-12 0.4585920655745357 0.18613475400598586 5e-12 0.4585920655745357 0.0 mesh 1x1
+quad w 0.28813341043361346 0.27180820981348625 0.0 0.28813341043361346 0.4585920655745357 0.0 0.28813341043361346 0.4585920655745357 0.18613475400598586 0.28813341043361346 0.27180820981348625 0.18613475400598586 mesh 1x1
+SCENE
+cp "$work/c-upright.scene" "$work/d-upright.scene"
 cat > "$work/b-upright.scene" <<'SCENE'
 material e reflect 0.4 emit 1
 material w reflect 0.6 0.5 0.3
@@ -216,23 +236,24 @@ quad w -827.5725350274249 2.6440153751278146 985124.6811694776 -827.819233252784
 quad w -827.6377526323187 2.3872534644242345 985124.5243255252 -827.4760317982262 2.2719980121688925 985124.6457593732 -827.7227300235861 2.184624591180941 985124.8913744148 -827.8844508576786 2.299880043436283 985124.7699405667 mesh 1x1
 SCENE
 
-# check ROOM ROWS MODES: the modes' rows of the far room (1, or as
-# $work/ROOM-rows says: lines "ROW SUM"), default's entries against the
-# upright room
+# check ROOM ROWS MODES [WHAT]: the modes' rows of the far room (1, or
+# as $work/ROOM-rows says: lines "ROW SUM"), default's entries against
+# the upright room; WHAT says how the far room differs (turned and moved)
 check() {
   touch "$work/$1-rows"
+  what=${4:-turned and moved}
   for case in $3; do
     set -- "$1" "$2" "$3" $(echo "$case" | tr : ' ')
     "$RADIOSITY" formfactor -q --threads 1 --accuracy "$4" "$work/$1-far.scene" \
       -o "$work/$1-far-$4.tsv"
-    ok $? "room $1, $4: turned and moved: formfactor"
+    ok $? "room $1, $4: $what: formfactor"
     awk -F '\t' -v tol="$5" -v rows="$2" -v want="$work/$1-rows" '
       FILENAME == want { s[$1] = $2; next }
       FNR > 1 { if (!($1 in r)) n++; r[$1] += $3 }
       END { w = 0; for (i in r) { d = r[i] - (i in s ? s[i] : 1); if (d < 0) d = -d; if (d > w) w = d }
             printf "%.3g\n", w; exit !(n == rows && w <= tol) }' \
       FS=' ' "$work/$1-rows" FS='\t' "$work/$1-far-$4.tsv" > "$work/rows"
-    ok $? "room $1, $4: turned and moved, the $2 rows of F sum to their values within $5 (worst $(cat "$work/rows"))"
+    ok $? "room $1, $4: $what, the $2 rows of F sum to their values within $5 (worst $(cat "$work/rows"))"
   done
   "$RADIOSITY" formfactor -q --threads 1 --accuracy default "$work/$1-upright.scene" \
     -o "$work/$1-up.tsv"
@@ -245,7 +266,7 @@ check() {
       n++ }
     END { printf "%d %d\n", n, bad; exit !(n > 0 && bad == 0) }' \
     "$work/$1-up.tsv" "$work/$1-far-default.tsv" > "$work/cmp"
-  ok $? "room $1, default: turned and moved, every entry above 1e-6 (in either) within 2e-6 of upright (entries, off: $(cat "$work/cmp"))"
+  ok $? "room $1, default: $what, every entry above 1e-6 (in either) within 2e-6 of upright (entries, off: $(cat "$work/cmp"))"
 }
 
 check a 22 "default:1e-6 reference:1e-9"
@@ -267,6 +288,8 @@ awk -v y0=0.27180820981348625 -v y1=0.4585920655745357 -v h=0.18613475400598586 
     printf "7 %.17g\n15 %.17g\n20 0\n", 1 - (l * h / 0.5) * (1 - c14(l, h, w)),
       1 - (l * w / 0.25) * (1 - c14(l, w, h)) }' > "$work/c-rows"
 check c 22 "default:1e-6 reference:1e-9"
+cp "$work/c-rows" "$work/d-rows"
+check d 22 "default:1e-6 reference:1e-9" "the box 5e-12 off the wall"
 # Room b's reference rows missed 1 by up to 1.5e-9 (one of a strip 0.035
 # x 0.014 between a box and a wall; estimates 6e-11), and that strip's
 # factor to the far wall was 2.7e-7 above the upright room's in both
