@@ -26,10 +26,16 @@ wait_tmp() {
   return 1
 }
 
-# On a loaded machine the poll may see the temporary so late that the run
-# has renamed its outputs and exited 0 before the signal lands: a fair
-# outcome, not the case under test, so that attempt is run again (at most
-# 5 times) in a fresh directory.
+# On a loaded machine the poll may see the temporary so late that the
+# signal lands after the last output is written: the run renames them all
+# with the signal held back and then ends with status 0 (it had finished)
+# or 128 + signal (the signal came during the renames), its outputs all
+# new.  Either is a fair outcome, not the case under test, so that
+# attempt is run again (at most 5 times) in a fresh directory.
+# (`make distcheck` beside a timing run failed here twice: status
+# 128 + signal, outputs not all old.  The renames hold the signal back
+# and the handler only removes temporaries, so they were all new.)
+all_new() { ! grep -qx 'old-.*' "$1/e.tsv" "$1/f.mtx" "$1/r.json"; }
 for sig in INT TERM HUP; do
   want=$((128 + $(kill -l "$sig")))
   for attempt in 1 2 3 4 5; do
@@ -41,9 +47,13 @@ for sig in INT TERM HUP; do
     found=0; wait_tmp "$d" && found=1
     if [ $found = 1 ]; then kill -s "$sig" "$pid"; fi
     wait "$pid"; rc=$?
-    [ $found = 1 ] && [ $rc -eq 0 ] || break
+    late=0
+    if [ $found = 1 ] && { [ $rc -eq 0 ] || { [ $rc -eq $want ] && all_new "$d"; }; }; then late=1; fi
+    [ $late = 1 ] || break
   done
-  if [ $found = 1 ]; then
+  if [ $found = 1 ] && [ $late = 1 ]; then
+    for k in 1 2 3; do skip "the signal landed after the outputs were written, 5 times"; done
+  elif [ $found = 1 ]; then
     [ $rc -eq $want ]; ok $? "SIG$sig while writing: exit $want (got $rc)"
     [ "$(cat "$d/e.tsv")" = old-elements ] && [ "$(cat "$d/f.mtx")" = old-matrix ] &&
       [ "$(cat "$d/r.json")" = old-report ]
