@@ -98,16 +98,17 @@ rad_status rad_ff_block_open(rad_ff_block **out, const rad_mesh *mesh,
         free(b);
         return st;
     }
-    const rad_vec3 off = rad_frame_offset(&fr);
+    const double snap = rad_occ_scene_snap(b->unit.vertices, b->unit.nvertices,
+                                           rad_frame_offset(&fr));
     const int n = b->unit.nelements;
     b->inv_t = malloc(sizeof *b->inv_t * (size_t)(n > 0 ? n : 1));
-    if (!b->inv_t || rad_ff_mesh_polys(&b->unit, off, &b->polys, &b->pts, &b->edges) != RAD_OK) {
+    if (!b->inv_t || rad_ff_mesh_polys(&b->unit, snap, &b->polys, &b->pts, &b->edges) != RAD_OK) {
         rad_ff_block_close(b);
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", n);
     }
     for (int k = 0; k < n; k++)
         b->inv_t[k] = 1 / (2 * RAD_PI * b->polys[k].area);
-    st = rad_occ_create(&b->occ, &b->unit, off, RAD_OCC_AUTO, opt->accuracy, &b->setup, err);
+    st = rad_occ_create(&b->occ, &b->unit, snap, RAD_OCC_AUTO, opt->accuracy, &b->setup, err);
     if (st != RAD_OK) {
         rad_ff_block_close(b);
         return st;

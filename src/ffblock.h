@@ -61,9 +61,9 @@ rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, siz
                               double *fij, double *fji, rad_error *err);
 
 /* Shared with ffmatrix.c: the element polygons of a (normalized) mesh,
- * off its frame's offset (rad_frame_offset, mesh.h; rad_ff_promise, each
- * mode's promise, is in formfactor.h). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **polys,
+ * each given the scene's snap (rad_occ_scene_snap, occlusion.h;
+ * rad_ff_promise, each mode's promise, is in formfactor.h). */
+rad_status rad_ff_mesh_polys(const rad_mesh *m, double snap, rad_ff_poly **polys,
                              rad_vec3 **pts, rad_ff_edge **edges);
 /* The fill's statistics of a dense F (n x n): pairs, extremes, the
  * classic rule's faults, rows summing above 1 + RAD_ROW_SUM_SLACK; the

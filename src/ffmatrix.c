@@ -178,7 +178,7 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
 /* Element polygons with contiguous vertices, as the kernel wants them
  * (ffblock.h; also the per-shot rows of ffrow.c, which must see the same
  * polygons), each with the scene's snap (rad_occ_scene_snap). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **polys,
+rad_status rad_ff_mesh_polys(const rad_mesh *m, double snap, rad_ff_poly **polys,
                              rad_vec3 **pts, rad_ff_edge **edges)
 {
     size_t total = 0, ne = m->nelements > 0 ? (size_t)m->nelements : 1;
@@ -190,7 +190,6 @@ rad_status rad_ff_mesh_polys(const rad_mesh *m, rad_vec3 off, rad_ff_poly **poly
     if (!*polys || !*pts || !*edges)
         return RAD_ERR_NOMEM;
     size_t at = 0;
-    const double snap = rad_occ_scene_snap(m->vertices, m->nvertices, off);
     for (int e = 0; e < m->nelements; e++) {
         const rad_element *el = &m->elements[e];
         rad_ff_poly *p = &(*polys)[e];
@@ -316,7 +315,7 @@ rad_status rad_ff_matrix(const rad_mesh *m, const rad_ff_options *opt, double *F
     return rad_ff_matrix_occ(m, opt, RAD_OCC_AUTO, F, errest, stats, NULL, err);
 }
 
-static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_options *opt,
+static rad_status ff_matrix_unit(const rad_mesh *m, double snap, const rad_ff_options *opt,
                                  rad_occ_mode mode, double *F, double *errest,
                                  rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err);
 
@@ -332,14 +331,15 @@ rad_status rad_ff_matrix_occ(const rad_mesh *m, const rad_ff_options *opt, rad_o
     rad_status st = rad_mesh_normalized(m, &unit, &fr, err);
     if (st != RAD_OK)
         return st;
-    st = ff_matrix_unit(&unit, rad_frame_offset(&fr), opt, mode, F, errest, stats, vstats, err);
+    const double snap = rad_occ_scene_snap(unit.vertices, unit.nvertices, rad_frame_offset(&fr));
+    st = ff_matrix_unit(&unit, snap, opt, mode, F, errest, stats, vstats, err);
     rad_mesh_free(&unit);
     return st;
 }
 
 /* The fill itself, on a mesh of size about 1 (rad_mesh_normalized) whose
- * frame's offset is off. */
-static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_options *opt,
+ * on-plane tolerance is snap (rad_occ_scene_snap). */
+static rad_status ff_matrix_unit(const rad_mesh *m, double snap, const rad_ff_options *opt,
                                  rad_occ_mode mode, double *F, double *errest,
                                  rad_ff_stats *stats, rad_occ_stats *vstats, rad_error *err)
 {
@@ -350,7 +350,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_o
     int failed = 0, stop = 0;
     double maxerr = 0, maxrel = 0, clamped = 0;
     long unmet = 0;
-    if (rad_ff_mesh_polys(m, off, &polys, &pts, &edges) != RAD_OK) {
+    if (rad_ff_mesh_polys(m, snap, &polys, &pts, &edges) != RAD_OK) {
         free(polys);
         free(pts);
         free(edges);
@@ -358,7 +358,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, rad_vec3 off, const rad_ff_o
     }
     rad_occ *occ = NULL;
     rad_occ_stats vst;
-    rad_status vs = rad_occ_create(&occ, m, off, mode, opt->accuracy, &vst, err);
+    rad_status vs = rad_occ_create(&occ, m, snap, mode, opt->accuracy, &vst, err);
     if (vs != RAD_OK) {
         free(polys);
         free(pts);

@@ -62,7 +62,7 @@ typedef struct tally {
 
 struct rad_ffrow {
     rad_mesh unit;              /* the normalized copy */
-    rad_vec3 off;               /* its frame's offset (rad_frame_offset) */
+    double snap;                /* its on-plane tolerance (rad_occ_scene_snap) */
     rad_element *aug;           /* unit's elements + one per patch (visibility) */
     int n, np;
     rad_ff_options opt;
@@ -179,7 +179,7 @@ static rad_status patch_polys(rad_ffrow *r, int P, int Q, rad_error *err)
         const int c0 = r->grid.cfirst[p], k = r->grid.cfirst[p + 1] - c0;
         rad_ff_poly *q = &r->polys[r->n + p];
         rad_ff_poly_make(q, r->grid.corner + c0, k, r->pedges + c0);
-        q->snap = r->n > 0 ? r->polys[0].snap : 0; /* the scene's */
+        q->snap = r->snap;
         q->normal = r->unit.elements[r->grid.member[r->grid.first[p]]].normal;
         q->nu = rad_ff_element_doubt(&r->unit, r->grid.member[r->grid.first[p]]);
     }
@@ -205,7 +205,7 @@ static rad_status make_occ(rad_ffrow *r, rad_occ_mode mode, rad_error *err)
         m.elements = r->aug;
         m.nelements = r->n + r->np;
     }
-    return rad_occ_create(&r->occ, &m, r->off, mode, r->opt.accuracy, &r->vst, err);
+    return rad_occ_create(&r->occ, &m, r->snap, mode, r->opt.accuracy, &r->vst, err);
 }
 
 static rad_status thread_space(rad_ffrow *r, rad_error *err)
@@ -248,9 +248,10 @@ rad_status rad_ffrow_create(rad_ffrow **out, const rad_mesh *m, const rad_ff_opt
     tally_init(&r->all);
     rad_frame fr = {{0, 0, 0}, 0};
     rad_status st = rad_mesh_normalized(m, &r->unit, &fr, err);
-    r->off = rad_frame_offset(&fr);
+    if (st == RAD_OK)
+        r->snap = rad_occ_scene_snap(r->unit.vertices, r->unit.nvertices, rad_frame_offset(&fr));
     if (st == RAD_OK &&
-        rad_ff_mesh_polys(&r->unit, r->off, &r->polys, &r->pts, &r->edges) != RAD_OK)
+        rad_ff_mesh_polys(&r->unit, r->snap, &r->polys, &r->pts, &r->edges) != RAD_OK)
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for %d elements", r->n);
     const int hemi = opt->method == RAD_FF_HEMICUBE;
     if (st == RAD_OK && hemi && P > 0)

@@ -53,12 +53,13 @@ typedef struct rad_occ rad_occ;
  * gave them (v[k] + off), which the frame keeps (occspace.h). */
 double rad_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off);
 
-/* Build the culling data of a mesh (normalized, off its frame's offset:
- * rad_frame_offset, mesh.h).  *occ is NULL on return when the mode is
+/* Build the culling data of a mesh (normalized: mesh.h) whose on-plane
+ * tolerance is snap (rad_occ_scene_snap, above: the kernel's polygons
+ * carry the same number).  *occ is NULL on return when the mode is
  * RAD_OCC_OFF or when no pair of surfaces can be blocked: then no
  * visibility work is needed.  stats (may be NULL) is cleared and receives
  * the setup's share. */
-rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, rad_vec3 off, rad_occ_mode mode,
+rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, double snap, rad_occ_mode mode,
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err);
 void rad_occ_free(rad_occ *occ);
 

@@ -366,7 +366,7 @@ double rad_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off)
     return OCC_SNAP * (L > 0 ? L : 1.0) + OCC_ROUND * DBL_EPSILON * mag;
 }
 
-rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_vec3 off, rad_occ_mode mode,
+rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_occ_mode mode,
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err)
 {
     double t0 = rad_seconds(), blockable = 0;
@@ -384,7 +384,7 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, rad_vec3 off, rad_oc
         return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the visibility data");
     o->mode = mode;
     o->accuracy = accuracy;
-    o->snap = rad_occ_scene_snap(m->vertices, m->nvertices, off);
+    o->snap = snap;
     rad_status s = load_surfaces(o, m);
     if (s == RAD_OK)
         s = find_twins(o);
