@@ -279,40 +279,109 @@ static double area_sum(const rad_vec3 *pa, const double *wa, const rad_vec3 *na,
     return 2 * s;
 }
 
-/* The round-off of area_sum over the same points, bounded (see the top
- * of the file, eqs. R1 and R2): the a priori R2 where it is within
- * `budget`, else R1 term by term.  R0 bounds the distance of the points'
- * corners from the points' origin, rmin the distance between the point
- * sets. */
-static double area_roundoff(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
-                            const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
-                            double eps, const double nu[2], double R0, double rmin,
-                            double budget)
+/* The sums over the same points as area_sum that R1 (see the top of the
+ * file) is made of, with w = |w_k w_l|, a_k = |n_k . d|, a_l = |n_l . d|:
+ *     t[0] = sum w r a_l / r^4,  t[1] = sum w a_l / r^4,
+ *     t[2] = sum w r a_k / r^4,  t[3] = sum w a_k / r^4,
+ *     t[4] = sum w a_k a_l / r^5,  t[5] = sum w a_k a_l / r^4,
+ * so that R1 for any epsilon and normals' doubt is a combination of six
+ * numbers (r1_of): one pass over the terms serves the bound in double and
+ * the bound of the sum again in long double. */
+typedef struct area_terms {
+    double t[6];
+    int known;
+} area_terms;
+
+static void terms_of(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
+                     const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
+                     area_terms *at)
 {
+    double t[6] = {0, 0, 0, 0, 0, 0};
+    for (int k = 0; k < ma; k++)
+        for (int l = 0; l < mb; l++) {
+            const rad_vec3 d = v3_sub(pb[l], pa[k]);
+            const double r2 = v3_dot(d, d), r = sqrt(r2);
+            const double w = fabs(wa[k] * wb[l]) / (r2 * r2);
+            const double ak = fabs(v3_dot(na[k], d)), al = fabs(v3_dot(nb[l], d));
+            t[0] += w * r * al;
+            t[1] += w * al;
+            t[2] += w * r * ak;
+            t[3] += w * ak;
+            t[4] += w * ak * al / r;
+            t[5] += w * ak * al;
+        }
+    for (int k = 0; k < 6; k++)
+        at->t[k] = t[k];
+    at->known = 1;
+}
+
+/* area_sum and terms_of in one pass over the terms (the sum bit for bit
+ * area_sum's), for a sum whose bound will need R1. */
+static double area_sum_terms(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
+                             const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
+                             area_terms *at)
+{
+    double s = 0, t[6] = {0, 0, 0, 0, 0, 0};
+    for (int k = 0; k < ma; k++) {
+        double inner = 0;
+        for (int l = 0; l < mb; l++) {
+            const rad_vec3 d = v3_sub(pb[l], pa[k]);
+            const double r2 = v3_dot(d, d), r = sqrt(r2);
+            const double dk = v3_dot(na[k], d), dl = v3_dot(nb[l], d);
+            inner += wb[l] * (dk * -dl) / (r2 * r2);
+            const double w = fabs(wa[k] * wb[l]) / (r2 * r2);
+            const double ak = fabs(dk), al = fabs(dl);
+            t[0] += w * r * al;
+            t[1] += w * al;
+            t[2] += w * r * ak;
+            t[3] += w * ak;
+            t[4] += w * ak * al / r;
+            t[5] += w * ak * al;
+        }
+        s += wa[k] * inner;
+    }
+    for (int k = 0; k < 6; k++)
+        at->t[k] = t[k];
+    at->known = 1;
+    return 2 * s;
+}
+
+/* R2 (see the top of the file) for the points' weights, or infinity
+ * when the point sets may touch (rmin 0). */
+static double prior_bound(const double *wa, int ma, const double *wb, int mb, double eps,
+                          const double nu[2], double R0, double rmin)
+{
+    if (!(rmin > 0))
+        return INFINITY;
     double Wa = 0, Wb = 0;
     for (int k = 0; k < ma; k++)
         Wa += fabs(wa[k]);
     for (int l = 0; l < mb; l++)
         Wb += fabs(wb[l]);
+    const double ca = nu[0] + 6 * eps, cb = nu[1] + 6 * eps;
+    const double c3 = eps * (20 + ma + mb) + 2 * (nu[0] + nu[1]);
+    return 2 * Wa * Wb / (rmin * rmin) * (ca + cb + c3 + 176 * eps * (R0 / rmin));
+}
+
+/* The round-off of area_sum over the same points, bounded (see the top
+ * of the file, eqs. R1 and R2): the a priori R2 where it is within
+ * `budget`, else R1 from the sums *at (computed on first need).  R0
+ * bounds the distance of the points' corners from the points' origin,
+ * rmin the distance between the point sets. */
+static double area_roundoff(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
+                            const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
+                            double eps, const double nu[2], double R0, double rmin,
+                            double budget, area_terms *at)
+{
+    const double pri = prior_bound(wa, ma, wb, mb, eps, nu, R0, rmin); /* R2 */
+    if (pri <= budget)
+        return pri;
+    if (!at->known) /* R1 */
+        terms_of(pa, wa, na, ma, pb, wb, nb, mb, at);
     const double ca = nu[0] + 6 * eps, cb = nu[1] + 6 * eps, c2 = 32 * eps * R0;
     const double c3 = eps * (20 + ma + mb) + 2 * (nu[0] + nu[1]);
-    if (rmin > 0) { /* R2 */
-        const double r = R0 / rmin;
-        const double pri = 2 * Wa * Wb / (rmin * rmin) * (ca + cb + c3 + 176 * eps * r);
-        if (pri <= budget)
-            return pri;
-    }
-    double acc = 0; /* R1 */
-    for (int k = 0; k < ma; k++)
-        for (int l = 0; l < mb; l++) {
-            const rad_vec3 d = v3_sub(pb[l], pa[k]);
-            const double r2 = v3_dot(d, d), r = sqrt(r2);
-            const double ak = fabs(v3_dot(na[k], d)), al = fabs(v3_dot(nb[l], d));
-            acc += fabs(wa[k] * wb[l]) *
-                   ((ca * r + c2) * al + (cb * r + c2) * ak + ak * al * (112 * eps * R0 / r + c3)) /
-                   (r2 * r2);
-        }
-    return 2 * acc;
+    const double *t = at->t;
+    return 2 * (ca * t[0] + c2 * (t[1] + t[3]) + cb * t[2] + 112 * eps * R0 * t[4] + c3 * t[5]);
 }
 
 /* The sum *s of the rule of order k over the points pts (ma of a at pa,
@@ -323,17 +392,18 @@ static double sum_roundoff(const rad_vec3 *pa, const double *wa, const rad_vec3 
                            const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
                            const rad_ff_area_part *a, const rad_ff_area_part *b,
                            rad_vec3 origin, int k, double R0, double rmin, double budget,
-                           double *s)
+                           area_terms *at, double *s)
 {
     const double nu[2] = {a->doubt, b->doubt};
-    const double ro =
-        area_roundoff(pa, wa, na, ma, pb, wb, nb, mb, DBL_EPSILON, nu, R0, rmin, budget);
+    const double ro = area_roundoff(pa, wa, na, ma, pb, wb, nb, mb, DBL_EPSILON, nu, R0, rmin,
+                                    budget, at);
     double sl, nul[2];
     if (ro <= budget || LDBL_EPSILON >= DBL_EPSILON ||
         rad_ff_area_long(a, b, origin, k, &sl, nul) != 0)
         return ro;
     *s = sl;
-    return area_roundoff(pa, wa, na, ma, pb, wb, nb, mb, LDBL_EPSILON, nul, R0, rmin, budget) +
+    return area_roundoff(pa, wa, na, ma, pb, wb, nb, mb, LDBL_EPSILON, nul, R0, rmin, budget,
+                         at) +
            0.5 * DBL_EPSILON * fabs(sl);
 }
 
@@ -410,9 +480,10 @@ int rad_ff_area(const rad_vec3 *a, int na, const rad_vec3 *b, int nb, rad_vec3 o
                 const double R0 = fmax(reach(a, na, origin), reach(b, nb, origin));
                 const rad_ff_area_part qa = {a, na, nua, nva, sa.twisted, sa.nrm, sa.nu};
                 const rad_ff_area_part qb = {b, nb, nub, nvb, sb.twisted, sb.nrm, sb.nu};
+                area_terms at = {{0}, 0};
                 const double ro = sum_roundoff(pts, w, nrm, ma, pts + capa, w + capa,
                                                nrm + capa, mb, &qa, &qb, origin, k, R0, D,
-                                               0.1 * rel_tol * fabs(s), &s);
+                                               0.1 * rel_tol * fabs(s), &at, &s);
                 *s_out = s;
                 *err_out = e + ro;
                 ok = 1;
@@ -538,18 +609,25 @@ static void close_pair(const patch *x, const patch *y, const area_side *sa,
     enum { K = ADAPT_K, K2 = ADAPT_K + 2 };
     rad_vec3 pa[K2 * K2], pb[K2 * K2], ma[K2 * K2], mb[K2 * K2];
     double wa[K2 * K2], wb[K2 * K2], sk[2];
+    const double R0 = fmax(reach(x->q, 4, v3(0, 0, 0)), reach(y->q, 4, v3(0, 0, 0)));
+    const double gap = patch_gap(x, y), nu[2] = {sa->nu, sb->nu};
+    area_terms at = {{0}, 0};
     for (int o = 0; o < 2; o++) {
         const int k = o ? K2 : K;
         int na2 = polygon_points(x->q, 4, v3(0, 0, 0), k, 1, 1, sa, pa, wa, ma);
         int nb2 = polygon_points(y->q, 4, v3(0, 0, 0), k, 1, 1, sb, pb, wb, mb);
-        sk[o] = area_sum(pa, wa, ma, na2, pb, wb, mb, nb2);
+        /* where R2 will not do (judged by the lower order's sum), the
+         * sums R1 needs come in the same pass */
+        sk[o] = o && prior_bound(wa, na2, wb, nb2, DBL_EPSILON, nu, R0, gap) >
+                         0.1 * rel * fabs(sk[0])
+                    ? area_sum_terms(pa, wa, ma, na2, pb, wb, mb, nb2, &at)
+                    : area_sum(pa, wa, ma, na2, pb, wb, mb, nb2);
     }
-    const double R0 = fmax(reach(x->q, 4, v3(0, 0, 0)), reach(y->q, 4, v3(0, 0, 0)));
     const rad_ff_area_part qa = {x->q, 4, 1, 1, sa->twisted, sa->nrm, sa->nu};
     const rad_ff_area_part qb = {y->q, 4, 1, 1, sb->twisted, sb->nrm, sb->nu};
     *e += fabs(sk[1] - sk[0]);
     *ro += sum_roundoff(pa, wa, ma, K2 * K2, pb, wb, mb, K2 * K2, &qa, &qb, v3(0, 0, 0), K2, R0,
-                        patch_gap(x, y), 0.1 * rel * fabs(sk[1]), &sk[1]);
+                        gap, 0.1 * rel * fabs(sk[1]), &at, &sk[1]);
     *s += sk[1];
 }
 
