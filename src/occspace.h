@@ -51,6 +51,7 @@
 #define OCC_NOISE_SHARE 0.125
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
+#define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
 #define OCC_LEAVES_DEFAULT 1024
 #define OCC_LEAVES_REFERENCE 8192
 /* ... and the most evaluations of hidden(x) it may spend on a pair
