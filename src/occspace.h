@@ -52,6 +52,7 @@
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
 #define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
+#define OCC_TOUCH_MAX 8   /* blocker vertices on the outer element kept (touch_points) */
 #define OCC_LEAVES_DEFAULT 1024
 #define OCC_LEAVES_REFERENCE 8192
 /* ... and the most evaluations of hidden(x) it may spend on a pair
@@ -275,6 +276,9 @@ typedef struct pair_ctx {
                                    product (collapsed on a triangle) */
     double arc_tol;             /* the widest lens a chord of occeee.c may
                                    leave, a part of the chord (OCC_ARC_TOL_*) */
+    rad_vec3 touch[OCC_TOUCH_MAX]; /* blocker vertices on the outer element
+                                      (occhidden.c, touch_points) */
+    int ntouch;
 } pair_ctx;
 
 
