@@ -292,6 +292,17 @@ typedef struct area_terms {
     int known;
 } area_terms;
 
+/* One term's share of the six sums: w = |w_k w_l| / r^4 */
+static void add_terms(double t[6], double w, double r, double ak, double al)
+{
+    t[0] += w * r * al;
+    t[1] += w * al;
+    t[2] += w * r * ak;
+    t[3] += w * ak;
+    t[4] += w * ak * al / r;
+    t[5] += w * ak * al;
+}
+
 static void terms_of(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
                      const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
                      area_terms *at)
@@ -303,12 +314,7 @@ static void terms_of(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, i
             const double r2 = v3_dot(d, d), r = sqrt(r2);
             const double w = fabs(wa[k] * wb[l]) / (r2 * r2);
             const double ak = fabs(v3_dot(na[k], d)), al = fabs(v3_dot(nb[l], d));
-            t[0] += w * r * al;
-            t[1] += w * al;
-            t[2] += w * r * ak;
-            t[3] += w * ak;
-            t[4] += w * ak * al / r;
-            t[5] += w * ak * al;
+            add_terms(t, w, r, ak, al);
         }
     for (int k = 0; k < 6; k++)
         at->t[k] = t[k];
@@ -331,12 +337,7 @@ static double area_sum_terms(const rad_vec3 *pa, const double *wa, const rad_vec
             inner += wb[l] * (dk * -dl) / (r2 * r2);
             const double w = fabs(wa[k] * wb[l]) / (r2 * r2);
             const double ak = fabs(dk), al = fabs(dl);
-            t[0] += w * r * al;
-            t[1] += w * al;
-            t[2] += w * r * ak;
-            t[3] += w * ak;
-            t[4] += w * ak * al / r;
-            t[5] += w * ak * al;
+            add_terms(t, w, r, ak, al);
         }
         s += wa[k] * inner;
     }
