@@ -285,8 +285,8 @@ static double area_sum(const rad_vec3 *pa, const double *wa, const rad_vec3 *na,
  *     t[2] = sum w r a_k / r^4,  t[3] = sum w a_k / r^4,
  *     t[4] = sum w a_k a_l / r^5,  t[5] = sum w a_k a_l / r^4,
  * so that R1 for any epsilon and normals' doubt is a combination of six
- * numbers (r1_of): one pass over the terms serves the bound in double and
- * the bound of the sum again in long double. */
+ * numbers (area_roundoff): one pass over the terms serves the bound in
+ * double and the bound of the sum again in long double. */
 typedef struct area_terms {
     double t[6];
     int known;

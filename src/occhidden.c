@@ -62,9 +62,10 @@ static int holds(const rad_vec3 *p, int n, rad_vec3 nrm, rad_vec3 x, double tol)
     return 1;
 }
 
-/* How much a cell's estimate is to be trusted: OCC_TOUCH_ORDERS times
+/* How much a cell's estimate is to be trusted: the rule's order times
  * less when it holds a point where a blocker touches the outer element
- * (touch_points).  There hidden(x) depends on the direction from that
+ * (touch_points; "holds" within 1e-9 of the pair's frame, whose
+ * coordinates are of order 1).  There hidden(x) depends on the direction from that
  * point: the shadow edge the blocker's edges cast through it turns with
  * it, as a step turns around its corner.  So a product rule on the cell
  * converges algebraically, not geometrically: with an error C n^-p at n
