@@ -303,26 +303,8 @@ static void add_terms(double t[6], double w, double r, double ak, double al)
     t[5] += w * ak * al;
 }
 
-static void terms_of(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
-                     const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
-                     area_terms *at)
-{
-    double t[6] = {0, 0, 0, 0, 0, 0};
-    for (int k = 0; k < ma; k++)
-        for (int l = 0; l < mb; l++) {
-            const rad_vec3 d = v3_sub(pb[l], pa[k]);
-            const double r2 = v3_dot(d, d), r = sqrt(r2);
-            const double w = fabs(wa[k] * wb[l]) / (r2 * r2);
-            const double ak = fabs(v3_dot(na[k], d)), al = fabs(v3_dot(nb[l], d));
-            add_terms(t, w, r, ak, al);
-        }
-    for (int k = 0; k < 6; k++)
-        at->t[k] = t[k];
-    at->known = 1;
-}
-
-/* area_sum and terms_of in one pass over the terms (the sum bit for bit
- * area_sum's), for a sum whose bound will need R1. */
+/* area_sum and the six sums above in one pass over the terms (the sum
+ * bit for bit area_sum's); R1 alone discards the sum. */
 static double area_sum_terms(const rad_vec3 *pa, const double *wa, const rad_vec3 *na, int ma,
                              const rad_vec3 *pb, const double *wb, const rad_vec3 *nb, int mb,
                              area_terms *at)
@@ -378,7 +360,7 @@ static double area_roundoff(const rad_vec3 *pa, const double *wa, const rad_vec3
     if (pri <= budget)
         return pri;
     if (!at->known) /* R1 */
-        terms_of(pa, wa, na, ma, pb, wb, nb, mb, at);
+        (void)area_sum_terms(pa, wa, na, ma, pb, wb, nb, mb, at);
     const double ca = nu[0] + 6 * eps, cb = nu[1] + 6 * eps, c2 = 32 * eps * R0;
     const double c3 = eps * (20 + ma + mb) + 2 * (nu[0] + nu[1]);
     const double *t = at->t;
