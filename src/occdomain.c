@@ -168,15 +168,17 @@ static int all_region_planes(occ_space *sp, const pair_ctx *c, int kind)
 }
 
 /* Cut every piece of sp->da by blocker e's planes: outside parts to
- * sp->db, inside parts to `inside`; then swap. */
-static int cut_set(occ_space *sp, const pair_ctx *c, int e, polyset *inside)
+ * sp->db, inside parts to `inside`; then swap.  `slivers` as for
+ * occ_cut_piece: no cut loses area (occ_support_domain). */
+static int cut_set(occ_space *sp, const pair_ctx *c, int e, int slivers, polyset *inside)
 {
     int g = sp->sfirst[e], ng = sp->sfirst[e + 1] - g;
     occ_ps_clear(&sp->db);
     for (int k = 0; k < sp->da.np; k++) {
         int n = occ_load_rem(sp, &sp->da, k);
         int r = n < 0 ? -1
-                      : occ_cut_piece(sp, sp->sn + g, sp->sa + g, ng, c->snap, c->sliver, &sp->db, &n);
+                      : occ_cut_piece(sp, sp->sn + g, sp->sa + g, ng, c->snap, c->sliver, slivers,
+                                      &sp->db, &n);
         if (r < 0 || (r > 0 && occ_ps_push(inside, sp->rem, n)))
             return -1;
     }
@@ -226,9 +228,9 @@ static int dom_spheres(occ_space *sp)
 }
 
 /* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses (their spheres in sp->pcen / prad, kept up to date; sides
- * of no more than `sliver` area dropped; a piece whose two sides would
- * overlap is left whole, below), but
+ * nrm crosses (their spheres in sp->pcen / prad, kept up to date; a
+ * piece one of whose sides would have no more than `sliver` area, or
+ * whose two sides would overlap, below, is left whole), but
  * with a wedge w (not NULL) and c->events OCC_SPLIT_WEDGES only where the
  * plane's chord of the piece meets w.  A
  * piece whose bounding sphere the plane misses is copied without looking
@@ -278,25 +280,23 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
         const int m1 = poly_clip_side(p, sp->d, n, 1.0, sp->tmp2, n + 1);
         const double a0 = m0 >= 3 ? poly_area(sp->tmp, m0) : 0;
         const double a1 = m1 >= 3 ? poly_area(sp->tmp2, m1) : 0;
-        if (a0 + a1 > (1 + 1e-9) * poly_area(p, n)) {
-            /* the sides overlap: the plane is all but the piece's own
-             * (see above), and the piece stays whole */
+        if (!(a0 > sliver) || !(a1 > sliver) || a0 + a1 > (1 + 1e-9) * poly_area(p, n)) {
+            /* a sliver is not cut off (it would be lost, and what is
+             * hidden there with it: occspace.c, occ_cut_piece), and where
+             * the sides overlap the plane is all but the piece's own (see
+             * above): the piece stays whole */
             if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
         }
         rad_vec3 cen;
         double rad;
-        if (a0 > sliver) {
-            sphere(sp->tmp, m0, &cen, &rad);
-            if (push_db(sp, sp->tmp, m0, cen, rad))
-                return -1;
-        }
-        if (a1 > sliver) {
-            sphere(sp->tmp2, m1, &cen, &rad);
-            if (push_db(sp, sp->tmp2, m1, cen, rad))
-                return -1;
-        }
+        sphere(sp->tmp, m0, &cen, &rad);
+        if (push_db(sp, sp->tmp, m0, cen, rad))
+            return -1;
+        sphere(sp->tmp2, m1, &cen, &rad);
+        if (push_db(sp, sp->tmp2, m1, cen, rad))
+            return -1;
     }
     polyset t = sp->dom;
     sp->dom = sp->db;
@@ -313,8 +313,8 @@ static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
 
 /* Split every piece of sp->dom that the plane through a with unit
  * normal nrm crosses, after occeee.c has cut pieces its own way:
- * split_dom with their spheres measured again, dropping only sides
- * without area, as occeee.c's chords do.  0 or -1. */
+ * split_dom with their spheres measured again, leaving whole only the
+ * pieces with a side without area, as occeee.c's chords do.  0 or -1. */
 int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
 {
     return dom_spheres(sp) ? -1 : split_dom(sp, c, nrm, a, NULL, 0);
@@ -459,7 +459,10 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
  * The union is taken as a partition of o, blocker by blocker: each piece
  * not yet in a penumbra is cut by W_b's planes, its part inside goes to
  * the domain and its parts outside on to the next blocker.  Every cut
- * hands on all of its piece but slivers, whatever the snap decides.
+ * hands on all of its piece, whatever the snap decides: a sliver is not
+ * cut off a penumbra's piece (occ_cut_piece, OCC_SLIVERS_MERGE; the
+ * integrand there is hidden(x) all the same), nor dropped from an umbra's
+ * cut (OCC_SLIVERS_KEEP: a piece there is taken as fully hidden).
  * (It used to take o's part inside W_b, then cut out the earlier W's
  * from that part.  A plane of W_e that a small piece has within the snap
  * counts the piece as inside, while the whole of o is cut by it; so a
@@ -479,7 +482,7 @@ int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int 
     if (occ_ps_push(&sp->da, o, no))
         return -1;
     for (int b = 0; b < c->nb && sp->da.np > 0; b++)
-        if (cut_set(sp, c, b, &sp->dom))
+        if (cut_set(sp, c, b, OCC_SLIVERS_MERGE, &sp->dom))
             return -1;
     if (sp->dom.np == 0)
         return 0;
@@ -489,7 +492,7 @@ int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int 
     sp->da = sp->dom;
     sp->dom = t;
     for (int b = 0; b < c->nb && sp->da.np > 0; b++)
-        if (!sp->empty[b] && cut_set(sp, c, b, &sp->umb))
+        if (!sp->empty[b] && cut_set(sp, c, b, OCC_SLIVERS_KEEP, &sp->umb))
             return -1;
     t = sp->dom;
     sp->dom = sp->da;

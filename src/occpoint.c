@@ -276,7 +276,7 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
             int n = occ_load_rem(sp, &sp->cur, k);
             int r = n < 0 ? -1
                           : occ_cut_piece(sp, sp->cone, sp->conep, ncone, c->snap, c->sliver,
-                                      &sp->next, &n);
+                                          OCC_SLIVERS_DROP, &sp->next, &n);
             if (r < 0)
                 return -1;
             if (r > 0) {

@@ -33,7 +33,9 @@
 #define OCC_SNAP 1e-11
 #define OCC_ROUND 16
 #define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
-                               are dropped (round-off slivers of the cuts) */
+                               are slivers: of the inner element seen from a
+                               point, dropped; of the outer element's domain,
+                               not cut off (occspace.c, occ_cut_piece) */
 /* Per-pair error targets, relative to the occluded A_i F_ij down to
  * OCC_FLOOR of the unoccluded one (occhidden.c, integrate), half of each
  * mode's promise (the kernel's error of the unoccluded S adds to it); the
@@ -306,8 +308,9 @@ void occ_ps_pop(polyset *s);
 void occ_space_free(occ_space *sp);
 int occ_clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_vec3 nrm,
                   rad_vec3 a, double tol);
+enum { OCC_SLIVERS_DROP, OCC_SLIVERS_KEEP, OCC_SLIVERS_MERGE }; /* occ_cut_piece */
 int occ_cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int np, double snap,
-                  double sliver, polyset *out, int *n);
+                  double sliver, int slivers, polyset *out, int *n);
 int occ_load_rem(occ_space *sp, const polyset *s, int k);
 
 /* occshaft.c: the pair's blockers */
