@@ -168,16 +168,19 @@ int occ_clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_vec3 
  *                      area is dropped);
  *   OCC_SLIVERS_MERGE  an outside sliver stays with the inside part (the
  *                      plane does not cut), an inside one is kept.
- * Dropping loses the sliver's area, and whatever is hidden there: right
- * for a piece of the inner element seen from one point (occpoint.c), whose
- * factor a sliver barely changes, wrong for the outer element's domain
- * (occdomain.c), where a cut repeated along many planes adds up.  Seen in
- * a fuzzed room with a box standing 1.5e-4 of the room's size in front of
- * a wall (tests/geomfuzz.py seed 62, scene 1231; tests/closure.sh): the
- * planes of the box's near face cut the domain on a wall element into
- * 95,000 pieces, the slivers dropped lost 6.8e-9 of the element's area
- * where four fifths of the floor was hidden, and the element's reference
- * row of F summed to 1 + 2.3e-9 under estimates of 5e-10. */
+ * Dropping loses the sliver's area, and whatever is hidden there.  For a
+ * piece of the inner element seen from one point (occpoint.c) that is
+ * about 1e-10 of F(x -> A_t) per piece dropped: far below the promise,
+ * but for a pair hidden to OCC_FLOOR up to 1e-6 of its visible value (no
+ * such case seen; noted in issue 20).  For the outer element's domain
+ * (occdomain.c) it is wrong: a cut repeated along many planes adds up.
+ * Seen in a fuzzed room with a box standing 1.5e-4 of the room's size in
+ * front of a wall (tests/geomfuzz.py seed 62, scene 1231;
+ * tests/closure.sh): the planes of the box's near face cut the domain on
+ * a wall element into 95,000 pieces, the slivers dropped lost 6.8e-9 of
+ * the element's area where four fifths of the floor was hidden, and the
+ * element's reference row of F summed to 1 + 2.3e-9 under estimates of
+ * 5e-10. */
 int occ_cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int np, double snap,
                   double sliver, int slivers, polyset *out, int *n)
 {
