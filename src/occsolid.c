@@ -469,24 +469,20 @@ static int removable(const rad_occ *o, occ_space *sp, int nb, int side, rad_vec3
         if (seen)
             continue; /* the solid was judged with blocker l */
         int r = solid_applies(o, sp, g, side, origin);
-        const double round = r > 0 ? rule_round(o, g, p, n, origin) : 0;
-        if (r < 0)
+        if (r < 0 || (r > 0 && occ_grow_d(&sp->d, &sp->capd, n)))
             return -1;
+        const double rtol = r > 0 ? rule_round(o, g, p, n, origin) : 0;
         for (int l = k; r && l < nb; l++) {
-            int c = sp->bid[l], out = 1;
+            const int c = sp->bid[l];
             if (o->solid[c] != g)
                 continue; /* another solid's face: its own pass decides */
             const rad_vec3 *b = sp->blk.v + sp->blk.first[l];
-            double lo = HUGE_VAL, hi = -HUGE_VAL;
-            for (int v = 0; v < n; v++) {
-                const double d = v3_dot(o->snormal[c], v3_sub(p[v], b[0]));
-                lo = fmin(lo, d);
-                hi = fmax(hi, d);
-            }
+            double lo, hi;
+            poly_distances(p, n, o->snormal[c], b[0], 0, sp->d, &lo, &hi);
             /* behind the plane, or on it within the snap as a whole (a
              * face pressed flat against O, which the kernel and the
              * shaft take as touching O too: see the header) */
-            out = hi <= round + o->stwist[c] || (hi <= sp->snap && lo >= -sp->snap);
+            const int out = hi <= rtol + o->stwist[c] || (hi <= sp->snap && lo >= -sp->snap);
             flag[l] = (unsigned char)out;
             count += out;
         }
