@@ -91,8 +91,8 @@ rows "$work/two.scene" reference 1x1 1e-9 "two blocks on the floor"
 # wall x = 0, the floor strip 0.8 < x < 1 and the two blocks as solids
 # (tests/closure-two.spec), at its tolerance 1e-8:
 # `python3 tests/pairref.py tests/closure-two.spec 1e-8` prints
-# 0.0072460216848951849 and its estimate 7.25e-11 (after ten minutes, so
-# the value is stated here).
+# 0.0072460216848951849 and its estimate 7.25e-11, then the unoccluded
+# factor (after ten minutes, so the value is stated here).
 want=0.0072460216848951849
 "$RADIOSITY" formfactor -q --threads 1 --accuracy default "$work/two.scene" -o "$work/two.tsv" \
   2> "$work/two.err"
