@@ -87,7 +87,9 @@ class Pair:
     def __init__(s,O,T,solids):
         s.O=O; s.T=T; s.solids=solids
         s.nO=unit(newell(O)); s.nT=unit(newell(T))
-        s.t0=T[0]; s.u=unit(sub(T[1],T[0])); s.w=cross(s.nT,s.u)
+        s.t0=T[0]
+        e=sub(T[1],T[0]); s.u=unit(sub(e,mul(s.nT,dot(s.nT,e))))  # in T's plane, even
+        s.w=cross(s.nT,s.u)          # when T is twisted: (u, w, nT) orthonormal
         s.T2=hull2([s.to2(p) for p in T])
     def to2(s,p): d=sub(p,s.t0); return (dot(d,s.u),dot(d,s.w))
     def to3(s,q): return add(s.t0,add(mul(s.u,q[0]),mul(s.w,q[1])))
