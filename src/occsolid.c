@@ -43,32 +43,29 @@
  * Tolerances.  The open planes, condition (a), are judged within the
  * pair's snap (occspace.h), like every touch in the occlusion code: an
  * element on P's open bottom plane (the floor round a block) passes.
- * Condition (b) is judged twice:
- *   - O may have no area inside P grown by the snap beyond a band of
- *     SOLID_BAND snaps along its perimeter.  An element under the
- *     footprint fails, and so does a wall with a face pressed against it
- *     within the snap, which the shaft then takes as touching the wall,
- *     not as a blocker (tests/occfar.sh, room d).
- *   - O may have no area, beyond the round-off of its own area, behind
- *     the planes of the solid's members among the pair's blockers and of
- *     its open planes, each moved out by the snap (and a member by its
- *     twist).  The argument above needs the member the segment went in by
- *     to block it, and the kernel takes a blocker as hiding nothing from
- *     a point within the snap of its plane (occpoint.c, cone_planes).  So
- *     in a band of O along a member's plane, which the floor round a
- *     block has along the block's foot, the faces the rule leaves out are
- *     the ones that hide.  The band is a snap or so wide, a share of
- *     the pair's unoccluded factor about the snap over O's size (1e-10
- *     on the Cornell box), which only a nearly hidden pair feels.  In
- *     scene 15 of tests/geomfuzz.py seed 65 a tile beside a box, hidden
- *     to 2e-16 of its unoccluded factor (0.0302) by tests/pairref.py,
- *     read 1.7e-12 in reference mode under an estimate of 1.5e-15, 6e-11
- *     of that factor and far above the promise; in scene 871 of seed
- *     62 a tile touching a box's side read 2.6e-12 (default) and 2.5e-12
- *     (reference) where the box hides it (tests/occsolid.sh).  Such an O
- *     leaves the rule to the pair's other element, whose own test decides.
- *     The test is made even for an O outside P grown by the snap: it cuts
- *     by fewer planes than the first, which does not imply it.
+ * Condition (b) asks that O have no area, beyond the round-off of its own
+ * area, behind the planes of the solid's members among the pair's
+ * blockers and of its open planes, each moved out by the snap (and a
+ * member by its twist): the region is P grown by the snap, or more, as
+ * it is cut by fewer planes.  An element under the footprint fails, and
+ * so does a wall with a face pressed against it within the snap, which
+ * the shaft then takes as touching the wall, not as a blocker
+ * (tests/occfar.sh, room d).  The snap is there because the argument
+ * above needs the member the segment went in by to block it, and the
+ * kernel takes a blocker as hiding nothing from a point within the snap
+ * of its plane (occpoint.c, cone_planes).  So in a band of O along a
+ * member's plane, which the floor round a block has along the block's
+ * foot, the faces the rule leaves out are the ones that hide.  The band
+ * is a snap or so wide, a share of the pair's unoccluded factor about the
+ * snap over O's size (1e-10 on the Cornell box), which only a nearly
+ * hidden pair feels.  In scene 15 of tests/geomfuzz.py seed 65 a tile
+ * beside a box, hidden to 2e-16 of its unoccluded factor (0.0302) by
+ * tests/pairref.py, read 1.7e-12 in reference mode under an estimate of
+ * 1.5e-15, 6e-11 of that factor and far above the promise; in scene 871
+ * of seed 62 a tile touching a box's side read 2.6e-12 (default) and
+ * 2.5e-12 (reference) where the box hides it (tests/occsolid.sh): (b)
+ * then allowed O a band of four snaps inside P.  Such an O now
+ * leaves the rule to the pair's other element, whose own test decides.
  * Whether O is behind a member's plane, the rule's B, is judged within
  * the round-off of the distances and the member's twist (rule_round),
  * unless O lies in that plane within the snap as a whole (a face flat
@@ -96,8 +93,6 @@
 
 #define SOLID_MAX_V 64  /* vertices of a group searched for its face planes */
 #define FACET_CAP (SOLID_MAX_V + 8)
-#define SOLID_BAND 4    /* (b): area inside P up to this many snaps times
-                           the perimeter of O counts as touching */
 #define SOLID_ROUND 64  /* ulps of a distance, or of O's area, that are its
                            round-off (rule_round, solid_applies) */
 
@@ -441,25 +436,24 @@ static int cut_behind(occ_space *sp, int *m, rad_vec3 nrm, rad_vec3 a)
 }
 
 /* The area of element O (p, n vertices, in the pair's frame at `origin`)
- * behind planes moved out by `grow`: the face planes of solid g when
- * `members` is 0; else g's open planes and the planes of g's members
- * among the pair's nb blockers (each also by its twist).  0 when nothing
- * is behind them all, HUGE_VAL when a clip does not fit (taken as
- * inside), -1 when out of memory. */
+ * behind the open planes of solid g and the planes of g's members among
+ * the pair's nb blockers, each moved out by `grow` (a member also by its
+ * twist).  0 when nothing is behind them all, HUGE_VAL when a clip does
+ * not fit (taken as inside), -1 when out of memory. */
 static double area_behind(const rad_occ *o, occ_space *sp, int nb, int g, const rad_vec3 *p, int n,
-                          rad_vec3 origin, double grow, int members)
+                          rad_vec3 origin, double grow)
 {
-    const int cap = n + o->hfirst[g + 1] - o->hfirst[g] + (members ? nb : 0);
+    const int cap = n + o->hfirst[g + 1] - o->hfirst[g] + nb;
     if (occ_grow_v3(&sp->pj0, &sp->cappj0, cap) || occ_grow_v3(&sp->pj1, &sp->cappj1, cap) ||
         occ_grow_d(&sp->d, &sp->capd, cap))
         return -1;
     memcpy(sp->pj0, p, sizeof *p * (size_t)n);
     int m = n, r = 0;
     for (int h = o->hfirst[g]; h < o->hfirst[g + 1] && !r; h++)
-        if (!members || o->hopen[h])
+        if (o->hopen[h])
             r = cut_behind(sp, &m, o->hnrm[h],
                            v3_add(v3_sub(o->hpt[h], origin), v3_scale(o->hnrm[h], grow)));
-    for (int l = 0; members && l < nb && !r; l++) {
+    for (int l = 0; l < nb && !r; l++) {
         const int c = sp->bid[l];
         if (o->solid[c] == g)
             r = cut_behind(sp, &m, o->snormal[c],
@@ -471,9 +465,9 @@ static double area_behind(const rad_occ *o, occ_space *sp, int nb, int g, const 
 
 /* Conditions (a) and (b) of the header for solid g and element O (the
  * pair's polygon `side` of sp->elem, in the pair's frame at `origin`),
- * with the pair's nb blockers: (a) and the band of (b) within the pair's
- * snap, the members' side of (b) to the round-off of O's area (header,
- * Tolerances).  1 when they hold, 0 when not, -1 when out of memory. */
+ * with the pair's nb blockers: (a) within the pair's snap, (b) to the
+ * round-off of O's area (header, Tolerances).  1 when they hold, 0 when
+ * not, -1 when out of memory. */
 static int solid_applies(const rad_occ *o, occ_space *sp, int nb, int g, int side,
                          rad_vec3 origin)
 {
@@ -488,15 +482,7 @@ static int solid_applies(const rad_occ *o, occ_space *sp, int nb, int g, int sid
             if (v3_dot(o->hnrm[h], v3_sub(p[k], a)) > tol)
                 return 0; /* (a) fails */
     }
-    double perim = 0;
-    for (int k = 0; k < n; k++)
-        perim += v3_norm(v3_sub(p[(k + 1) % n], p[k]));
-    const double band = area_behind(o, sp, nb, g, p, n, origin, tol, 0);
-    if (band < 0)
-        return -1;
-    if (band > SOLID_BAND * tol * perim)
-        return 0; /* (b) fails: an area inside P grown by the snap */
-    const double inside = area_behind(o, sp, nb, g, p, n, origin, tol, 1);
+    const double inside = area_behind(o, sp, nb, g, p, n, origin, tol);
     if (inside < 0)
         return -1;
     return inside <= SOLID_ROUND * DBL_EPSILON * poly_area(p, n);
