@@ -381,6 +381,18 @@ static double apparent_size(const rad_occ *o, const occ_space *sp, int nb, const
     return e->size / fmax(d, 1e-300);
 }
 
+/* Is the inner element pt (vertices ct in the pair's frame, nt of them)
+ * planar to the round-off of those coordinates: its twist (formfactor.h)
+ * within 64 eps of their largest, as ffarea.c (side_of) judges a twisted
+ * quadrilateral? */
+static int inner_flat(const rad_ff_poly *pt, const rad_vec3 *ct, int nt)
+{
+    double big = 0;
+    for (int k = 0; k < nt; k++)
+        big = fmax(big, v3_maxabs(ct[k]));
+    return pt->twist <= 64 * DBL_EPSILON * big;
+}
+
 /* What integrating in one orientation found. */
 typedef struct orient_result {
     double value, error;        /* integral of hidden(x) over the outer element,
@@ -575,6 +587,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.tn = pt->normal;
     c.t = ct;
     c.nt = nt;
+    c.flat = inner_flat(pt, ct, nt);
     c.nb = kept;
     c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);

@@ -266,6 +266,10 @@ typedef struct pair_ctx {
     rad_vec3 tn;                /* inner normal */
     const rad_vec3 *t;          /* inner element */
     int nt;
+    int flat;                   /* the inner element is planar to round-off
+                                   (occhidden.c, orient_integral): shadows may
+                                   be taken on its plane (occpoint.c,
+                                   hidden_last) */
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
     double snap, sliver;        /* distance and area tolerances */
     int events;                 /* split the domain along the event planes:
