@@ -111,7 +111,7 @@ class Pair:
         if not s.twisted: return add(s.t0,add(mul(s.u,q[0]),mul(s.w,q[1])))
         Q=s.Q2; a,b=0.5,0.5
         for _ in range(8):              # Newton on bil(Q2, a, b) = q
-            p=bil2(Q,a,b)
+            p=bil(Q,a,b)
             pa=(Q[1][0]-Q[0][0])*(1-b)+(Q[2][0]-Q[3][0])*b, (Q[1][1]-Q[0][1])*(1-b)+(Q[2][1]-Q[3][1])*b
             pb=(Q[3][0]-Q[0][0])*(1-a)+(Q[2][0]-Q[1][0])*a, (Q[3][1]-Q[0][1])*(1-a)+(Q[2][1]-Q[1][1])*a
             det=pa[0]*pb[1]-pa[1]*pb[0]; rx,ry=q[0]-p[0],q[1]-p[1]
@@ -142,8 +142,7 @@ class Pair:
                 a,b=lev(V[i]),lev(V[j])
                 for cut in (near,1.0):
                     if (a<cut)!=(b<cut):
-                        t=(cut-a)/(b-a); p=add(V[i],mul(sub(V[j],V[i]),t))
-                        if inside(lev(p)) or abs(lev(p)-cut)<=1e-12: pts.append(p)
+                        t=(cut-a)/(b-a); pts.append(add(V[i],mul(sub(V[j],V[i]),t)))
         if not pts: return None
         proj=[]
         for v in pts:
@@ -177,8 +176,10 @@ def gl(n):
         xs.append(t); ws.append(2/((1-t*t)*dp*dp))
     return xs,ws
 G={n:gl(n) for n in (6,10)}
-def bil2(P,u,v): return tuple(P[0][k]*(1-u)*(1-v)+P[1][k]*u*(1-v)+P[2][k]*u*v+P[3][k]*(1-u)*v for k in (0,1))
-def bil(P,u,v): return add(add(mul(P[0],(1-u)*(1-v)),mul(P[1],u*(1-v))),add(mul(P[2],u*v),mul(P[3],(1-u)*v)))
+def bil(P,u,v):
+    """The bilinear map of quad P (points of 2 or 3 coordinates) at (u, v)."""
+    w=((1-u)*(1-v),u*(1-v),u*v,(1-u)*v)
+    return tuple((a*w[0]+b*w[1])+(c*w[2]+d*w[3]) for a,b,c,d in zip(*P))
 def rule(pr,P,n):
     """n x n Gauss product on the bilinear cell P (with its Jacobian)."""
     xs,ws=G[n]; s=0.0
