@@ -396,6 +396,11 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
         old_in[o] = a->obj_present[o];
         rad_anim_object_box(a, o, &lo[o], &hi[o]);
     }
+    rad_scene old_scene; /* classic mode's routes (animpairs.c) */
+    const int keep_old = a->opt.ff.accuracy == RAD_ACCURACY_CLASSIC;
+    memset(&old_scene, 0, sizeof old_scene);
+    if (st == RAD_OK && keep_old)
+        st = rad_scene_present_copy(&a->scene, a->obj_present, &old_scene, err);
     if (st == RAD_OK) { /* step 2 */
         rad_changes_apply(&a->scene, ch, next, dirty);
         for (int o = 0; o < no; o++) {
@@ -420,8 +425,11 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     rep->frame = next;
     if (st == RAD_OK) {
         element_state(a, changed);
-        st = rad_anim_update_pairs(a, dirty, old_in, lo, hi, rep, err); /* 4 */
+        st = rad_anim_update_pairs(a, dirty, old_in, lo, hi, keep_old ? &old_scene : NULL, rep,
+                                   err); /* 4 */
     }
+    if (keep_old)
+        rad_scene_free(&old_scene);
     double np = 0;
     for (int e = 0; e < a->n; e++)
         np += a->present[e];

@@ -71,10 +71,13 @@ struct rad_anim {
 
 /* animpairs.c: recompute, in F, every pair that moving the objects flagged
  * in `dirty` (their boxes before, old_lo/old_hi with old_in[o], and now)
- * can alter, set up a->rd from T = B - dB, and count pairs into rep. */
+ * can alter, set up a->rd from T = B - dB, and count pairs into rep.
+ * old_scene: the present surfaces before the change (rad_scene_present_
+ * copy), needed in classic mode only (NULL elsewhere). */
 rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const unsigned char *old_in, const rad_vec3 *old_lo,
-                                 const rad_vec3 *old_hi, rad_anim_report *rep, rad_error *err);
+                                 const rad_vec3 *old_hi, const rad_scene *old_scene,
+                                 rad_anim_report *rep, rad_error *err);
 /* The box of object o's surfaces in a->scene. */
 void rad_anim_object_box(const rad_anim *a, int o, rad_vec3 *lo, rad_vec3 *hi);
 void rad_redist_free(rad_redist *rd);

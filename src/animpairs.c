@@ -19,6 +19,18 @@
  * recomputed; the frames still equal fresh solves within 5e-12.
  * A change of material alters no form factor.
  *
+ * Classic mode's routes.  The pairs the test keeps out still have their
+ * F as a fresh fill gives it in default and reference modes: where the
+ * fill counts a dirty object among a pair's possible blockers and it
+ * hides nothing, the pair's value moves within its estimate (the last
+ * bits above).  Classic mode has no estimate: a possible blocker that
+ * hides nothing still cuts its rule's cells, and on the Cornell moving
+ * box moved one entry by 0.2% of itself and a frame's B by up to 1e-6
+ * of a fresh solve's.  So in classic mode a pair is recomputed too when
+ * a surface of a dirty object is on the candidate list of its two
+ * surfaces (rad_occ_candidate, occshaft.c) before or after the change:
+ * outside those lists the fill's route for the pair is the same.
+ *
  * How: the pairs go to rad_ff_pairs (ffpairs.h), which computes each as
  * the full fill would on the mesh of the present surfaces of this frame
  * (rad_scene_present_copy): so F stays, entry for entry, the F of a fresh
@@ -39,6 +51,8 @@
 
 #include "animint.h"
 #include "ffpairs.h"
+#include "mesh.h"
+#include "occlusion.h"
 #include "status.h"
 #include "vec.h"
 
@@ -176,9 +190,84 @@ static int box_may_block(const rad_mesh *m, int i, int j, rad_vec3 lo, rad_vec3 
     return 1;
 }
 
+/* Classic mode's routes (the header) in one scene of present surfaces:
+ * flag[sa * ns + sb] when a dirty object's surface is a candidate blocker
+ * of surfaces sa and sb; smap takes a surface of a->scene to its index
+ * there, or -1. */
+typedef struct route_map {
+    unsigned char *flag;
+    int *smap;
+    int ns;
+} route_map;
+
+static void route_map_free(route_map *rm)
+{
+    free(rm->flag);
+    free(rm->smap);
+    memset(rm, 0, sizeof *rm);
+}
+
+/* The candidate lists as rad_ff_pairs (ffblock.c) builds them for the
+ * mesh of ps, the present surfaces of a->scene under presence `in`. */
+static rad_status route_map_build(const rad_anim *a, const rad_scene *ps,
+                                  const unsigned char *dirty, const unsigned char *in,
+                                  route_map *rm, rad_error *err)
+{
+    rad_mesh m, unit;
+    rad_frame fr;
+    rad_occ *occ = NULL;
+    const int ns = ps->nsurfaces, nf = a->scene.nsurfaces;
+    memset(&m, 0, sizeof m);
+    memset(&unit, 0, sizeof unit);
+    rm->ns = ns;
+    rm->flag = calloc((size_t)ns * (size_t)ns + 1, 1);
+    rm->smap = malloc(sizeof *rm->smap * (size_t)(nf + 1));
+    rad_status st = rm->flag && rm->smap ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (int s = 0, k = 0; st == RAD_OK && s < nf; s++) {
+        const int o = a->scene.surfaces[s].object;
+        rm->smap[s] = o < 0 || in[o] ? k++ : -1;
+    }
+    if (st == RAD_OK)
+        st = rad_mesh_build(&m, ps, err);
+    if (st == RAD_OK)
+        st = rad_mesh_normalized(&m, &unit, &fr, err);
+    if (st == RAD_OK)
+        st = rad_occ_create(&occ, &unit,
+                            rad_occ_scene_snap(unit.vertices, unit.nvertices,
+                                               rad_frame_offset(&fr)),
+                            RAD_OCC_AUTO, a->opt.ff.accuracy, NULL, err);
+    unsigned char *mask = st == RAD_OK && occ ? malloc((size_t)ns + 1) : NULL;
+    if (st == RAD_OK && occ && !mask)
+        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (int c = 0; mask && c < ns; c++) {
+        const int o = ps->surfaces[c].object;
+        mask[c] = o >= 0 && dirty[o];
+    }
+    for (int sa = 0; mask && sa < ns; sa++)
+        for (int sb = sa + 1; sb < ns; sb++)
+            if (rad_occ_candidate(occ, sa, sb, mask))
+                rm->flag[(size_t)sa * ns + sb] = rm->flag[(size_t)sb * ns + sa] = 1;
+    free(mask);
+    rad_occ_free(occ);
+    rad_mesh_free(&unit);
+    rad_mesh_free(&m);
+    return st;
+}
+
+/* Is a dirty object a candidate blocker of pair (i, j) in rm's scene? */
+static int route_may_change(const rad_anim *a, const route_map *rm, int i, int j)
+{
+    if (!rm->flag)
+        return 0;
+    const int si = rm->smap[a->mesh.elements[i].surface];
+    const int sj = rm->smap[a->mesh.elements[j].surface];
+    return si >= 0 && sj >= 0 && rm->flag[(size_t)si * rm->ns + sj];
+}
+
 /* Does the change alter pair (i, j)? (the file's header says why) */
 static int pair_affected(const rad_anim *a, const unsigned char *dirty, const box_list *bl,
-                         const rad_vec3 *lo, const rad_vec3 *hi, int i, int j)
+                         const route_map *rm, const rad_vec3 *lo, const rad_vec3 *hi, int i,
+                         int j)
 {
     const int oi = a->elem_object[i], oj = a->elem_object[j];
     if ((oi >= 0 && dirty[oi]) || (oj >= 0 && dirty[oj]))
@@ -191,7 +280,7 @@ static int pair_affected(const rad_anim *a, const unsigned char *dirty, const bo
         if (boxes_meet(l, h, bl->lo[k], bl->hi[k]) &&
             box_may_block(&a->mesh, i, j, bl->lo[k], bl->hi[k]))
             return 1;
-    return 0;
+    return route_may_change(a, &rm[0], i, j) || route_may_change(a, &rm[1], i, j);
 }
 
 /* The pairs to recompute, as growable lists pi < pj (full numbering). */
@@ -218,7 +307,7 @@ static int push_pair(pair_list *pl, int i, int j)
 }
 
 static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, const box_list *bl,
-                             pair_list *pl, rad_error *err)
+                             const route_map *rm, pair_list *pl, rad_error *err)
 {
     const rad_mesh *m = &a->mesh;
     rad_vec3 *lo = malloc(sizeof *lo * (size_t)(a->n + 1));
@@ -228,7 +317,7 @@ static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, cons
         element_boxes(m, lo, hi);
     for (int i = 0; st == RAD_OK && i < a->n; i++)
         for (int j = i + 1; j < a->n; j++)
-            if (pair_affected(a, dirty, bl, lo, hi, i, j) && push_pair(pl, i, j) != 0) {
+            if (pair_affected(a, dirty, bl, rm, lo, hi, i, j) && push_pair(pl, i, j) != 0) {
                 st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
                 break;
             }
@@ -475,10 +564,31 @@ static rad_status start_redist(rad_anim *a, const pair_list *pl, const double *f
     return st == RAD_OK ? rad_anim_redist_index(a, err) : st;
 }
 
+/* Classic mode's route maps (the header): rm[0] before the change, from
+ * old_scene and old_in, rm[1] after it. */
+static rad_status route_maps(const rad_anim *a, const unsigned char *dirty,
+                             const rad_scene *old_scene, const unsigned char *old_in,
+                             route_map rm[2], rad_error *err)
+{
+    if (a->opt.ff.accuracy != RAD_ACCURACY_CLASSIC || !old_scene)
+        return RAD_OK;
+    rad_scene ps;
+    rad_status st = route_map_build(a, old_scene, dirty, old_in, &rm[0], err);
+    if (st == RAD_OK && (st = rad_scene_present_copy(&a->scene, a->obj_present, &ps, err)) ==
+                            RAD_OK) {
+        st = route_map_build(a, &ps, dirty, a->obj_present, &rm[1], err);
+        rad_scene_free(&ps);
+    }
+    return st;
+}
+
 rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const unsigned char *old_in, const rad_vec3 *old_lo,
-                                 const rad_vec3 *old_hi, rad_anim_report *rep, rad_error *err)
+                                 const rad_vec3 *old_hi, const rad_scene *old_scene,
+                                 rad_anim_report *rep, rad_error *err)
 {
+    route_map rm[2];
+    memset(rm, 0, sizeof rm);
     const int no = a->scene.nobjects;
     box_list bl = {malloc(sizeof(rad_vec3) * (size_t)(2 * no + 1)),
                    malloc(sizeof(rad_vec3) * (size_t)(2 * no + 1)), 0};
@@ -499,7 +609,11 @@ rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
             add_box(&bl, lo, hi, pad);
     }
     if (st == RAD_OK)
-        st = list_pairs(a, dirty, &bl, &pl, err);
+        st = route_maps(a, dirty, old_scene, old_in, rm, err);
+    if (st == RAD_OK)
+        st = list_pairs(a, dirty, &bl, rm, &pl, err);
+    route_map_free(&rm[0]);
+    route_map_free(&rm[1]);
     if (st == RAD_OK) {
         fij = malloc(sizeof *fij * (pl.n + 1));
         fji = malloc(sizeof *fji * (pl.n + 1));

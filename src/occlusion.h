@@ -63,6 +63,11 @@ rad_status rad_occ_create(rad_occ **occ, const rad_mesh *mesh, double snap, rad_
                           rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err);
 void rad_occ_free(rad_occ *occ);
 
+/* Is a surface c with mask[c] set on the candidate list of the pair of
+ * surfaces a, b (occshaft.c): may the fill count it as a blocker of some
+ * pair of their elements?  With occ NULL (nothing can be blocked), no. */
+int rad_occ_candidate(const rad_occ *occ, int a, int b, const unsigned char *mask);
+
 /* Per-thread work space and counters. */
 typedef struct rad_occ_work {
     const rad_occ *occ;

@@ -163,6 +163,17 @@ static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
 }
 
 /* The tolerance for the surfaces a and b and the candidates of their pair. */
+int rad_occ_candidate(const rad_occ *o, int a, int b, const unsigned char *mask)
+{
+    if (!o || a == b)
+        return 0;
+    const size_t p = pair_index(a < b ? a : b, a < b ? b : a, o->nsurf);
+    for (size_t k = o->cand_off[p]; k < o->cand_off[p + 1]; k++)
+        if (mask[o->cand[k]])
+            return 1;
+    return 0;
+}
+
 double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand)
 {
     double t = o->snap + o->stwist[a] + o->stwist[b], tc = 0;
