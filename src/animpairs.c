@@ -28,8 +28,16 @@
  * box moved one entry by 0.2% of itself and a frame's B by up to 1e-6
  * of a fresh solve's.  So in classic mode a pair is recomputed too when
  * a surface of a dirty object is on the candidate list of its two
- * surfaces (rad_occ_candidate, occshaft.c) before or after the change:
- * outside those lists the fill's route for the pair is the same.
+ * surfaces (rad_occ_candidate, occshaft.c) before or after the change,
+ * or a surface whose convex solid (occsolid.c) the change may alter: a
+ * member of a solid that holds a dirty surface or whose members differ
+ * after the change (a moved surface that meets a block's edge at a fold
+ * joins its faces into one group, and a group that is not convex is no
+ * solid).  Outside those the fill takes the same route for the pair, on
+ * the same numbers as long as the scene's box stays the same (it sets the
+ * frame, rad_mesh_normalized, and the tolerance, rad_occ_scene_snap): a
+ * move that grows the box changes them by round-off for every pair (seen:
+ * the box moved 1000 mm out of the Cornell box, frames 1.1e-9 off).
  *
  * How: the pairs go to rad_ff_pairs (ffpairs.h), which computes each as
  * the full fill would on the mesh of the present surfaces of this frame
@@ -191,38 +199,43 @@ static int box_may_block(const rad_mesh *m, int i, int j, rad_vec3 lo, rad_vec3 
 }
 
 /* Classic mode's routes (the header) in one scene of present surfaces:
- * flag[sa * ns + sb] when a dirty object's surface is a candidate blocker
- * of surfaces sa and sb; smap takes a surface of a->scene to its index
+ * its candidate lists and solids (occ); flag[sa * ns + sb] when a marked
+ * surface is a candidate blocker of surfaces sa and sb; smap takes a
+ * surface of a->scene to its index there, or -1, and gid to its solid
  * there, or -1. */
 typedef struct route_map {
+    rad_occ *occ;
     unsigned char *flag;
-    int *smap;
+    int *smap, *gid;
     int ns;
 } route_map;
 
 static void route_map_free(route_map *rm)
 {
+    rad_occ_free(rm->occ);
     free(rm->flag);
     free(rm->smap);
+    free(rm->gid);
     memset(rm, 0, sizeof *rm);
 }
 
-/* The candidate lists as rad_ff_pairs (ffblock.c) builds them for the
- * mesh of ps, the present surfaces of a->scene under presence `in`. */
-static rad_status route_map_build(const rad_anim *a, const rad_scene *ps,
-                                  const unsigned char *dirty, const unsigned char *in,
+/* The candidate lists and solids as rad_ff_pairs (ffblock.c) builds them
+ * for the mesh of ps, the present surfaces of a->scene under presence
+ * `in`. */
+static rad_status route_map_build(const rad_anim *a, const rad_scene *ps, const unsigned char *in,
                                   route_map *rm, rad_error *err)
 {
     rad_mesh m, unit;
     rad_frame fr;
-    rad_occ *occ = NULL;
     const int ns = ps->nsurfaces, nf = a->scene.nsurfaces;
     memset(&m, 0, sizeof m);
     memset(&unit, 0, sizeof unit);
     rm->ns = ns;
     rm->flag = calloc((size_t)ns * (size_t)ns + 1, 1);
     rm->smap = malloc(sizeof *rm->smap * (size_t)(nf + 1));
-    rad_status st = rm->flag && rm->smap ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    rm->gid = malloc(sizeof *rm->gid * (size_t)(nf + 1));
+    rad_status st = rm->flag && rm->smap && rm->gid
+                        ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     for (int s = 0, k = 0; st == RAD_OK && s < nf; s++) {
         const int o = a->scene.surfaces[s].object;
         rm->smap[s] = o < 0 || in[o] ? k++ : -1;
@@ -232,26 +245,73 @@ static rad_status route_map_build(const rad_anim *a, const rad_scene *ps,
     if (st == RAD_OK)
         st = rad_mesh_normalized(&m, &unit, &fr, err);
     if (st == RAD_OK)
-        st = rad_occ_create(&occ, &unit,
+        st = rad_occ_create(&rm->occ, &unit,
                             rad_occ_scene_snap(unit.vertices, unit.nvertices,
                                                rad_frame_offset(&fr)),
                             RAD_OCC_AUTO, a->opt.ff.accuracy, NULL, err);
-    unsigned char *mask = st == RAD_OK && occ ? malloc((size_t)ns + 1) : NULL;
-    if (st == RAD_OK && occ && !mask)
-        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-    for (int c = 0; mask && c < ns; c++) {
-        const int o = ps->surfaces[c].object;
-        mask[c] = o >= 0 && dirty[o];
-    }
-    for (int sa = 0; mask && sa < ns; sa++)
-        for (int sb = sa + 1; sb < ns; sb++)
-            if (rad_occ_candidate(occ, sa, sb, mask))
-                rm->flag[(size_t)sa * ns + sb] = rm->flag[(size_t)sb * ns + sa] = 1;
-    free(mask);
-    rad_occ_free(occ);
+    for (int s = 0; st == RAD_OK && s < nf; s++)
+        rm->gid[s] = rm->smap[s] >= 0 ? rad_occ_solid(rm->occ, rm->smap[s]) : -1;
     rad_mesh_free(&unit);
     rad_mesh_free(&m);
     return st;
+}
+
+/* Does surface s (of a->scene) belong to solids of the same members in
+ * both maps (or to none in both)? */
+static int same_solid(const route_map rm[2], int nf, int s)
+{
+    const int g0 = rm[0].gid[s], g1 = rm[1].gid[s];
+    if (g0 < 0 || g1 < 0)
+        return g0 < 0 && g1 < 0;
+    for (int t = 0; t < nf; t++)
+        if ((rm[0].gid[t] == g0) != (rm[1].gid[t] == g1))
+            return 0;
+    return 1;
+}
+
+/* mark[s]: surfaces of a->scene whose change may reach a pair's blocker
+ * list: those of dirty objects; those whose solid has other members
+ * after the change (a moved surface may join a solid's fold or break its
+ * convexity, occsolid.c); and, closing over both maps, every member of a
+ * solid with a marked member (which faces a pair leaves out depends on
+ * all of them). */
+static void mark_surfaces(const rad_anim *a, const unsigned char *dirty, const route_map rm[2],
+                          unsigned char *mark)
+{
+    const int nf = a->scene.nsurfaces;
+    for (int s = 0; s < nf; s++) {
+        const int o = a->scene.surfaces[s].object;
+        mark[s] = (o >= 0 && dirty[o]) || !same_solid(rm, nf, s);
+    }
+    for (int grew = 1; grew;) {
+        grew = 0;
+        for (int b = 0; b < 2; b++)
+            for (int s = 0; s < nf; s++) {
+                const int g = rm[b].gid[s];
+                for (int t = 0; mark[s] && g >= 0 && t < nf; t++)
+                    if (rm[b].gid[t] == g && !mark[t])
+                        mark[t] = grew = 1;
+            }
+    }
+}
+
+/* rm's flags: pairs of present surfaces with a marked candidate. */
+static rad_status route_flags(const rad_anim *a, const unsigned char *mark, route_map *rm,
+                              rad_error *err)
+{
+    const int ns = rm->ns;
+    unsigned char *mask = malloc((size_t)ns + 1);
+    if (!mask)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (int s = 0; s < a->scene.nsurfaces; s++)
+        if (rm->smap[s] >= 0)
+            mask[rm->smap[s]] = mark[s];
+    for (int sa = 0; rm->occ && sa < ns; sa++)
+        for (int sb = sa + 1; sb < ns; sb++)
+            if (rad_occ_candidate(rm->occ, sa, sb, mask))
+                rm->flag[(size_t)sa * ns + sb] = rm->flag[(size_t)sb * ns + sa] = 1;
+    free(mask);
+    return RAD_OK;
 }
 
 /* Is a dirty object a candidate blocker of pair (i, j) in rm's scene? */
@@ -573,12 +633,21 @@ static rad_status route_maps(const rad_anim *a, const unsigned char *dirty,
     if (a->opt.ff.accuracy != RAD_ACCURACY_CLASSIC || !old_scene)
         return RAD_OK;
     rad_scene ps;
-    rad_status st = route_map_build(a, old_scene, dirty, old_in, &rm[0], err);
+    unsigned char *mark = malloc((size_t)a->scene.nsurfaces + 1);
+    rad_status st = mark ? route_map_build(a, old_scene, old_in, &rm[0], err)
+                         : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
     if (st == RAD_OK && (st = rad_scene_present_copy(&a->scene, a->obj_present, &ps, err)) ==
                             RAD_OK) {
-        st = route_map_build(a, &ps, dirty, a->obj_present, &rm[1], err);
+        st = route_map_build(a, &ps, a->obj_present, &rm[1], err);
         rad_scene_free(&ps);
     }
+    if (st == RAD_OK) {
+        mark_surfaces(a, dirty, rm, mark);
+        st = route_flags(a, mark, &rm[0], err);
+    }
+    if (st == RAD_OK)
+        st = route_flags(a, mark, &rm[1], err);
+    free(mark);
     return st;
 }
 

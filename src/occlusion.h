@@ -68,6 +68,10 @@ void rad_occ_free(rad_occ *occ);
  * pair of their elements?  With occ NULL (nothing can be blocked), no. */
 int rad_occ_candidate(const rad_occ *occ, int a, int b, const unsigned char *mask);
 
+/* The convex solid surface s belongs to (occsolid.c: the faces a pair's
+ * blocker list may leave out depend on all of its members), or -1. */
+int rad_occ_solid(const rad_occ *occ, int s);
+
 /* Per-thread work space and counters. */
 typedef struct rad_occ_work {
     const rad_occ *occ;

@@ -162,7 +162,6 @@ static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
     return 4;
 }
 
-/* The tolerance for the surfaces a and b and the candidates of their pair. */
 int rad_occ_candidate(const rad_occ *o, int a, int b, const unsigned char *mask)
 {
     if (!o || a == b)
@@ -174,6 +173,12 @@ int rad_occ_candidate(const rad_occ *o, int a, int b, const unsigned char *mask)
     return 0;
 }
 
+int rad_occ_solid(const rad_occ *o, int s)
+{
+    return o && o->solid ? o->solid[s] : -1;
+}
+
+/* The tolerance for the surfaces a and b and the candidates of their pair. */
 double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand)
 {
     double t = o->snap + o->stwist[a] + o->stwist[b], tc = 0;

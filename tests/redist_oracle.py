@@ -87,8 +87,12 @@ def surface_rho(scene):
     with open(scene) as f:
         for line in f:
             w = line.split('#')[0].split()
-            if len(w) >= 4 and w[0] == 'material' and w[2] == 'reflect':
-                v = [float(x) for x in (w[3:w.index('emit')] if 'emit' in w else w[3:])]
+            if len(w) >= 4 and w[0] == 'material' and 'reflect' in w:
+                k = w.index('reflect') + 1
+                v = []
+                while k < len(w) and len(v) < 3 and w[k] != 'emit':
+                    v.append(float(w[k]))
+                    k += 1
                 mat[w[1]] = tuple(v) if len(v) == 3 else (v[0],) * 3
             elif w and w[0] in ('quad', 'polygon', 'disk'):
                 rho.append(mat[w[1]])
@@ -101,10 +105,16 @@ def lum(v):
 
 def mask_of(area, yprev, yref):
     """The top 1% (at least one) of elements by A |Yref - Yprev|, and the
-    sum of that weight over them."""
+    sum of that weight over them.  (Where weights tie at the 1% boundary
+    the program's sort may take another of the tied elements.)"""
     n = len(area)
     M = sorted(range(n), key=lambda i: -area[i] * abs(yref[i] - yprev[i]))[:max(1, n // 100)]
     return M, sum(area[i] * abs(yref[i] - yprev[i]) for i in M)
+
+
+def ratio(num, den):
+    """num / den as src/animerror.c takes it: 0 / 0 is 0, x / 0 is inf."""
+    return num / den if den > 0 else float('inf') if num > 0 else 0.0
 
 
 def eq7(argv):
@@ -121,7 +131,8 @@ def eq7(argv):
         y = [lum(v) for (_, v, _) in t]
         num = sum(area[i] * abs(y[i] - yref[i]) for i in range(n))
         top = sum(area[i] * abs(y[i] - yref[i]) for i in M)
-        print('%.17g %.17g' % (num / sum(area[i] * yref[i] for i in range(n)), top / den))
+        print('%.17g %.17g' % (ratio(num, sum(area[i] * yref[i] for i in range(n))),
+                               ratio(top, den)))
 
 
 def main(argv):
@@ -155,7 +166,7 @@ def main(argv):
     gather_all = {i: tuple(sum(owed[i][j][b] for j in range(n)) for b in range(BANDS)) for i in M}
 
     def error(B):
-        return sum(area[i] * abs(lum(B[i]) - yref[i]) for i in M) / den
+        return ratio(sum(area[i] * abs(lum(B[i]) - yref[i]) for i in M), den)
 
     def step(B, paid_shooters, gathered, dB, s):
         """Apply step s = (kind, e) to the mask's B; return what every
