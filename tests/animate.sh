@@ -308,16 +308,9 @@ done
 # the block's top edge at a fold: the fold makes the block's faces one
 # group, which is not convex, so the block is no longer a solid
 # (occsolid.c), and pairs that never list the fin change their route.
-cat > fin.scene <<'SCENE'
-material white reflect 0.7 0.6 0.5
-material red reflect 0.6 0.1 0.1
-material lamp reflect 0.4 emit 2 1.5 1
-material grey reflect 0.5
-camera eye 0.5 0.5 -1.2 at 0.5 0.5 0.5 up 0 1 0 fov 50
-quad red 0 0 0  0 1 0  0 1 1  0 0 1 mesh 3x3
-quad white 1 0 0  1 0 1  1 1 1  1 1 0 mesh 3x3
-quad lamp 0 1 0  1 1 0  1 1 1  0 1 1 mesh 3x3
-quad white 0 0 0  1 0 0  1 1 0  0 1 0 mesh 3x3
+# The scene: the room's materials, camera, side and back walls and lamp;
+# a floor and a front wall in pieces around a block; the fin.
+{ sed -n '1,7p;9,10p' room.scene; cat <<'SCENE'
 quad white 0 0 1  0 0.5 1  0.375 0.5 1  0.375 0 1 mesh 2x2
 quad white 0.375 0 1  0.375 0.5 1  1 0.5 1  1 0 1 mesh 2x2
 quad white 0 0.5 1  0 1 1  1 1 1  1 0.5 1 mesh 3x2
@@ -335,6 +328,7 @@ object fin
   quad grey 0.75 0.25 0.5  0.75 0.25 0.75  0.875 0.1875 0.75  0.875 0.1875 0.5 mesh 1x1
 end
 SCENE
+} > fin.scene
 printf 'frame\nmove fin -0.25 0 -0.25\n' > fin.changes
 "$RADIOSITY" animate -q --accuracy classic --elements 'fn%d.tsv' fin.scene fin.changes 2> /dev/null &&
   xform fin move -0.25 0 -0.25 < fin.scene > fin1.scene &&
