@@ -314,7 +314,8 @@ static rad_status route_flags(const rad_anim *a, const unsigned char *mark, rout
     return RAD_OK;
 }
 
-/* Is a dirty object a candidate blocker of pair (i, j) in rm's scene? */
+/* Is a marked surface (mark_surfaces) a candidate blocker of pair (i, j)
+ * in rm's scene? */
 static int route_may_change(const rad_anim *a, const route_map *rm, int i, int j)
 {
     if (!rm->flag)
