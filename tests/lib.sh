@@ -15,8 +15,9 @@ diag() { printf '# %s\n' "$*"; }
 done_testing() { echo "1..$tap_n"; [ "$tap_failed" -eq 0 ]; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# expect_num GOT WANT RELTOL: relative comparison with awk
-close_to() { awk -v g="$1" -v w="$2" -v t="$3" 'BEGIN { d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1; exit !(g == g + 0 && d <= t * s) }'; }
+# close_to GOT WANT RELTOL [SLACK]: |GOT - WANT| <= RELTOL |WANT| (|WANT| taken as 1
+# when 0) plus an absolute SLACK (default 0)
+close_to() { awk -v g="$1" -v w="$2" -v t="$3" -v a="${4:-0}" 'BEGIN { d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1; exit !(g == g + 0 && d <= t * s + a) }'; }
 # estimate_covers SCENE I J WANT MODE WHAT: F(I -> J) of SCENE in MODE (left
 # in $got) and its error estimate at or above the difference from WANT, an
 # independent value, whatever the promise.  One check.
@@ -41,8 +42,7 @@ against_value() {
       awk -F '\t' -v i="$2" -v j="$3" '$1 == i && $2 == j { printf "%.17g %.3g\n", $3, $4 }')
     got=${row%% *}
     est=${row##* }
-    awk -v g="$got" -v w="$4" -v t="$tol" -v s="$5" \
-      'BEGIN { d = g - w; if (d < 0) d = -d; m = w < 0 ? -w : w; exit !(g == g + 0 && d <= t * m + s) }'
+    close_to "$got" "$4" "$tol" "$5"
     ok $? "$6 F($2 -> $3), $mode: within $tol of $4 ($got)"
     awk -v g="$got" -v e="$est" -v w="$4" -v s="$5" \
       'BEGIN { d = g - w; if (d < 0) d = -d; exit !(g == g + 0 && d <= e + s) }'

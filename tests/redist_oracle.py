@@ -168,42 +168,37 @@ def main(argv):
     def error(B):
         return ratio(sum(area[i] * abs(lum(B[i]) - yref[i]) for i in M), den)
 
-    def step(B, paid_shooters, gathered, dB, s):
+    def step(B, paid_shooters, gathered, dB, s, follow=True):
         """Apply step s = (kind, e) to the mask's B; return what every
-        element received in this step (its new unshot radiosity)."""
+        element received in this step (its new unshot radiosity), or with
+        follow false only what the mask received (for a last step)."""
         kind, e = s
         new = {}
         if kind == 'R':
             if e in paid_shooters:
                 return {}
-            for i in M:
-                if i not in gathered:
-                    B[i] = tuple(B[i][b] + owed[i][e][b] for b in range(BANDS))
-            for r in range(n):
+            for r in (range(n) if follow else M):
                 d = dF(r, e)
                 if d != 0 and r not in gathered:
                     new[r] = tuple(rho[r][b] * d * T[e][b] for b in range(BANDS))
         elif kind == 'G':
-            if e in gathered:
+            if e in gathered or (e not in M and not follow):
                 return {}
-            tot = [0.0] * BANDS
-            for j in range(n):
-                if j not in paid_shooters:
-                    for b in range(BANDS):
-                        tot[b] += rho[e][b] * dF(e, j) * T[j][b]
-            if e in B:
-                B[e] = tuple(B[e][b] + tot[b] for b in range(BANDS))
-            new[e] = tuple(tot)
+            if e in M:
+                new[e] = tuple(gather_all[e][b] - sum(owed[e][j][b] for j in paid_shooters)
+                               for b in range(BANDS))
+            else:
+                new[e] = tuple(sum(rho[e][b] * dF(e, j) * T[j][b] for j in range(n)
+                                   if j not in paid_shooters) for b in range(BANDS))
         else:  # 'P'
             d = dB.get(e)
-            if d:
-                for r in range(n):
-                    f = fn[r * n + e]
-                    if f:
-                        new[r] = tuple(rho[r][b] * f * d[b] for b in range(BANDS))
-                for i in M:
-                    if i in new:
-                        B[i] = tuple(B[i][b] + new[i][b] for b in range(BANDS))
+            for r in (range(n) if follow else M) if d else ():
+                f = fn[r * n + e]
+                if f:
+                    new[r] = tuple(rho[r][b] * f * d[b] for b in range(BANDS))
+        for i in M:
+            if i in new:
+                B[i] = tuple(B[i][b] + new[i][b] for b in range(BANDS))
         return new
 
     def run(seq):
@@ -226,9 +221,9 @@ def main(argv):
         seq = [(w[0], int(w[1:])) for w in text.split()]
         print('%.17g' % run(seq))
 
-    # Exhaustive search over two steps, with the mask's B kept incremental:
-    # the second step's effect on the mask depends on the first only through
-    # which entries are paid and what dB the first step left.
+    # Exhaustive search over two steps: the second step's effect on the mask
+    # depends on the first only through which entries are paid and what dB
+    # the first step left.
     best = (run([]), 'none')
     firsts = [('R', j) for j in range(n)] + [('G', i) for i in range(n)]
     for s1 in firsts:
@@ -246,23 +241,10 @@ def main(argv):
         cand += [('P', r) for r in dB]
         for s2 in cand:
             B2 = dict(B1)
-            kind, e = s2
-            if kind == 'R':
-                for i in M:
-                    if i not in gathered:
-                        B2[i] = tuple(B2[i][b] + owed[i][e][b] for b in range(BANDS))
-            elif kind == 'G':
-                rest = [gather_all[e][b] - sum(owed[e][j][b] for j in paid) for b in range(BANDS)]
-                B2[e] = tuple(B2[e][b] + rest[b] for b in range(BANDS))
-            else:
-                d = dB[e]
-                for i in M:
-                    f = fn[i * n + e]
-                    if f:
-                        B2[i] = tuple(B2[i][b] + rho[i][b] * f * d[b] for b in range(BANDS))
+            step(B2, paid, gathered, dB, s2, follow=False)
             e2 = error(B2)
             if e2 < best[0]:
-                best = (e2, '%s%d %s%d' % (s1[0], s1[1], kind, e))
+                best = (e2, '%s%d %s%d' % (s1 + s2))
     print('mask %s' % ' '.join(str(i) for i in M))
     print('best %.17g %s' % best)
 
