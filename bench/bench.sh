@@ -53,11 +53,15 @@ awk '/"frame": [1-9]/ {
        match($0, /"t_reference": [0-9.e+-]*/); f = substr($0, RSTART + 15, RLENGTH - 15)
        match($0, /"pairs_share": [0-9.e+-]*/); p = substr($0, RSTART + 15, RLENGTH - 15)
        match($0, /"error_eq7": [0-9.e+-]*/); e = substr($0, RSTART + 13, RLENGTH - 13)
-       n++; r[n] = t / f
-       printf "   frame %2d: %.3f s, fresh solve %.3f s, ratio %.3f, pairs recomputed %.1f%%, eq. 7 error %.2g\n", n, t, f, t / f, 100 * p, e }
-     END { for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (r[j] < r[i]) { x = r[i]; r[i] = r[j]; r[j] = x }
-           m = n % 2 ? r[(n + 1) / 2] : (r[n / 2] + r[n / 2 + 1]) / 2
-           printf "   median ratio %.3f (the issue asks at most 0.25)\n", m }' "$tmp/anim.json"
+       match($0, /"t_changed": [0-9.e+-]*/); c = substr($0, RSTART + 13, RLENGTH - 13)
+       n++; r[n] = t / f; q[n] = c / f
+       printf "   frame %2d: %.3f s, fresh solve %.3f s, ratio %.3f (changed pairs alone %.3f), pairs recomputed %.1f%%, eq. 7 error %.2g\n", n, t, f, t / f, c / f, 100 * p, e }
+     function median(v, n,   i, j, x) {
+           for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (v[j] < v[i]) { x = v[i]; v[i] = v[j]; v[j] = x }
+           return n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2 }
+     END { printf "   median ratio %.3f (the issue asks at most 0.25)\n", median(r, n)
+           printf "   median ratio of the changed pairs alone %.3f: no frame that computes\n", median(q, n)
+           printf "   the changed form factors as a fresh solve does can go below it\n" }' "$tmp/anim.json"
 
 echo
 echo "== progressive refinement without a stored matrix (--matrix none --patches ${BENCH_MFREE_PATCHES:-4x4}),"

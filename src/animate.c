@@ -434,7 +434,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     for (int e = 0; e < a->n; e++)
         np += a->present[e];
     rep->pairs_total = 0.5 * np * (np - 1);
-    rep->t_formfactor = rad_seconds() - t0;
+    rep->t_formfactor = rad_seconds() - t0 - rep->t_changed; /* not the timing's rerun */
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
         if (paper)
@@ -446,7 +446,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
             st = close_log(a, rep, err); /* 7 */
         rep->t_shoot = rad_seconds() - t1;
     }
-    rep->t_total = rad_seconds() - t0;
+    rep->t_total = rad_seconds() - t0 - rep->t_changed;
     free(dirty);
     free(old_in);
     free(changed);

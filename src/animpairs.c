@@ -387,10 +387,43 @@ static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, cons
     return st;
 }
 
+/* time_changed: the nq pairs (qi, qj) of the present mesh pm, whose new
+ * values are vij, vji, computed again, only those whose F changed (the
+ * old values are a->F's, at[] their list positions), into scratch: the
+ * seconds that takes, the form factors' share of a frame that recomputed
+ * the changed pairs and no other (rad_anim_report.t_changed). */
+static rad_status time_changed(const rad_anim *a, const pair_list *pl, const rad_mesh *pm,
+                               const int *qi, const int *qj, const size_t *at, size_t nq,
+                               const double *vij, const double *vji, double *seconds,
+                               rad_error *err)
+{
+    const size_t n = (size_t)a->n;
+    int *ci = malloc(sizeof *ci * (nq + 1)), *cj = malloc(sizeof *cj * (nq + 1));
+    double *s = malloc(sizeof *s * (2 * nq + 2));
+    size_t nc = 0;
+    rad_status st = ci && cj && s ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (size_t q = 0; st == RAD_OK && q < nq; q++) {
+        const int i = pl->pi[at[q]], j = pl->pj[at[q]];
+        if (vij[q] != a->F[i + j * n] || vji[q] != a->F[j + i * n]) {
+            ci[nc] = qi[q];
+            cj[nc++] = qj[q];
+        }
+    }
+    const double t0 = rad_seconds();
+    if (st == RAD_OK && nc > 0)
+        st = rad_ff_pairs(pm, &a->opt.ff, ci, cj, nc, s, s + nc + 1, err);
+    *seconds = rad_seconds() - t0;
+    free(ci);
+    free(cj);
+    free(s);
+    return st;
+}
+
 /* New values of the listed pairs: computed on the mesh of the present
- * surfaces where both ends are present, 0 otherwise. */
+ * surfaces where both ends are present, 0 otherwise (and, with
+ * time_changed, the seconds of the changed ones alone). */
 static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij, double *fji,
-                             rad_error *err)
+                             double *t_changed, rad_error *err)
 {
     rad_scene ps;
     rad_mesh pm;
@@ -420,6 +453,8 @@ static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
     if (st == RAD_OK && nq > 0)
         st = rad_ff_pairs(&pm, &a->opt.ff, qi, qj, nq, vij, vji, err);
+    if (st == RAD_OK && a->opt.time_changed)
+        st = time_changed(a, pl, &pm, qi, qj, at, nq, vij, vji, t_changed, err);
     for (size_t q = 0; st == RAD_OK && q < nq; q++) {
         fij[at[q]] = vij[q];
         fji[at[q]] = vji[q];
@@ -691,7 +726,7 @@ rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
             st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
     }
     if (st == RAD_OK)
-        st = new_values(a, &pl, fij, fji, err);
+        st = new_values(a, &pl, fij, fji, &rep->t_changed, err);
     if (st == RAD_OK)
         st = start_redist(a, &pl, fij, fji, rep, err);
     rep->pairs_recomputed = (double)pl.n;

@@ -112,6 +112,17 @@ grep -q '"converged": false' rep.json; [ $? -ne 0 ]
 ok $? "every frame converged"
 grep -q '"pairs_recomputed"' rep.json && grep -q '"pairs_share"' rep.json
 ok $? "the report says how many pairs were recomputed and their share"
+# --reference also times the changed pairs alone (t_changed), on the
+# side: the frames stay bit for bit those of the run without it.
+"$RADIOSITY" animate -q --tolerance 1e-12 --reference --elements 'd%d.tsv' --report ref.json \
+  room.scene all.changes 2> /dev/null
+ok $? "animate --reference runs"
+for f in 1 2 3 4 5; do cmp -s "a$f.tsv" "d$f.tsv" || break; done
+ok $? "timing the changed pairs alone leaves every frame as it was"
+grep -q '"frame": 0,.*"t_changed": null' ref.json &&
+  [ "$(grep -c '"frame": [1-5],.*"t_changed": [0-9]' ref.json)" -eq 5 ] &&
+  [ "$(grep -c '"t_changed": null' rep.json)" -eq 6 ]
+ok $? "t_changed: a time in frames 1-5 with --reference, null in frame 0 and without"
 head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1	gather$'
 ok $? "the trace's header"
 awk -F '\t' 'NR > 1 && $4 == "redistribute" && $5 == -1 { neg = 1 } NR > 1 && $4 == "redistribute" && $5 == 1 { pos = 1 } END { exit !(neg && pos) }' trace.tsv

@@ -78,6 +78,10 @@ typedef struct rad_anim_options {
                                    final pass, animlog.c) */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
                                    1000 n + 100000) */
+    int time_changed;           /* 1: after a frame's recompute, compute the
+                                   pairs whose F changed once more, alone, and
+                                   time it (rad_anim_report.t_changed); the
+                                   result is thrown away */
     rad_anim_shot_fn on_shot;   /* may be NULL */
     void *shot_user;
 } rad_anim_options;
@@ -99,6 +103,11 @@ typedef struct rad_anim_report {
     int log_pass;               /* 1: the frame converged after unconverged
                                    ones and ran the change log's final pass */
     double log_residual;        /* the largest |F S - H| / |F S| it removed */
+    double t_changed;           /* with time_changed (frames after 0): seconds
+                                   to compute only the pairs whose F changed,
+                                   on the frame's mesh: the least that form
+                                   factors a frame could cost if it knew them
+                                   in advance; not in t_formfactor or t_total */
 } rad_anim_report;
 
 typedef struct rad_anim rad_anim;
