@@ -558,7 +558,7 @@ static int w_report(FILE *out, const void *ctx)
         json_num(out, "t_shoot", p->t_shoot, ", ");
         json_num(out, "t_total", p->t_total, ", ");
         json_num(out, "t_reference", w->t_reference, ", ");
-        json_num(out, "t_changed", f > 0 && r->args->reference ? p->t_changed : NAN, ", ");
+        json_num(out, "t_changed", f > 0 && r->args->opt.time_changed ? p->t_changed : NAN, ", ");
         json_num(out, "error_eq7", w->error, ", ");
         json_num(out, "error_eq7_top1", w->error_top, ", ");
         fprintf(out, "\"log_pass\": %s, ", p->log_pass ? "true" : "false");
@@ -848,7 +848,8 @@ int cmd_animate(int argc, char **argv)
         if (opt == '?' || parse_option(&a, opt == 'q' ? OPT_QUIET : opt, optarg) != 0)
             return cli_usage_hint("animate");
     }
-    a.opt.time_changed = a.reference; /* t_changed: the frames' floor, beside the fresh solve */
+    /* the report's t_changed: a frame's floor, beside the fresh solve's time */
+    a.opt.time_changed = a.reference && a.report;
     if (a.opt.partial_start && a.opt.steps == 0) {
         cli_error("--from-scratch needs --steps K");
         return cli_usage_hint("animate");
