@@ -254,6 +254,7 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
     rad_anim_report rep;
     double t0 = rad_seconds();
     memset(&rep, 0, sizeof rep);
+    rep.t_changed = NAN; /* frame 0 recomputes nothing */
     rad_anim *a;
     rad_status st = setup(&a, scene, NULL, 0, opt, &rep, err);
     rep.t_formfactor = rad_seconds() - t0;
@@ -381,6 +382,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     const int no = a->scene.nobjects, next = a->frame + 1;
     double t0 = rad_seconds();
     memset(rep, 0, sizeof *rep);
+    rep->t_changed = NAN; /* measured by rad_anim_update_pairs with time_changed */
     if (next > ch->nframes)
         return rad_fail(err, RAD_ERR_INVALID, "there is no frame %d", next);
     unsigned char *dirty = calloc((size_t)no + 1, 1), *old_in = malloc((size_t)no + 1);
@@ -434,7 +436,8 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     for (int e = 0; e < a->n; e++)
         np += a->present[e];
     rep->pairs_total = 0.5 * np * (np - 1);
-    rep->t_formfactor = rad_seconds() - t0 - rep->t_changed; /* not the timing's rerun */
+    const double rerun = isfinite(rep->t_changed) ? rep->t_changed : 0; /* not the frame's */
+    rep->t_formfactor = rad_seconds() - t0 - rerun;
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
         if (paper)
@@ -446,7 +449,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
             st = close_log(a, rep, err); /* 7 */
         rep->t_shoot = rad_seconds() - t1;
     }
-    rep->t_total = rad_seconds() - t0 - rep->t_changed;
+    rep->t_total = rad_seconds() - t0 - rerun;
     free(dirty);
     free(old_in);
     free(changed);

@@ -391,17 +391,18 @@ static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, cons
  * values are vij, vji, computed again, only those whose F changed (the
  * old values are a->F's, at[] their list positions), into scratch: the
  * seconds that takes, the form factors' share of a frame that recomputed
- * the changed pairs and no other (rad_anim_report.t_changed). */
-static rad_status time_changed(const rad_anim *a, const pair_list *pl, const rad_mesh *pm,
-                               const int *qi, const int *qj, const size_t *at, size_t nq,
-                               const double *vij, const double *vji, double *seconds,
-                               rad_error *err)
+ * the changed pairs and no other (rad_anim_report.t_changed).  A failure
+ * here leaves the frame alone: the time is then NaN. */
+static double time_changed(const rad_anim *a, const pair_list *pl, const rad_mesh *pm,
+                           const int *qi, const int *qj, const size_t *at, size_t nq,
+                           const double *vij, const double *vji)
 {
     const size_t n = (size_t)a->n;
     int *ci = malloc(sizeof *ci * (nq + 1)), *cj = malloc(sizeof *cj * (nq + 1));
     double *s = malloc(sizeof *s * (2 * nq + 2));
     size_t nc = 0;
-    rad_status st = ci && cj && s ? RAD_OK : rad_fail(err, RAD_ERR_NOMEM, "out of memory");
+    rad_error err;
+    rad_status st = ci && cj && s ? RAD_OK : RAD_ERR_NOMEM;
     for (size_t q = 0; st == RAD_OK && q < nq; q++) {
         const int i = pl->pi[at[q]], j = pl->pj[at[q]];
         if (vij[q] != a->F[i + j * n] || vji[q] != a->F[j + i * n]) {
@@ -411,12 +412,12 @@ static rad_status time_changed(const rad_anim *a, const pair_list *pl, const rad
     }
     const double t0 = rad_seconds();
     if (st == RAD_OK && nc > 0)
-        st = rad_ff_pairs(pm, &a->opt.ff, ci, cj, nc, s, s + nc + 1, err);
-    *seconds = rad_seconds() - t0;
+        st = rad_ff_pairs(pm, &a->opt.ff, ci, cj, nc, s, s + nc + 1, &err);
+    const double t = st == RAD_OK ? rad_seconds() - t0 : NAN;
     free(ci);
     free(cj);
     free(s);
-    return st;
+    return t;
 }
 
 /* New values of the listed pairs: computed on the mesh of the present
@@ -454,7 +455,7 @@ static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij
     if (st == RAD_OK && nq > 0)
         st = rad_ff_pairs(&pm, &a->opt.ff, qi, qj, nq, vij, vji, err);
     if (st == RAD_OK && a->opt.time_changed)
-        st = time_changed(a, pl, &pm, qi, qj, at, nq, vij, vji, t_changed, err);
+        *t_changed = time_changed(a, pl, &pm, qi, qj, at, nq, vij, vji);
     for (size_t q = 0; st == RAD_OK && q < nq; q++) {
         fij[at[q]] = vij[q];
         fji[at[q]] = vji[q];

@@ -558,7 +558,7 @@ static int w_report(FILE *out, const void *ctx)
         json_num(out, "t_shoot", p->t_shoot, ", ");
         json_num(out, "t_total", p->t_total, ", ");
         json_num(out, "t_reference", w->t_reference, ", ");
-        json_num(out, "t_changed", f > 0 && r->args->opt.time_changed ? p->t_changed : NAN, ", ");
+        json_num(out, "t_changed", p->t_changed, ", ");
         json_num(out, "error_eq7", w->error, ", ");
         json_num(out, "error_eq7_top1", w->error_top, ", ");
         fprintf(out, "\"log_pass\": %s, ", p->log_pass ? "true" : "false");

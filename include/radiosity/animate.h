@@ -78,12 +78,12 @@ typedef struct rad_anim_options {
                                    final pass, animlog.c) */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
                                    1000 n + 100000) */
+    rad_anim_shot_fn on_shot;   /* may be NULL */
+    void *shot_user;
     int time_changed;           /* 1: after a frame's recompute, compute the
                                    pairs whose F changed once more, alone, and
                                    time it (rad_anim_report.t_changed); the
                                    result is thrown away */
-    rad_anim_shot_fn on_shot;   /* may be NULL */
-    void *shot_user;
 } rad_anim_options;
 
 RAD_API void rad_anim_options_init(rad_anim_options *opt);
@@ -107,7 +107,8 @@ typedef struct rad_anim_report {
                                    to compute only the pairs whose F changed,
                                    on the frame's mesh: the least that form
                                    factors a frame could cost if it knew them
-                                   in advance; not in t_formfactor or t_total */
+                                   in advance; not in t_formfactor or t_total.
+                                   NaN when not measured */
 } rad_anim_report;
 
 typedef struct rad_anim rad_anim;
