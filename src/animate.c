@@ -339,13 +339,14 @@ static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
     if (a->log_open) {
         rad_anim_report more;
         memset(&more, 0, sizeof more);
+        more.shots = rep->shots; /* the trace's steps go on */
         rad_anim_log_pass(a);
         rep->log_pass = 1;
         rep->log_residual = a->log_residual;
         rad_status st = rad_anim_shoot(a, 0, &more, err);
         if (st != RAD_OK)
             return st;
-        rep->shots += more.shots;
+        rep->shots = more.shots;
         rep->propagation_shots += more.propagation_shots;
         rep->unshot = more.unshot;
     }

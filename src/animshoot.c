@@ -235,7 +235,7 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
     const double emitted = rad_anim_emitted(a);
     const double scale = emitted > a->emitted0 ? emitted : a->emitted0;
     double unshot = rad_anim_unshot(a);
-    long step = 0;
+    long step = rep->shots; /* the log's final pass goes on counting (animate.c, close_log) */
     rep->emitted = emitted;
     for (;;) {
         if (a->rd.npending == 0 && unshot <= a->opt.tolerance * scale) {
