@@ -261,7 +261,7 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
         unshot = rad_anim_unshot(a);
         if (a->opt.on_shot) {
             rad_anim_shot s = {a->frame, step, j, redist, p < 0 ? -1 : 1, fabs(p), unshot,
-                               a->rd.left, kind == 2};
+                               a->rd.left, kind == 2, a};
             if (a->opt.on_shot(a->opt.shot_user, &s))
                 return rad_fail(err, RAD_ERR_INVALID, "interrupted");
         }

@@ -294,10 +294,10 @@ static int record_shot(void *user, const rad_anim_shot *s)
         r->cap = cap;
     }
     double e = NAN, et = NAN;
-    if (r->Bref && r->anim) {
-        const rad_mesh *m = rad_anim_mesh(r->anim);
-        e = rad_anim_error(m, rad_anim_present(r->anim), rad_anim_radiosity(r->anim), r->Bref);
-        et = rad_anim_error_changed(m, r->top, rad_anim_radiosity(r->anim), r->Bref, r->Bprev);
+    if (r->Bref) { /* s->anim: frame 0's shots come before rad_anim_create returns */
+        const rad_mesh *m = rad_anim_mesh(s->anim);
+        e = rad_anim_error(m, rad_anim_present(s->anim), rad_anim_radiosity(s->anim), r->Bref);
+        et = rad_anim_error_changed(m, r->top, rad_anim_radiosity(s->anim), r->Bref, r->Bprev);
     }
     r->shot_err[2 * r->nshots] = e;
     r->shot_err[2 * r->nshots + 1] = et;

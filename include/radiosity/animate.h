@@ -42,6 +42,10 @@ typedef struct rad_anim_shot {
     double redistribution_left; /* power of the redistribution shots pending */
     int gather;                 /* redistribute: 1 when `shooter` is the receiver
                                    that gathered its pending terms at once */
+    const struct rad_anim *anim; /* the animation shooting: its B, mesh and
+                                   presence as they are after the shot (in
+                                   frame 0 too, before rad_anim_create
+                                   returns it) */
 } rad_anim_shot;
 
 /* Called after each shot; non-zero stops the frame (RAD_ERR_INVALID,
