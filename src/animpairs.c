@@ -730,7 +730,9 @@ rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
         st = new_values(a, &pl, fij, fji, &rep->t_changed, err);
     if (st == RAD_OK)
         st = start_redist(a, &pl, fij, fji, rep, err);
-    rep->pairs_recomputed = (double)pl.n;
+    rep->pairs_recomputed = 0; /* computed: both ends present (the others become 0) */
+    for (size_t k = 0; k < pl.n; k++)
+        rep->pairs_recomputed += a->present[pl.pi[k]] && a->present[pl.pj[k]];
     free(fij);
     free(fji);
     free(pl.pi);

@@ -137,6 +137,15 @@ r=$(awk '/"frame": / {
     END { if (n != 6) print n " frames"; exit bad || n != 6 }' ref.json) &&
   [ "$(grep -c '"t_changed": null' rep.json)" -eq 6 ]
 ok $? "t_changed: a time in frames 1-5 (above 0 where pairs changed) with --reference, null in frame 0 and without $r"
+# pairs_recomputed counts the pairs computed: both elements present.  An
+# absent object that moves alters none; a removal leaves a share <= 1.
+printf 'frame\nmove shade 0.125 0 0\n' > ghost.changes
+"$RADIOSITY" animate -q --report ghost.json --elements 'g%d.tsv' room.scene ghost.changes 2> /dev/null &&
+  grep -q '"frame": 1,.*"pairs_recomputed": 0,' ghost.json && cmp -s g0.tsv g1.tsv
+ok $? "moving an absent object computes no pair and changes nothing"
+r=$(awk '/"frame": / { match($0, /"pairs_share": [0-9.e+-]*/); v = substr($0, RSTART + 15, RLENGTH - 15) + 0
+                      printf " %.3g", v; if (v > 1) bad = 1 } END { exit bad }' rep.json)
+ok $? "every frame's pairs_share is at most 1 (the box's removal too):$r"
 head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1	gather$'
 ok $? "the trace's header"
 awk -F '\t' 'NR > 1 && $4 == "redistribute" && $5 == -1 { neg = 1 } NR > 1 && $4 == "redistribute" && $5 == 1 { pos = 1 } END { exit !(neg && pos) }' trace.tsv

@@ -100,7 +100,8 @@ typedef struct rad_anim_report {
                                    left to redistribute */
     double unshot;              /* at the end of the frame */
     double emitted;             /* sum_j A_j sum_b E_j, present elements */
-    double pairs_recomputed;    /* unordered pairs whose F was recomputed */
+    double pairs_recomputed;    /* unordered pairs of present elements whose
+                                   F was recomputed */
     double pairs_total;         /* n (n - 1) / 2 over present elements */
     double pairs_changed;       /* ... whose F changed */
     double t_formfactor, t_shoot, t_total;  /* wall-clock seconds */
