@@ -24,6 +24,7 @@
 
 #include "atomicfile.h"
 #include "cli.h"
+#include "jsonstr.h"
 #include "radiosity/animate.h"
 #include "radiosity/export.h"
 #include "radiosity/render.h"
@@ -66,14 +67,16 @@ static void help(void)
            "      --frames PATTERN    one PNG per frame, PATTERN a printf pattern with\n"
            "                          one integer conversion (frame%%03d.png, a width\n"
            "                          below 100); the scene's camera, frame 0's\n"
-           "                          automatic exposure (see --exposure-from)\n"
+           "                          automatic exposure (see --exposure-from; after\n"
+           "                          --resume, the first frame run's)\n"
            "      --width W, --height H  picture size (default 384 x 384)\n"
            CLI_EXPOSURE_FROM_HELP
            "      --elements PATTERN  one element table per frame (the format of\n"
            "                          'solve --elements'; absent objects' elements\n"
            "                          left out, numbered as a fresh solve would)\n"
            "      --tolerance T       a frame is converged when its unshot power is\n"
-           "                          at most T x the emitted power (default 1e-12)\n"
+           "                          at most T x the emitted power, the frame's or\n"
+           "                          frame 0's, the larger (default 1e-12)\n"
            "      --steps K           stop each frame after K shots: a partial\n"
            "                          solution, as in an interactive session\n"
            "      --from-scratch      frame 0 too stops after --steps K shots:\n"
@@ -125,7 +128,8 @@ static void help(void)
            "\n"
            "Every path is checked before the work.  Each regular file is written to a\n"
            "temporary beside it as its frame is done, and all are renamed together\n"
-           "at the end: a failed or interrupted run replaces none; a device or FIFO\n"
+           "at the end: a failed or interrupted run replaces none (but --log, which\n"
+           "is replaced after every frame, the state to resume from); a device or FIFO\n"
            "given to --trace, --report, --errors or --log is written in place, but a\n"
            "frame pattern must make files (a frame path naming a device, FIFO or\n"
            "descriptor is an error).  Exit status: 0 on success, 1 on an error, 2 on a\n"
@@ -532,8 +536,11 @@ static int w_report(FILE *out, const void *ctx)
 {
     const anim_run *r = ctx;
     const rad_mesh *m = rad_anim_mesh(r->anim);
-    fprintf(out, "{\n  \"scene\": \"%s\",\n  \"changes\": \"%s\",\n  \"elements\": %d,\n",
-            r->scene.filename, r->changes.filename, m->nelements);
+    fputs("{\n  \"scene\": ", out);
+    rad_json_string(out, r->scene.filename);
+    fputs(",\n  \"changes\": ", out);
+    rad_json_string(out, r->changes.filename);
+    fprintf(out, ",\n  \"elements\": %d,\n", m->nelements);
     fprintf(out, "  \"strategy\": %d,\n  \"steps\": %ld,\n  ", r->args->opt.strategy,
             r->args->opt.steps);
     json_num(out, "tolerance", r->args->opt.tolerance, ",\n  \"frames\": [\n");
@@ -584,7 +591,7 @@ static int check_distinct(char **paths, size_t n)
     for (size_t k = 1; k < n; k++)
         if (strcmp(paths[k], paths[k - 1]) == 0 && strcmp(paths[k], "-") != 0) {
             cli_error("%s: named by two outputs of the run (--frames, --elements, --trace, "
-                      "--report)", paths[k]);
+                      "--report, --errors, --log)", paths[k]);
             return 1;
         }
     return 0;
@@ -599,7 +606,7 @@ static int check_paths(const anim_run *r)
                        {a->errors, w_errors, r}, {a->log, w_log, NULL}};
     if (cli_outputs_check(o, 4))
         return 1;
-    const size_t cap = 2 * ((size_t)r->changes.nframes + 1) + 2;
+    const size_t cap = 2 * ((size_t)r->changes.nframes + 1) + 4;
     char **paths = calloc(cap, sizeof *paths);
     size_t n = 0;
     int rc = 0;
@@ -607,7 +614,7 @@ static int check_paths(const anim_run *r)
         cli_error("out of memory");
         return 1;
     }
-    for (int k = 0; k < 2; k++)
+    for (int k = 0; k < 4; k++)
         if (o[k].path && !(paths[n++] = strdup(o[k].path)))
             rc = 1;
     for (int f = 0; f <= r->changes.nframes && !rc; f++) {

@@ -20,6 +20,7 @@
 #include <stdio.h>
 
 #include "compare_print.h"
+#include "jsonstr.h"
 #include "plotxy.h"
 
 int compare_within(const compare_ctx *c)
@@ -137,21 +138,8 @@ static void num(FILE *out, const char *key, double v, const char *end)
 static void str(FILE *out, const char *key, const char *s)
 {
     fprintf(out, "  \"%s\": ", key);
-    if (!s) {
-        fputs("null,\n", out);
-        return;
-    }
-    fputc('"', out);
-    for (; *s; s++) {
-        const unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\')
-            fprintf(out, "\\%c", ch);
-        else if (ch < 0x20)
-            fprintf(out, "\\u%04x", ch);
-        else
-            fputc(ch, out);
-    }
-    fputs("\",\n", out);
+    rad_json_string(out, s);
+    fputs(",\n", out);
 }
 
 static void json_pairs(FILE *out, const compare_ctx *c)

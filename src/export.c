@@ -31,6 +31,7 @@
 #include "radiosity/export.h"
 #include "radiosity/render.h"
 #include "fmtdouble.h"
+#include "jsonstr.h"
 #include "radiosity.h"
 
 int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
@@ -319,20 +320,12 @@ static void jbands(FILE *out, const char *key, const double *v)
     }
 }
 
-/* A JSON string with the needed escapes. */
+/* A JSON string with the needed escapes (no name: ""). */
 static void jstr(FILE *out, const char *key, const char *s)
 {
-    fprintf(out, "  \"%s\": \"", key);
-    for (; s && *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(out, "\\%c", c);
-        else if (c < 0x20)
-            fprintf(out, "\\u%04x", c);
-        else
-            fputc(c, out);
-    }
-    fprintf(out, "\",\n");
+    fprintf(out, "  \"%s\": ", key);
+    rad_json_string(out, s ? s : "");
+    fputs(",\n", out);
 }
 
 int rad_export_report(FILE *out, const rad_run_info *in)

@@ -233,6 +233,15 @@ ok $? "--elements and --frames naming the same files: exit $rc, $(head -c 80 err
 "$RADIOSITY" animate -q --elements 'same%d.x' --trace same1.x room.scene all.changes > /dev/null 2> err
 rc=$?; [ $rc -eq 1 ] && grep -q "same1.x: named by two outputs" err
 ok $? "--trace naming a frame's table: exit $rc"
+"$RADIOSITY" animate -q --errors same.x --log same.x room.scene all.changes > /dev/null 2> err
+rc=$?; [ $rc -eq 1 ] && grep -q "same.x: named by two outputs" err && [ ! -e same.x ]
+ok $? "--errors and --log naming one file: exit $rc, nothing written"
+# the report's file names are JSON strings (RFC 8259, section 7: quote
+# and backslash escaped)
+cp room.scene 'q"b\\s.scene'
+"$RADIOSITY" animate -q --report q.json 'q"b\\s.scene' all.changes 2> /dev/null &&
+  grep -qF '"scene": "q\"b\\\\s.scene",' q.json
+ok $? "--report: a scene name with a quote and two backslashes is escaped"
 # a path that does not fit is refused before any work, never truncated
 long=$(awk 'BEGIN { for (k = 0; k < 1400; k++) printf "d/."; }')
 mkdir d && "$RADIOSITY" animate -q --elements "$long/x%d.tsv" room.scene all.changes > /dev/null 2> err

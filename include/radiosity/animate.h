@@ -58,7 +58,8 @@ enum { RAD_ANIM_IMPORTANCE_EXACT = 0, RAD_ANIM_IMPORTANCE_PAPER = 1 };
 typedef struct rad_anim_options {
     rad_ff_options ff;          /* accuracy, quadrature, threads, progress */
     double tolerance;           /* a frame is converged when its unshot power
-                                   is at most tolerance x the emitted power
+                                   is at most tolerance x the emitted power,
+                                   the frame's or frame 0's, the larger
                                    (default 1e-12) */
     long steps;                 /* 0: converge each frame; K > 0: stop each
                                    frame after K shots (a partial solution);
