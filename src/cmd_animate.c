@@ -77,6 +77,13 @@ static void help(void)
            "      --tolerance T       a frame is converged when its unshot power is\n"
            "                          at most T x the emitted power, the frame's or\n"
            "                          frame 0's, the larger (default 1e-12)\n"
+           "      --max-iterations N  give up on a frame that has not converged after\n"
+           "                          N shots (exit 1; default 1000 n + 100000, n the\n"
+           "                          elements)\n"
+           "      --solver progressive  accepted, as solve's option: what animate does\n"
+           "                          (another solver is a usage error)\n"
+           "      --form-factors-method contour  accepted: the method animate\n"
+           "                          recomputes pairs with (hemicube is a usage error)\n"
            "      --steps K           stop each frame after K shots: a partial\n"
            "                          solution, as in an interactive session\n"
            "      --from-scratch      frame 0 too stops after --steps K shots:\n"
@@ -248,6 +255,29 @@ static int parse_option(anim_args *a, int opt, const char *arg)
     case OPT_ERRORS:
         a->errors = arg;
         a->reference = 1;
+        return 0;
+    /* solve's options that mean something here: animate is progressive
+     * refinement on the contour's form factors */
+    case OPT_SOLVER:
+        if (strcmp(arg, "progressive") != 0) {
+            cli_error("--solver: animate shoots (progressive refinement); it takes only "
+                      "progressive, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_MAX_ITERATIONS:
+        if (cli_parse_int(arg, 1, 2000000000, &k)) {
+            cli_error("--max-iterations needs a whole number from 1, not '%s'", arg);
+            return 2;
+        }
+        a->opt.max_shots = k;
+        return 0;
+    case OPT_FF_METHOD:
+        if (strcmp(arg, "contour") != 0) {
+            cli_error("--form-factors-method: animate recomputes form factors pair by pair "
+                      "with the contour integral; it takes only contour, not '%s'", arg);
+            return 2;
+        }
         return 0;
     }
     return cli_common_option(&a->common, opt, arg) == 0 ? 0 : 2;
@@ -839,6 +869,9 @@ int cmd_animate(int argc, char **argv)
         {"errors", required_argument, NULL, OPT_ERRORS},
         {"width", required_argument, NULL, OPT_WIDTH},
         {"height", required_argument, NULL, OPT_HEIGHT},
+        {"solver", required_argument, NULL, OPT_SOLVER},
+        {"max-iterations", required_argument, NULL, OPT_MAX_ITERATIONS},
+        {"form-factors-method", required_argument, NULL, OPT_FF_METHOD},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     anim_args a;

@@ -236,6 +236,19 @@ ok $? "--trace naming a frame's table: exit $rc"
 "$RADIOSITY" animate -q --errors same.x --log same.x room.scene all.changes > /dev/null 2> err
 rc=$?; [ $rc -eq 1 ] && grep -q "same.x: named by two outputs" err && [ ! -e same.x ]
 ok $? "--errors and --log naming one file: exit $rc, nothing written"
+# solve's options, where they mean something for animate
+"$RADIOSITY" animate -q --solver progressive --form-factors-method contour --elements 'o%d.tsv' \
+  --tolerance 1e-12 room.scene all.changes 2> /dev/null && cmp -s o5.tsv a5.tsv
+ok $? "--solver progressive --form-factors-method contour: accepted, the same frames"
+"$RADIOSITY" animate -q --solver gauss room.scene all.changes 2> err; rc=$?
+[ $rc -eq 2 ] && grep -q "takes only progressive" err
+ok $? "--solver gauss: a usage error (exit $rc)"
+"$RADIOSITY" animate -q --form-factors-method hemicube room.scene all.changes 2> err; rc=$?
+[ $rc -eq 2 ] && grep -q "takes only contour" err
+ok $? "--form-factors-method hemicube: a usage error (exit $rc)"
+"$RADIOSITY" animate -q --max-iterations 7 --report mi.json room.scene all.changes 2> err; rc=$?
+[ $rc -eq 1 ] && grep -q "frame 0: not converged after 7 shots" err && [ ! -e mi.json ]
+ok $? "--max-iterations 7: frame 0 gives up after 7 shots (exit $rc), no report"
 # the report's file names are JSON strings (RFC 8259, section 7: quote
 # and backslash escaped)
 cp room.scene 'q"b\\s.scene'
