@@ -199,11 +199,13 @@ static int parse_option(anim_args *a, int opt, const char *arg)
         }
         return 0;
     case OPT_STEPS:
+    case OPT_MAX_ITERATIONS: /* solve's option: the shots a frame may take */
         if (cli_parse_int(arg, 1, 2000000000, &k)) {
-            cli_error("--steps needs a whole number from 1, not '%s'", arg);
+            cli_error("--%s needs a whole number from 1, not '%s'",
+                      opt == OPT_STEPS ? "steps" : "max-iterations", arg);
             return 2;
         }
-        a->opt.steps = k;
+        *(opt == OPT_STEPS ? &a->opt.steps : &a->opt.max_shots) = k;
         return 0;
     case OPT_STRATEGY:
         if (cli_parse_int(arg, 1, 2, &a->opt.strategy)) {
@@ -264,13 +266,6 @@ static int parse_option(anim_args *a, int opt, const char *arg)
                       "progressive, not '%s'", arg);
             return 2;
         }
-        return 0;
-    case OPT_MAX_ITERATIONS:
-        if (cli_parse_int(arg, 1, 2000000000, &k)) {
-            cli_error("--max-iterations needs a whole number from 1, not '%s'", arg);
-            return 2;
-        }
-        a->opt.max_shots = k;
         return 0;
     case OPT_FF_METHOD:
         if (strcmp(arg, "contour") != 0) {
