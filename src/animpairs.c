@@ -421,10 +421,10 @@ static double time_changed(const rad_anim *a, const pair_list *pl, const rad_mes
 }
 
 /* New values of the listed pairs: computed on the mesh of the present
- * surfaces where both ends are present, 0 otherwise (and, with
- * time_changed, the seconds of the changed ones alone). */
+ * surfaces where both ends are present (rep->pairs_recomputed counts
+ * them), 0 otherwise; with time_changed, rep->t_changed. */
 static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij, double *fji,
-                             double *t_changed, rad_error *err)
+                             rad_anim_report *rep, rad_error *err)
 {
     rad_scene ps;
     rad_mesh pm;
@@ -454,8 +454,9 @@ static rad_status new_values(const rad_anim *a, const pair_list *pl, double *fij
         st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
     if (st == RAD_OK && nq > 0)
         st = rad_ff_pairs(&pm, &a->opt.ff, qi, qj, nq, vij, vji, err);
+    rep->pairs_recomputed = (double)nq;
     if (st == RAD_OK && a->opt.time_changed)
-        *t_changed = time_changed(a, pl, &pm, qi, qj, at, nq, vij, vji);
+        rep->t_changed = time_changed(a, pl, &pm, qi, qj, at, nq, vij, vji);
     for (size_t q = 0; st == RAD_OK && q < nq; q++) {
         fij[at[q]] = vij[q];
         fji[at[q]] = vji[q];
@@ -727,12 +728,9 @@ rad_status rad_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
             st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
     }
     if (st == RAD_OK)
-        st = new_values(a, &pl, fij, fji, &rep->t_changed, err);
+        st = new_values(a, &pl, fij, fji, rep, err);
     if (st == RAD_OK)
         st = start_redist(a, &pl, fij, fji, rep, err);
-    rep->pairs_recomputed = 0; /* computed: both ends present (the others become 0) */
-    for (size_t k = 0; k < pl.n; k++)
-        rep->pairs_recomputed += a->present[pl.pi[k]] && a->present[pl.pj[k]];
     free(fij);
     free(fji);
     free(pl.pi);

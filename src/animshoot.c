@@ -235,7 +235,10 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
     const double emitted = rad_anim_emitted(a);
     const double scale = emitted > a->emitted0 ? emitted : a->emitted0;
     double unshot = rad_anim_unshot(a);
-    long step = rep->shots; /* the log's final pass goes on counting (animate.c, close_log) */
+    /* the log's final pass numbers its shots on from the frame's (animate.c,
+     * close_log), and has max_shots of its own */
+    const long first = rep->shots;
+    long step = first;
     rep->emitted = emitted;
     for (;;) {
         if (a->rd.npending == 0 && unshot <= a->opt.tolerance * scale) {
@@ -244,7 +247,7 @@ rad_status rad_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_er
         }
         if (partial && a->opt.steps > 0 && step >= a->opt.steps)
             break;
-        if (step >= a->opt.max_shots)
+        if (step - first >= a->opt.max_shots)
             return rad_fail(err, RAD_ERR_NOCONV, "frame %d: not converged after %ld shots "
                             "(unshot power %.3g of %.3g emitted)", a->frame, step, unshot,
                             scale);

@@ -885,6 +885,11 @@ int cmd_animate(int argc, char **argv)
     }
     /* the report's t_changed: a frame's floor, beside the fresh solve's time */
     a.opt.time_changed = a.reference && a.report;
+    if (a.opt.steps > 0 && a.opt.max_shots > 0 && a.opt.max_shots < a.opt.steps) {
+        cli_error("--max-iterations %ld is below --steps %ld: every frame would give up "
+                  "before its steps", a.opt.max_shots, a.opt.steps);
+        return cli_usage_hint("animate");
+    }
     if (a.opt.partial_start && a.opt.steps == 0) {
         cli_error("--from-scratch needs --steps K");
         return cli_usage_hint("animate");

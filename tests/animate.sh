@@ -286,6 +286,18 @@ xform box move 0.375 0 0 < room.scene > m3.scene
 "$RADIOSITY" solve -q m3.scene --elements m3.tsv 2> /dev/null
 "$RADIOSITY" animate -q --steps 2 --converge-last --elements 'mv%d.tsv' room.scene moves.changes 2> /dev/null
 r=$(same mv3.tsv m3.tsv 1e-9); ok $? "three moves, 2 shots each, then converged: a fresh solve within 1e-9: $r"
+# The log's final pass (after partial frames, from frame 0 on here) goes
+# on numbering the frame's shots, and has --max-iterations of its own.
+"$RADIOSITY" animate -q --from-scratch --steps 3 --converge-last --tolerance 1e-14 \
+  --trace fp.tsv --report fp.json room.scene all.changes 2> /dev/null
+n=$(awk '/"frame": 5,/ { match($0, /"shots": [0-9]*/); print substr($0, RSTART + 9, RLENGTH - 9) }' fp.json)
+r=$(awk -F '\t' -v n="$n" '$1 == 5 { k++; if ($2 != k) bad = 1 }
+      END { print k " rows, " n " shots"; exit !(k > 0 && k == n && !bad) }' fp.tsv) &&
+  grep -q '"frame": 5,.*"log_pass": true' fp.json
+ok $? "the final pass numbers its shots on: frame 5's trace steps are 1..N: $r"
+"$RADIOSITY" animate -q --from-scratch --steps 3 --converge-last --tolerance 1e-14 \
+  --max-iterations $((n - 1)) --elements 'fp%d.tsv' room.scene all.changes 2> err; rc=$?
+ok $rc "--max-iterations $((n - 1)) (the frame's $n shots less one, the pass's shots apart): exit $rc $(head -c 100 err)"
 head -n 1 errs.tsv | grep -q '^frame	shots	seconds	pairs_recomputed	pairs_share	error	error_top1$'
 ok $? "--errors: the header"
 awk -F '\t' 'NR > 1 { n++; if ($1 != n - 1) bad = 1 } END { exit !(n == 6 && !bad) }' errs.tsv

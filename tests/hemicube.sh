@@ -80,7 +80,7 @@ for cmd in formfactor solve progress; do
 done
 for cmd in animate compare sweep; do
   "$RADIOSITY" $cmd $hc "$cube" "$cube" > "$work/out" 2> "$work/err"
-  ok $(($? != 2)) "$cmd does not take --form-factors-method (usage error)"
+  ok $(($? != 2)) "$cmd does not take the hemicube (usage error)"
 done
 "$RADIOSITY" solve -q $hc --solver progressive --matrix none --patches 2x2 "$cube" \
   > "$work/out" 2> "$work/err"

@@ -45,7 +45,7 @@ typedef struct rad_anim_shot {
     const struct rad_anim *anim; /* the animation shooting: its B, mesh and
                                    presence as they are after the shot (in
                                    frame 0 too, before rad_anim_create
-                                   returns it) */
+                                   returns it); valid during the call only */
 } rad_anim_shot;
 
 /* Called after each shot; non-zero stops the frame (RAD_ERR_INVALID,
