@@ -639,9 +639,11 @@ static int check_paths(const anim_run *r)
         cli_error("out of memory");
         return 1;
     }
-    for (int k = 0; k < 4; k++)
-        if (o[k].path && !(paths[n++] = strdup(o[k].path)))
+    for (int k = 0; k < 4 && !rc; k++)
+        if (o[k].path && !(paths[n++] = strdup(o[k].path))) {
+            cli_error("out of memory");
             rc = 1;
+        }
     for (int f = 0; f <= r->changes.nframes && !rc; f++) {
         const char *pat[2] = {a->elements, a->frames};
         for (int k = 0; k < 2 && !rc; k++) {

@@ -144,7 +144,8 @@ printf 'frame\nmove shade 0.125 0 0\n' > ghost.changes
   grep -q '"frame": 1,.*"pairs_recomputed": 0,' ghost.json && cmp -s g0.tsv g1.tsv
 ok $? "moving an absent object computes no pair and changes nothing"
 r=$(awk '/"frame": / { match($0, /"pairs_share": [0-9.e+-]*/); v = substr($0, RSTART + 15, RLENGTH - 15) + 0
-                      printf " %.3g", v; if (v > 1) bad = 1 } END { exit bad }' rep.json)
+                      printf " %.3g", v; n++; if (v > 1) bad = 1 } END { exit bad || n != 6 }' rep.json) &&
+  [ "$(grep -c '"pairs_share": [0-9]' rep.json)" -eq 6 ]
 ok $? "every frame's pairs_share is at most 1 (the box's removal too):$r"
 head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1	gather$'
 ok $? "the trace's header"
