@@ -159,6 +159,35 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
     into->seconds += from->seconds;
 }
 
+/* What rad_occ_pair and rad_occ_pair_route both start with: the pair's
+ * surfaces (*sa, *sb), its polygons in a frame at i's centroid (*li, *lj,
+ * *origin), its snap (sp->snap) and the clip of each by the other's plane
+ * (*clip).  Returns 1 so, 0 when no surface can block the pair, -1 when
+ * memory ran out. */
+static int pair_start(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *sa, int *sb,
+                      rad_ff_poly *li, rad_ff_poly *lj, rad_vec3 *origin, int *clip)
+{
+    const rad_occ *o = w->occ;
+    *sa = o->esurf[i];
+    *sb = o->esurf[j];
+    if (*sa == *sb)
+        return 0;
+    int a = *sa < *sb ? *sa : *sb, b = *sa < *sb ? *sb : *sa;
+    size_t p = pair_index(a, b, o->nsurf);
+    if (o->cand_off[p + 1] == o->cand_off[p])
+        return 0;
+    if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
+        return -1;
+    occ_space *sp = w->space;
+    *origin = polys[i].centroid;
+    if (local_frame(sp, &polys[i], &polys[j], *origin, li, lj))
+        return -1;
+    sp->snap = occ_pair_snap(o, *sa, *sb, o->cand + o->cand_off[p],
+                             (int)(o->cand_off[p + 1] - o->cand_off[p]));
+    *clip = occ_clip_pair(sp, li->v, li->n, li->normal, lj->v, lj->n, lj->normal, sp->snap);
+    return 1;
+}
+
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
                  double *errest, double *scale)
 {
@@ -168,26 +197,16 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
         *scale = fabs(s0);
     if (!o || !(*s > 0))
         return 0;
-    int sa = o->esurf[i], sb = o->esurf[j];
     w->stats.pairs_tested++;
-    if (sa == sb)
-        return 0;
-    int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
-    size_t p = pair_index(a, b, o->nsurf);
-    if (o->cand_off[p + 1] == o->cand_off[p])
-        return 0;
     double t0 = rad_seconds();
-    if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
-        return -1;
-    occ_space *sp = w->space;
+    int sa, sb, r;
     rad_ff_poly li, lj;
-    rad_vec3 origin = polys[i].centroid;
-    if (local_frame(sp, &polys[i], &polys[j], origin, &li, &lj))
-        return -1;
+    rad_vec3 origin;
+    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r);
+    if (go <= 0)
+        return go;
+    occ_space *sp = w->space;
     const rad_ff_poly *pi = &li, *pj = &lj;
-    sp->snap = occ_pair_snap(o, sa, sb, o->cand + o->cand_off[p],
-                         (int)(o->cand_off[p + 1] - o->cand_off[p]));
-    int r = occ_clip_pair(sp, pi->v, pi->n, pi->normal, pj->v, pj->n, pj->normal, sp->snap);
     int nb = r > 0 ? occ_pair_blockers(o, sp, sa, sb, pi, pj, origin) : r;
     double snew = *s, e0 = errest ? *errest : 0, eocc = 0;
     if (nb > 0) {
@@ -207,6 +226,28 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
         *scale = fmax(fabs(snew), OCC_FLOOR * s0);
     w->stats.seconds += rad_seconds() - t0;
     return nb < 0 ? -1 : 0;
+}
+
+int rad_occ_pair_route(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *ids,
+                       int cap, double *snap)
+{
+    *snap = 0;
+    if (!w->occ)
+        return 0;
+    int sa, sb, r;
+    rad_ff_poly li, lj;
+    rad_vec3 origin;
+    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r);
+    if (go <= 0)
+        return go;
+    occ_space *sp = w->space;
+    *snap = sp->snap;
+    const int nb = r > 0 ? occ_pair_shaft(w->occ, sp, sa, sb, &li, &lj, origin) : r;
+    if (nb > cap)
+        return -2;
+    for (int k = 0; k < nb; k++)
+        ids[k] = sp->bid[k];
+    return nb;
 }
 
 void rad_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st)

@@ -99,6 +99,15 @@ void rad_occ_work_free(rad_occ_work *w);
 int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double *s,
                  double *errest, double *scale);
 
+/* What rad_occ_pair's work on the pair (i, j) rests on, its route: the
+ * snap tolerance (*snap, 0 when no surface is a candidate) and the
+ * surfaces the element shaft keeps, before the solids cull them (ids,
+ * room for cap).  Two scenes that give a pair the same route, on the same
+ * element and blocker geometry, give it the same bits (animpairs.c).
+ * Returns their count, -1 when memory ran out, -2 beyond cap. */
+int rad_occ_pair_route(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *ids,
+                       int cap, double *snap);
+
 /* The visibility fields of a form-factor record (vis_*) from v. */
 void rad_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st);
 

@@ -432,9 +432,10 @@ rad_status rad_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_occ
 }
 
 /* Collect the blockers of the pair: the surface pair's candidates that the
- * element shaft does not clear.  Returns their count, or -1. */
-int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
-                      const rad_ff_poly *pj, rad_vec3 origin)
+ * element shaft does not clear, before the solids cull them.  Returns
+ * their count (ids in sp->bid), or -1. */
+int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                   const rad_ff_poly *pj, rad_vec3 origin)
 {
     int a = sa < sb ? sa : sb, b = sa < sb ? sb : sa;
     size_t p = pair_index(a, b, o->nsurf);
@@ -470,5 +471,13 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
         }
         sp->bid[nb++] = c;
     }
-    return o->mode == RAD_OCC_ALL ? nb : occ_solid_cull(o, sp, nb, origin);
+    return nb;
+}
+
+/* The same, culled by the solids (occsolid.c): the pair's blockers. */
+int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                      const rad_ff_poly *pj, rad_vec3 origin)
+{
+    const int nb = occ_pair_shaft(o, sp, sa, sb, pi, pj, origin);
+    return nb <= 0 || o->mode == RAD_OCC_ALL ? nb : occ_solid_cull(o, sp, nb, origin);
 }

@@ -321,6 +321,8 @@ int occ_load_rem(occ_space *sp, const polyset *s, int k);
 int occ_clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const rad_vec3 *q,
                   int nq, rad_vec3 qn, double tol);
 double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand);
+int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                   const rad_ff_poly *pj, rad_vec3 origin);
 int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
                       const rad_ff_poly *pj, rad_vec3 origin);
 
