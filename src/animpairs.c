@@ -39,11 +39,11 @@
  * computes it from the same numbers in the same order.  (On the Cornell
  * moving box the surface test alone recomputed 17% to 33% of the pairs
  * per frame, the pairs' routes 8% to 10%.)  Outside those the fill takes
- * the same route for the pair, on
- * the same numbers as long as the scene's box stays the same (it sets the
- * frame, rad_mesh_normalized, and the tolerance, rad_occ_scene_snap): a
- * move that grows the box changes them by round-off for every pair (seen:
- * the box moved 1000 mm out of the Cornell box, frames 1.1e-9 off).
+ * the same route for the pair, on the same numbers as long as the
+ * scene's box stays the same (it sets the frame, rad_mesh_normalized,
+ * and the tolerance, rad_occ_scene_snap): a move that grows the box
+ * changes them by round-off for every pair (seen: the box moved 1000 mm
+ * out of the Cornell box, frames 1.1e-9 off).
  *
  * How: the pairs go to rad_ff_pairs (ffpairs.h), which computes each as
  * the full fill would on the mesh of the present surfaces of this frame

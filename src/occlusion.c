@@ -161,11 +161,11 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
 
 /* What rad_occ_pair and rad_occ_pair_route both start with: the pair's
  * surfaces (*sa, *sb), its polygons in a frame at i's centroid (*li, *lj,
- * *origin), its snap (sp->snap) and the clip of each by the other's plane
- * (*clip).  Returns 1 so, 0 when no surface can block the pair, -1 when
- * memory ran out. */
+ * *origin), its snap (sp->snap), the clip of each by the other's plane
+ * (*clip) and the clock when there is work (*t0).  Returns 1 so, 0 when
+ * no surface can block the pair, -1 when memory ran out. */
 static int pair_start(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *sa, int *sb,
-                      rad_ff_poly *li, rad_ff_poly *lj, rad_vec3 *origin, int *clip)
+                      rad_ff_poly *li, rad_ff_poly *lj, rad_vec3 *origin, int *clip, double *t0)
 {
     const rad_occ *o = w->occ;
     *sa = o->esurf[i];
@@ -176,6 +176,7 @@ static int pair_start(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, i
     size_t p = pair_index(a, b, o->nsurf);
     if (o->cand_off[p + 1] == o->cand_off[p])
         return 0;
+    *t0 = rad_seconds(); /* the work's time starts here (stats.seconds) */
     if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
         return -1;
     occ_space *sp = w->space;
@@ -198,11 +199,11 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     if (!o || !(*s > 0))
         return 0;
     w->stats.pairs_tested++;
-    double t0 = rad_seconds();
+    double t0 = 0;
     int sa, sb, r;
     rad_ff_poly li, lj;
     rad_vec3 origin;
-    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r);
+    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r, &t0);
     if (go <= 0)
         return go;
     occ_space *sp = w->space;
@@ -235,9 +236,10 @@ int rad_occ_pair_route(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, 
     if (!w->occ)
         return 0;
     int sa, sb, r;
+    double t0;
     rad_ff_poly li, lj;
     rad_vec3 origin;
-    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r);
+    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r, &t0);
     if (go <= 0)
         return go;
     occ_space *sp = w->space;

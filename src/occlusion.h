@@ -102,9 +102,12 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
 /* What rad_occ_pair's work on the pair (i, j) rests on, its route: the
  * snap tolerance (*snap, 0 when no surface is a candidate) and the
  * surfaces the element shaft keeps, before the solids cull them (ids,
- * room for cap).  Two scenes that give a pair the same route, on the same
- * element and blocker geometry, give it the same bits (animpairs.c).
- * Returns their count, -1 when memory ran out, -2 beyond cap. */
+ * room for cap).  Two scenes that give a pair the same route give it the
+ * same bits when they also agree on the pair's elements, on those
+ * surfaces, on the solids they belong to (every member: the cull reads
+ * the solid's planes) and on the scene's frame and snap (animpairs.c
+ * checks all of it).  Returns their count, -1 when memory ran out, -2
+ * beyond cap. */
 int rad_occ_pair_route(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *ids,
                        int cap, double *snap);
 
