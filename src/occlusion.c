@@ -159,33 +159,40 @@ void rad_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
     into->seconds += from->seconds;
 }
 
-/* What rad_occ_pair and rad_occ_pair_route both start with: the pair's
- * surfaces (*sa, *sb), its polygons in a frame at i's centroid (*li, *lj,
- * *origin), its snap (sp->snap), the clip of each by the other's plane
- * (*clip) and the clock when there is work (*t0).  Returns 1 so, 0 when
- * no surface can block the pair, -1 when memory ran out. */
-static int pair_start(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, int *sa, int *sb,
-                      rad_ff_poly *li, rad_ff_poly *lj, rad_vec3 *origin, int *clip, double *t0)
+/* What rad_occ_pair and rad_occ_pair_route both start with (pair_start):
+ * the pair's surfaces, its polygons in a frame at i's centroid, the clip
+ * of each by the other's plane, and the clock when there is work. */
+typedef struct pair_frame {
+    int sa, sb, clip;
+    rad_ff_poly li, lj;
+    rad_vec3 origin;
+    double t0;
+} pair_frame;
+
+/* Fill f and the pair's snap (sp->snap).  Returns 1 so, 0 when no
+ * surface can block the pair, -1 when memory ran out. */
+static int pair_start(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, pair_frame *f)
 {
     const rad_occ *o = w->occ;
-    *sa = o->esurf[i];
-    *sb = o->esurf[j];
-    if (*sa == *sb)
+    f->sa = o->esurf[i];
+    f->sb = o->esurf[j];
+    if (f->sa == f->sb)
         return 0;
-    int a = *sa < *sb ? *sa : *sb, b = *sa < *sb ? *sb : *sa;
+    int a = f->sa < f->sb ? f->sa : f->sb, b = f->sa < f->sb ? f->sb : f->sa;
     size_t p = pair_index(a, b, o->nsurf);
     if (o->cand_off[p + 1] == o->cand_off[p])
         return 0;
-    *t0 = rad_seconds(); /* the work's time starts here (stats.seconds) */
+    f->t0 = rad_seconds(); /* the work's time starts here (stats.seconds) */
     if (!w->space && !(w->space = calloc(1, sizeof(occ_space))))
         return -1;
     occ_space *sp = w->space;
-    *origin = polys[i].centroid;
-    if (local_frame(sp, &polys[i], &polys[j], *origin, li, lj))
+    f->origin = polys[i].centroid;
+    if (local_frame(sp, &polys[i], &polys[j], f->origin, &f->li, &f->lj))
         return -1;
-    sp->snap = occ_pair_snap(o, *sa, *sb, o->cand + o->cand_off[p],
+    sp->snap = occ_pair_snap(o, f->sa, f->sb, o->cand + o->cand_off[p],
                              (int)(o->cand_off[p + 1] - o->cand_off[p]));
-    *clip = occ_clip_pair(sp, li->v, li->n, li->normal, lj->v, lj->n, lj->normal, sp->snap);
+    f->clip = occ_clip_pair(sp, f->li.v, f->li.n, f->li.normal, f->lj.v, f->lj.n, f->lj.normal,
+                            sp->snap);
     return 1;
 }
 
@@ -199,16 +206,13 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     if (!o || !(*s > 0))
         return 0;
     w->stats.pairs_tested++;
-    double t0 = 0;
-    int sa, sb, r;
-    rad_ff_poly li, lj;
-    rad_vec3 origin;
-    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r, &t0);
+    pair_frame f;
+    const int go = pair_start(w, polys, i, j, &f);
     if (go <= 0)
         return go;
     occ_space *sp = w->space;
-    const rad_ff_poly *pi = &li, *pj = &lj;
-    int nb = r > 0 ? occ_pair_blockers(o, sp, sa, sb, pi, pj, origin) : r;
+    const rad_ff_poly *pi = &f.li, *pj = &f.lj;
+    int nb = f.clip > 0 ? occ_pair_blockers(o, sp, f.sa, f.sb, pi, pj, f.origin) : f.clip;
     double snew = *s, e0 = errest ? *errest : 0, eocc = 0;
     if (nb > 0) {
         w->stats.pairs_blockable++;
@@ -225,7 +229,7 @@ int rad_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, double
     *s = snew;
     if (scale)
         *scale = fmax(fabs(snew), OCC_FLOOR * s0);
-    w->stats.seconds += rad_seconds() - t0;
+    w->stats.seconds += rad_seconds() - f.t0;
     return nb < 0 ? -1 : 0;
 }
 
@@ -235,16 +239,14 @@ int rad_occ_pair_route(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, 
     *snap = 0;
     if (!w->occ)
         return 0;
-    int sa, sb, r;
-    double t0;
-    rad_ff_poly li, lj;
-    rad_vec3 origin;
-    const int go = pair_start(w, polys, i, j, &sa, &sb, &li, &lj, &origin, &r, &t0);
+    pair_frame f;
+    const int go = pair_start(w, polys, i, j, &f);
     if (go <= 0)
         return go;
     occ_space *sp = w->space;
     *snap = sp->snap;
-    const int nb = r > 0 ? occ_pair_shaft(w->occ, sp, sa, sb, &li, &lj, origin) : r;
+    const int nb =
+        f.clip > 0 ? occ_pair_shaft(w->occ, sp, f.sa, f.sb, &f.li, &f.lj, f.origin) : f.clip;
     if (nb > cap)
         return -2;
     for (int k = 0; k < nb; k++)
