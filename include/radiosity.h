@@ -182,6 +182,9 @@ RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_er
 RAD_API void rad_mesh_free(rad_mesh *mesh);
 /* The vertex v (0..nverts-1) of element e. */
 RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
+/* Elements the scene's mesh specification makes (a double: it may exceed
+ * any int), without meshing. */
+RAD_API double rad_scene_element_count(const rad_scene *scene);
 
 /* ---- form factors (formfactor.c) ---------------------------------------- */
 
@@ -427,6 +430,15 @@ RAD_API double rad_solve_bytes_for(int n, const rad_solve_options *opt);
 
 /* Bytes of memory available now (Linux MemAvailable), 0 if unknown. */
 RAD_API double rad_memory_available(void);
+/* Refuse (RAD_ERR_TOOBIG) when `need` bytes exceed what the machine allows
+ * now (rad_memory_limit); `what` names the need in the message.  *have
+ * (may be NULL) receives the limit, 0 if unknown. */
+RAD_API rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err);
+
+/* The smallest of the memory available now (MemAvailable), the address
+ * space and data limits (RLIMIT_AS, RLIMIT_DATA) and the cgroup's
+ * memory.max less its memory.current; 0 if none is known. */
+RAD_API double rad_memory_limit(void);
 
 /* ---- vertex radiosity (smooth.c) ---------------------------------------- */
 

@@ -46,7 +46,6 @@
 #include <time.h>
 
 #include "animint.h"
-#include "radiosity/pipeline.h"
 #include "status.h"
 #include "vec.h"
 

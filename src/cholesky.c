@@ -65,7 +65,7 @@
 #include "solvers.h"
 #include "status.h"
 
-#define RAD_RCOND_MIN 1e-10 /* as gauss (solve.c) */
+#define RAD_RCOND_MIN 1e-10 /* as gauss (lusolve.c) */
 
 void rad_report_fallback(rad_solve_report *rep, const char *why)
 {
@@ -231,7 +231,7 @@ static double minv_norm_inf(const chol_sys *s)
     return est;
 }
 
-/* The bound F's error puts on B, as gauss (solve.c); RAD_ERR_SINGULAR
+/* The bound F's error puts on B, as gauss (lusolve.c); RAD_ERR_SINGULAR
  * when that error could make the system singular. */
 static rad_status ff_bound(const chol_sys *s, const rad_solve_options *opt,
                            rad_solve_report *rep, rad_error *err)

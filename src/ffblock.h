@@ -60,14 +60,4 @@ rad_status rad_ff_block_fill(rad_ff_block *b, const int *rows, int nr, const int
 rad_status rad_ff_block_pairs(rad_ff_block *b, const int *pi, const int *pj, size_t np,
                               double *fij, double *fji, rad_error *err);
 
-/* Shared with ffmatrix.c: the element polygons of a (normalized) mesh,
- * each given the scene's snap (rad_occ_scene_snap, occlusion.h;
- * rad_ff_promise, each mode's promise, is in formfactor.h). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, double snap, rad_ff_poly **polys,
-                             rad_vec3 **pts, rad_ff_edge **edges);
-/* The fill's statistics of a dense F (n x n): pairs, extremes, the
- * classic rule's faults, rows summing above 1 + RAD_ROW_SUM_SLACK; the
- * error fields are left to the caller (also the hemicube's, hcmatrix.c). */
-void rad_ff_fill_stats(const double *F, int n, rad_ff_stats *st);
-
 #endif /* RAD_FFBLOCK_H */

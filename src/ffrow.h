@@ -80,10 +80,4 @@ void rad_ffrow_stats(const rad_ffrow *row, rad_ff_stats *st, double *min_row_sum
 /* The threads one column is split among. */
 int rad_ffrow_threads(const rad_ffrow *row);
 
-/* Shared with the dense fill (defined in ffmatrix.c): the element polygons
- * as the kernel wants them, each given the scene's snap
- * (rad_occ_scene_snap; rad_ff_promise is in formfactor.h). */
-rad_status rad_ff_mesh_polys(const rad_mesh *m, double snap, rad_ff_poly **polys,
-                             rad_vec3 **pts, rad_ff_edge **edges);
-
 #endif /* RAD_FFROW_H */

@@ -154,16 +154,6 @@ static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
     return ln_gauss3_pts(pa, qb, v3(0, 0, 0), p->len, q->len, inv_s2);
 }
 
-/* Colinear (formfactor.h).  The classic rule's Gauss points would hit or
- * nearly hit r = 0 there, so the paper integrates them in closed form. */
-int rad_ff_colinear(const ff_edge *p, const ff_edge *q)
-{
-    rad_vec3 w = v3_sub(q->p0, p->p0);
-    rad_vec3 perp = v3_sub(w, v3_scale(p->e, v3_dot(w, p->e)));
-    double lmax = p->len > q->len ? p->len : q->len;
-    return v3_dot(perp, perp) <= 1e-24 * lmax * lmax;
-}
-
 /* ---- one polygon pair ---------------------------------------------------- */
 
 /* Signed distances of p's vertices from the plane (n, c), snapped to 0
@@ -188,25 +178,6 @@ static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, doubl
         *neg |= s < 0;
     }
     return pos;
-}
-
-int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, ff_edge *e)
-{
-    int m = 0;
-    for (int k = 0; k < n; k++) {
-        rad_vec3 a = v3_sub(p[k], origin), b = v3_sub(p[(k + 1) % n], origin);
-        ff_edge *x = &e[m];
-        x->v0 = p[k];
-        x->p0 = a;
-        x->d = v3_sub(b, a);
-        x->mid = v3_add(a, v3_scale(x->d, 0.5));
-        x->len = v3_norm(x->d);
-        if (!(x->len > 0))
-            continue;
-        x->e = v3_scale(x->d, 1.0 / x->len);
-        m++;
-    }
-    return m;
 }
 
 void rad_ff_scratch_init(rad_ff_scratch *w)

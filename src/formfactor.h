@@ -65,8 +65,20 @@ void rad_ff_poly_make(rad_ff_poly *poly, const rad_vec3 *v, int n, rad_ff_edge *
 int rad_ff_edges(const rad_vec3 *p, int n, rad_vec3 origin, rad_ff_edge *e);
 
 /* Each accuracy mode's promise on an entry's relative error: 1e-6
- * default, 1e-9 reference, NaN classic (defined in ffmatrix.c). */
+ * default, 1e-9 reference, NaN classic (ffprim.c, as the rest of this
+ * group). */
 double rad_ff_promise(rad_accuracy a);
+
+/* The element polygons of a (normalized) mesh as the kernel wants them,
+ * with contiguous vertices, each given the scene's snap
+ * (rad_occ_scene_snap, occlusion.h): every fill (ffmatrix.c, ffblock.c,
+ * ffrow.c) must see the same polygons. */
+rad_status rad_ff_mesh_polys(const rad_mesh *m, double snap, rad_ff_poly **polys,
+                             rad_vec3 **pts, rad_ff_edge **edges);
+/* The fill's statistics of a dense F (n x n): pairs, extremes, the
+ * classic rule's faults, rows summing above 1 + RAD_ROW_SUM_SLACK; the
+ * error fields are left to the caller (also the hemicube's, hcmatrix.c). */
+void rad_ff_fill_stats(const double *F, int n, rad_ff_stats *st);
 
 /* F from a to b.  *contour receives the symmetric contour sum S (so that
  * F_ba = S / (2 pi A_b)); *errest (may be NULL) an estimate of the

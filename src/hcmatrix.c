@@ -35,7 +35,6 @@
 #include "ffblock.h"
 #include "hemicube.h"
 #include "mesh.h"
-#include "radiosity/pipeline.h" /* rad_memory_limit */
 #include "status.h"
 
 /* Rows [i0, i1) into F, in parallel; returns the first failure. */

@@ -58,7 +58,6 @@
 #include <string.h>
 
 #include "hemicube.h"
-#include "radiosity/pipeline.h"
 #include "radiosity/render.h"
 #include "status.h"
 #include "vec.h"

@@ -453,3 +453,13 @@ rad_status rad_mesh_normalized(const rad_mesh *m, rad_mesh *out, rad_frame *fram
         *frame = fr;
     return RAD_OK;
 }
+
+double rad_scene_element_count(const rad_scene *scene)
+{
+    double n = 0;
+    for (int s = 0; s < scene->nsurfaces; s++) {
+        const rad_surface *f = &scene->surfaces[s];
+        n += f->kind == RAD_SURFACE_QUAD ? (double)f->mesh_n * (double)f->mesh_m : 1.0;
+    }
+    return n;
+}

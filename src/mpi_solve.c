@@ -54,7 +54,7 @@
 #include "solvers.h"
 #include "status.h"
 
-#define RAD_RCOND_MIN 1e-10 /* as gauss (solve.c) */
+#define RAD_RCOND_MIN 1e-10 /* as gauss (lusolve.c) */
 
 
 /* What one job works on, on every process. */

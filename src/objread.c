@@ -42,7 +42,7 @@
 
 #include "objread.h"
 #include "readnum.h"
-#include "scene.h"
+#include "polycheck.h"
 #include "scenebuild.h"
 #include "status.h"
 

@@ -188,138 +188,6 @@ static int cut_set(occ_space *sp, const pair_ctx *c, int e, int slivers, polyset
     return 0;
 }
 
-/* Append polygon p (n vertices) to sp->db with its bounding sphere
- * (centre cen, radius rad); 0 or -1. */
-static int push_db(occ_space *sp, const rad_vec3 *p, int n, rad_vec3 cen, double rad)
-{
-    int k = sp->db.np;
-    if (occ_grow_v3(&sp->qcen, &sp->capqc, k + 1) || occ_grow_d(&sp->qrad, &sp->capqr, k + 1) ||
-        occ_ps_push(&sp->db, p, n))
-        return -1;
-    sp->qcen[k] = cen;
-    sp->qrad[k] = rad;
-    return 0;
-}
-
-/* The bounding sphere of p about its vertex mean. */
-static void sphere(const rad_vec3 *p, int n, rad_vec3 *cen, double *rad)
-{
-    rad_vec3 c = poly_mean(p, n);
-    double r2 = 0;
-    for (int k = 0; k < n; k++) {
-        rad_vec3 e = v3_sub(p[k], c);
-        double x = v3_dot(e, e);
-        r2 = x > r2 ? x : r2;
-    }
-    *cen = c;
-    *rad = sqrt(r2);
-}
-
-/* The bounding spheres of sp->dom's pieces, for split_dom. */
-static int dom_spheres(occ_space *sp)
-{
-    int np = sp->dom.np;
-    if (occ_grow_v3(&sp->pcen, &sp->cappc, np) || occ_grow_d(&sp->prad, &sp->cappr, np))
-        return -1;
-    for (int k = 0; k < np; k++)
-        sphere(sp->dom.v + sp->dom.first[k], sp->dom.first[k + 1] - sp->dom.first[k],
-               &sp->pcen[k], &sp->prad[k]);
-    return 0;
-}
-
-/* Split every piece of sp->dom that the plane through a with unit normal
- * nrm crosses (their spheres in sp->pcen / prad, kept up to date; a
- * piece one of whose sides would have no more than `sliver` area, or
- * whose two sides would overlap, below, is left whole), but
- * with a wedge w (not NULL) and c->events OCC_SPLIT_WEDGES only where the
- * plane's chord of the piece meets w.  A
- * piece whose bounding sphere the plane misses is copied without looking
- * at its vertices: with a K-gon blocker there are O(K) planes and O(K^2)
- * pieces, most of them far from any one plane (issue 20: reference mode
- * slowed as K^4).
- *
- * A plane that is all but the piece's own plane (an event plane through
- * an edge and a vertex that both lie on the outer element's plane, but for
- * the coordinates' round-off) meets it where round-off says: the snap can
- * set two neighbouring vertices on it and let it cross an edge elsewhere
- * too, and the two sides then overlap in the triangle between.  Seen in a
- * fuzzed room turned and moved 1e6 away (tests/geomfuzz.py seed 55, scene
- * 375): the sides of 97% of a floor strip overlapped by 1.8% of it, and
- * two pairs, integrated over their pieces, came out 1.7% and 2.2% high
- * in both modes with estimates of 1.5e-7 and 5e-7 of themselves.  (The
- * penumbras' partition below cuts with occ_cut_piece, whose sides could
- * overlap the same way; not seen.)  Such a plane has no event on the
- * piece to cut; the piece stays whole when the sides' areas add up to
- * more than its own.  Returns 0 or -1. */
-static int split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
-                     const occ_wedge *w, double sliver)
-{
-    occ_ps_clear(&sp->db);
-    for (int k = 0; k < sp->dom.np; k++) {
-        const rad_vec3 *p = sp->dom.v + sp->dom.first[k];
-        int n = sp->dom.first[k + 1] - sp->dom.first[k];
-        double lo, hi;
-        if (fabs(v3_dot(nrm, v3_sub(sp->pcen[k], a))) > sp->prad[k] + c->snap) {
-            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
-                return -1;
-            continue;
-        }
-        if (occ_grow_d(&sp->d, &sp->capd, n) || occ_grow_v3(&sp->tmp, &sp->captmp, n + 1))
-            return -1;
-        poly_distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
-        poly_settle_signs(sp->d, n, &lo, &hi);
-        if (lo >= 0 || hi <= 0 ||
-            (w && c->events == OCC_SPLIT_WEDGES && occ_event_misses(w, p, sp->d, n, c->snap))) {
-            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
-                return -1;
-            continue;
-        }
-        if (occ_grow_v3(&sp->tmp2, &sp->captmp2, n + 1))
-            return -1;
-        const int m0 = poly_clip_side(p, sp->d, n, -1.0, sp->tmp, n + 1);
-        const int m1 = poly_clip_side(p, sp->d, n, 1.0, sp->tmp2, n + 1);
-        const double a0 = m0 >= 3 ? poly_area(sp->tmp, m0) : 0;
-        const double a1 = m1 >= 3 ? poly_area(sp->tmp2, m1) : 0;
-        if (!(a0 > sliver) || !(a1 > sliver) || a0 + a1 > (1 + 1e-9) * poly_area(p, n)) {
-            /* a sliver is not cut off (it would be lost, and what is
-             * hidden there with it: occspace.c, occ_cut_piece), and where
-             * the sides overlap the plane is all but the piece's own (see
-             * above): the piece stays whole */
-            if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
-                return -1;
-            continue;
-        }
-        rad_vec3 cen;
-        double rad;
-        sphere(sp->tmp, m0, &cen, &rad);
-        if (push_db(sp, sp->tmp, m0, cen, rad))
-            return -1;
-        sphere(sp->tmp2, m1, &cen, &rad);
-        if (push_db(sp, sp->tmp2, m1, cen, rad))
-            return -1;
-    }
-    polyset t = sp->dom;
-    sp->dom = sp->db;
-    sp->db = t;
-    occ_swap_v3(&sp->pcen, &sp->cappc, &sp->qcen, &sp->capqc);
-    double *tr = sp->prad;
-    sp->prad = sp->qrad;
-    sp->qrad = tr;
-    int ti = sp->cappr;
-    sp->cappr = sp->capqr;
-    sp->capqr = ti;
-    return 0;
-}
-
-/* Split every piece of sp->dom that the plane through a with unit
- * normal nrm crosses, after occeee.c has cut pieces its own way:
- * split_dom with their spheres measured again, leaving whole only the
- * pieces with a side without area, as occeee.c's chords do.  0 or -1. */
-int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a)
-{
-    return dom_spheres(sp) ? -1 : split_dom(sp, c, nrm, a, NULL, 0);
-}
-
 /* Split sp->dom along the planes through an edge of e and a vertex of f
  * (kind OCC_EVENT_EV when e is the blocker, OCC_EVENT_VE when e is the
  * inner element: their wedges, occevent.c). */
@@ -333,7 +201,7 @@ static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e
             if (!poly_edge_plane(e, ne, k, f[l], &nrm))
                 continue;
             occ_event_wedge(&w, kind, nrm, e[k], e[(k + 1) % ne], f[l]);
-            if (split_dom(sp, c, nrm, e[k], whole ? NULL : &w, c->sliver))
+            if (occ_split_dom(sp, c, nrm, e[k], whole ? NULL : &w, c->sliver))
                 return -1;
         }
     return 0;
@@ -393,7 +261,7 @@ static int split_blocker_pair(occ_space *sp, const pair_ctx *c, int a, int b)
             if (!poly_edge_plane(pa, na, k, pb[l], &nrm))
                 continue;
             poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
-            if (lo < 0 && hi > 0 && split_dom(sp, c, nrm, pa[k], NULL, c->sliver))
+            if (lo < 0 && hi > 0 && occ_split_dom(sp, c, nrm, pa[k], NULL, c->sliver))
                 return -1;
         }
     return 0;
@@ -430,7 +298,7 @@ static int split_two_blockers(occ_space *sp, const pair_ctx *c)
  * own plane and the two-blocker planes are always cut. */
 static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
 {
-    if (dom_spheres(sp))
+    if (occ_dom_spheres(sp))
         return -1;
     double size = 0; /* of the outer element, from its first vertex */
     for (int k = 1; k < no; k++)
@@ -440,7 +308,7 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
         const int whole = c->events == OCC_SPLIT_WEDGES &&
                           near_outer(c, p, np, o[0], OCC_NEAR_OUTER * size);
-        if (split_dom(sp, c, sp->bn[b], p[0], NULL, c->sliver) ||
+        if (occ_split_dom(sp, c, sp->bn[b], p[0], NULL, c->sliver) ||
             split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV, whole) ||
             split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE, whole))
             return -1;

@@ -330,8 +330,15 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
 rad_status occ_find_solids(rad_occ *o);
 int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
-/* occdomain.c: the domain of integration; sp->dom cut by a whole plane */
+/* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occsplit.c: sp->dom's pieces split by a plane (their bounding spheres
+ * first, then every piece the plane crosses; with a wedge w only where
+ * its chord meets w), or by a whole plane after occeee.c's cuts */
+int occ_dom_spheres(occ_space *sp);
+int occ_split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
+                  const occ_wedge *w, double sliver);
 int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a);
 
 /* occevent.c: the wedges of the event planes */

@@ -33,30 +33,6 @@ void rad_pipeline_options_init(rad_pipeline_options *opt)
     rad_solve_options_init(&opt->solve);
 }
 
-double rad_scene_element_count(const rad_scene *scene)
-{
-    double n = 0;
-    for (int s = 0; s < scene->nsurfaces; s++) {
-        const rad_surface *f = &scene->surfaces[s];
-        n += f->kind == RAD_SURFACE_QUAD ? (double)f->mesh_n * (double)f->mesh_m : 1.0;
-    }
-    return n;
-}
-
-rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err)
-{
-    double limit = rad_memory_limit();
-    if (have)
-        *have = limit;
-    if (limit > 0 && need > limit)
-        return rad_fail(err, RAD_ERR_TOOBIG,
-                        "%s need %.0f MiB, but only %.0f MiB are available (the least of "
-                        "free memory, the process limits and the cgroup's); use a coarser "
-                        "--mesh",
-                        what, need / 1048576.0, limit / 1048576.0);
-    return RAD_OK;
-}
-
 const char *rad_matrix_name(int mode)
 {
     static const char *const names[] = {"auto", "dense", "none"};

@@ -31,7 +31,7 @@
 #include "radiosity/plyread.h"
 #include "radiosity.h"
 #include "radiosity/render.h"
-#include "scene.h"
+#include "polycheck.h"
 #include "readfile.h"
 #include "status.h"
 

@@ -444,46 +444,23 @@ static void ambient_display(int n, const double *B, const double *rho, const dou
 
 /* ---- the trace ----------------------------------------------------------- */
 
-/* The per-step rows handed to opt->on_shot, and their reference. */
+/* The per-step rows handed to opt->on_shot, and their reference: the
+ * caller's (rad_solve_progressive solves for it when it has F), or none,
+ * and then the rows' RMS error is NaN. */
 typedef struct trace {
     int on;
     const double *Bref;
-    double *own;                /* the reference when we solved for it */
 } trace;
 
-static rad_status trace_open(trace *tr, const rad_mesh *m, const double *F,
-                             const rad_solve_options *opt, rad_error *err)
+static void trace_open(trace *tr, const rad_solve_options *opt)
 {
     memset(tr, 0, sizeof *tr);
-    if (!opt->on_shot)
-        return RAD_OK;
-    tr->Bref = opt->reference;
-    tr->on = 1;
-    if (!tr->Bref && !F) /* matrix-free: no gauss reference, rms is NaN */
-        return RAD_OK;
-    if (!tr->Bref) { /* the converged solution, by gauss */
-        rad_solve_options g = *opt;
-        g.solver = RAD_SOLVER_GAUSS;
-        g.on_shot = NULL;
-        g.reference = NULL;
-        g.bounces = -1;
-        tr->own = malloc(sizeof *tr->own * (size_t)(m->nelements ? m->nelements : 1) * NB);
-        if (!tr->own)
-            return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the trace's reference");
-        rad_status st = rad_solve(m, F, &g, tr->own, NULL, err);
-        if (st) {
-            free(tr->own);
-            tr->own = NULL;
-            return st;
-        }
-        tr->Bref = tr->own;
-    }
-    return RAD_OK;
+    tr->on = opt->on_shot != NULL;
+    tr->Bref = tr->on ? opt->reference : NULL;
 }
 
 static void trace_close(trace *tr)
 {
-    free(tr->own);
     memset(tr, 0, sizeof *tr);
 }
 
@@ -632,7 +609,7 @@ rad_status rad_progressive_run(const rad_mesh *m, const rad_shoot_source *src,
         run_free(&r);
         return st;
     }
-    st = trace_open(&r.tr, m, src->F, opt, err);
+    trace_open(&r.tr, opt);
     unshot_power(&r.sh, r.U);
     while (st == RAD_OK && !converged(r.U, r.emitted, opt->tolerance)) {
         if (steps == opt->max_iterations) {
@@ -652,14 +629,6 @@ rad_status rad_progressive_run(const rad_mesh *m, const rad_shoot_source *src,
         opt->progress(opt->progress_user, "shoot", 1, 1);
     run_free(&r);
     return st;
-}
-
-rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const double *rho,
-                                 const double *E, const rad_solve_options *opt, double *B,
-                                 rad_solve_report *report, rad_error *err)
-{
-    const rad_shoot_source src = {F, NULL};
-    return rad_progressive_run(m, &src, rho, E, opt, B, report, err);
 }
 
 /* ---- the race of figure 7 ------------------------------------------------- */

@@ -23,7 +23,8 @@ typedef struct rad_shoot_source {
     rad_ffrow *row;
 } rad_shoot_source;
 
-/* rad_solve_progressive on either source (rho, E, B as there). */
+/* rad_solve_progressive on either source (rho, E, B as there); a trace's
+ * reference is opt->reference alone (none: the rows' RMS error is NaN). */
 rad_status rad_progressive_run(const rad_mesh *m, const rad_shoot_source *src,
                                const double *rho, const double *E,
                                const rad_solve_options *opt, double *B,

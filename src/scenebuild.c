@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "scenebuild.h"
-#include "scene.h"
+#include "polycheck.h"
 #include "status.h"
 
 /* ---- names ------------------------------------------------------------------ */
@@ -191,4 +191,17 @@ rad_status rad_build_add_surface(rad_scene_build *b, int line, rad_surface_kind 
     f->mesh_m = mesh_m;
     f->line = line;
     return RAD_OK;
+}
+
+void rad_scene_free(rad_scene *scene)
+{
+    if (!scene)
+        return;
+    for (int k = 0; k < scene->nsurfaces; k++)
+        free(scene->surfaces[k].verts);
+    free(scene->surfaces);
+    free(scene->materials);
+    free(scene->objects);
+    free(scene->filename);
+    memset(scene, 0, sizeof *scene);
 }

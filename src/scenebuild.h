@@ -7,7 +7,7 @@
  * objects found by name through a hash (so a parse takes time linear in its
  * input), surfaces appended one at a time and counted against
  * RAD_ELEMENTS_MAX.  Nothing here reads text or checks geometry: the
- * readers validate a surface (rad_polygon_check, scene.h) before they add
+ * readers validate a surface (rad_polygon_check, polycheck.h) before they add
  * it.  Errors name the scene file and the line given.
  */
 #ifndef RAD_SCENEBUILD_H

@@ -24,10 +24,8 @@
  *                 three bands, stopping on a bound of the error (iterate.c).
  *   cg            conjugate gradients on the symmetric form (cg.c).
  *   progressive   shooting (progressive.c).
- * A system is reported singular when dgetrf meets an exact zero pivot or
- * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
- * than about 6 digits of B could be trusted (round-off 1e-16 times the
- * condition number 1e10).
+ * The LU path, which Cholesky falls back to, is lusolve.c; the power-of-
+ * two scalings scale.c; the report's energy balance balance.c.
  *
  * Range.  The system is linear in E and the solvers weigh by area only in
  * ratios, so E is scaled by a power of two (exact) to a largest value near
@@ -46,15 +44,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lapack.h"
 #include "fpass.h"
-#include "lu.h"
-#include "radiosity/pipeline.h"
 #include "radiosity.h"
+#include "progressive.h"
 #include "solvers.h"
 #include "status.h"
-
-#define RAD_RCOND_MIN 1e-10
 
 void rad_solve_options_init(rad_solve_options *opt)
 {
@@ -104,14 +98,6 @@ double rad_solve_bytes_for(int n, const rad_solve_options *opt)
     return nn * solve_matrices(opt) + 64.0 * n * sizeof(double);
 }
 
-/* The working matrix of LU or Cholesky, refused (RAD_ERR_TOOBIG) before
- * it is allocated when it cannot fit: a solver that reached LU by a
- * fallback was admitted for F alone. */
-rad_status rad_solve_matrix_check(int n, int matrices, const char *what, rad_error *err)
-{
-    return rad_memory_check(matrices * (double)n * (double)n * sizeof(double), what, NULL, err);
-}
-
 static double max_abs(const double *x, size_t n)
 {
     double m = 0;
@@ -121,146 +107,6 @@ static double max_abs(const double *x, size_t n)
 }
 
 /* ---- gauss ---------------------------------------------------------------- */
-
-/* Factor and solve (I - diag(rho) F) X = E for the bands listed in
- * bands[0..nb): rho is that of bands[0]. */
-rad_status rad_solve_lu(int n, const double *F, const double *rho, const double *E,
-                        double *B, const int *bands, int nb, const rad_solve_options *opt,
-                        rad_solve_report *rep, rad_error *err)
-{
-    if (rad_solve_matrix_check(n, opt->error_bounds ? 2 : 1, "the LU factorisation's "
-                               "working matrix", err) != RAD_OK)
-        return err ? err->status : RAD_ERR_TOOBIG;
-    const size_t nn = (size_t)n * n;
-    double *A = malloc(sizeof *A * nn), *AF = NULL;
-    int *ipiv = malloc(sizeof *ipiv * (size_t)n), *iwork = malloc(sizeof *iwork * (size_t)n);
-    double *work = malloc(sizeof *work * 4 * (size_t)n);
-    double *rhs = malloc(sizeof *rhs * (size_t)n * nb), *X = malloc(sizeof *X * (size_t)n * nb);
-    double *rowabs = calloc((size_t)n, sizeof *rowabs);
-    double anorm = 0, rcond = 0, ainf = 0, rho_max = 0;
-    int info = 0;
-    rad_status st = RAD_OK;
-    if (opt->error_bounds)
-        AF = malloc(sizeof *AF * nn);
-    if (!A || !ipiv || !iwork || !work || !rhs || !X || !rowabs || (opt->error_bounds && !AF)) {
-        st = rad_fail(err, RAD_ERR_NOMEM, "out of memory for the %d x %d system", n, n);
-        goto done;
-    }
-    for (int j = 0; j < n; j++) { /* A = I - diag(rho) F; anorm = ||A||_1 */
-        double col = 0;
-        for (int i = 0; i < n; i++) {
-            double a = (i == j) - rho[i] * F[(size_t)i + (size_t)j * n];
-            A[(size_t)i + (size_t)j * n] = a;
-            col += fabs(a);
-            rowabs[i] += fabs(a);
-        }
-        anorm = fmax(anorm, col);
-    }
-    for (int i = 0; i < n; i++) { /* ||A||_inf, max rho */
-        ainf = fmax(ainf, rowabs[i]);
-        rho_max = fmax(rho_max, rho[i]);
-    }
-    for (int k = 0; k < nb; k++)
-        memcpy(rhs + (size_t)k * n, E + (size_t)bands[k] * n, sizeof *rhs * (size_t)n);
-    if (opt->error_bounds) {
-        char equed = 'N';
-        double *ferr = malloc(sizeof *ferr * (size_t)nb), *berr = malloc(sizeof *berr * (size_t)nb);
-        if (!ferr || !berr) {
-            free(ferr);
-            free(berr);
-            st = rad_fail(err, RAD_ERR_NOMEM, "out of memory");
-            goto done;
-        }
-        dgesvx_("N", "N", &n, &nb, A, &n, AF, &n, ipiv, &equed, NULL, NULL, rhs, &n, X, &n,
-                &rcond, ferr, berr, work, iwork, &info, 1, 1, 1);
-        for (int k = 0; k < nb; k++) {
-            rep->ferr = fmax(rep->ferr, ferr[k]);
-            rep->berr = fmax(rep->berr, berr[k]);
-        }
-        free(ferr);
-        free(berr);
-        if (info > 0 && info <= n)
-            rcond = 0;
-    } else {
-        int stopped;
-        info = rad_lu_factor(n, A, ipiv, opt->progress, opt->progress_user, "factorise",
-                             &stopped);
-        if (stopped) {
-            st = rad_fail(err, RAD_ERR_INVALID, "interrupted");
-            goto done;
-        }
-        if (info == 0) {
-            dgecon_("1", &n, A, &n, &anorm, &rcond, work, iwork, &info, 1);
-            dgetrs_("N", &n, &nb, A, &n, ipiv, rhs, &n, &info, 1);
-            memcpy(X, rhs, sizeof *X * (size_t)n * nb);
-        } else {
-            rcond = 0;
-        }
-    }
-    rep->rcond = rep->systems == 1 ? rcond : fmin(rep->rcond, rcond);
-    if (!(rcond >= RAD_RCOND_MIN)) {
-        /* rho = 1 is the one physical cause; with every rho < 1 and F
-         * sane, (I - rho F) is diagonally dominant and cannot be singular */
-        st = rad_fail(err, RAD_ERR_SINGULAR, "the radiosity system is singular (reciprocal "
-                      "condition %.3g < %g): %s", rcond, RAD_RCOND_MIN,
-                      rho_max >= 1 ? "a closed enclosure that reflects everything (rho = 1) "
-                                     "never absorbs light, so no steady state exists"
-                                   : "every rho is below 1, so the form factors are at fault "
-                                     "(not finite, or rows of F summing above 1: see the "
-                                     "warnings above, and try --accuracy default)");
-        goto done;
-    }
-    if (opt->ff_row_error >= 0) {
-        /* The error dF of the form factors perturbs A by at most
-         * ||diag(rho) dF||_inf <= rho_max ||dF||_inf =: d, and B by at
-         * most k / (1 - k) relative, k = ||A^-1||_inf d (the normwise
-         * perturbation bound, Higham 2002, Accuracy and Stability of
-         * Numerical Algorithms, thm. 7.2), ||A^-1||_inf = 1 / (rcond_inf
-         * ||A||_inf) from LAPACK's estimate (dgecon).  k >= 1: F is not known well enough to tell
-         * the system from a singular one. */
-        double rinf = 0;
-        int inf2 = 0;
-        dgecon_("I", &n, AF ? AF : A, &n, &ainf, &rinf, work, iwork, &inf2, 1);
-        const double k = rho_max * opt->ff_row_error / (rinf * ainf);
-        const double bound = k < 1 ? k / (1 - k) : INFINITY;
-        rep->ff_error_bound = isnan(rep->ff_error_bound) ? bound : fmax(rep->ff_error_bound, bound);
-        if (!(k < 1)) {
-            st = rad_fail(err, RAD_ERR_SINGULAR,
-                          "the radiosity system is singular within the accuracy of its form "
-                          "factors: their error (up to %.3g per row) could make it singular "
-                          "(||(I - rho F)^-1|| ||rho dF|| = %.3g >= 1); a closed enclosure "
-                          "that reflects (nearly) everything needs them exact",
-                          opt->ff_row_error, k);
-            goto done;
-        }
-    }
-    for (int k = 0; k < nb; k++)
-        memcpy(B + (size_t)bands[k] * n, X + (size_t)k * n, sizeof *B * (size_t)n);
-done:
-    free(rowabs);
-    free(A);
-    free(AF);
-    free(ipiv);
-    free(iwork);
-    free(work);
-    free(rhs);
-    free(X);
-    return st;
-}
-
-int rad_next_band_set(int n, const double *rho, int done[RAD_BANDS], int bands[RAD_BANDS])
-{
-    int b = 0, nb = 0;
-    while (b < RAD_BANDS && done[b])
-        b++;
-    for (int c = b; c < RAD_BANDS; c++) /* bands with the same reflectances */
-        if (!done[c] &&
-            memcmp(rho + (size_t)b * n, rho + (size_t)c * n, sizeof *rho * (size_t)n) == 0) {
-            bands[nb++] = c;
-            done[c] = 1;
-        }
-    return nb;
-}
 
 static rad_status solve_gauss(int n, const double *F, const double *rho, const double *E,
                               double *B, const rad_solve_options *opt, rad_solve_report *rep,
@@ -282,40 +128,6 @@ static rad_status solve_gauss(int n, const double *F, const double *rho, const d
 }
 
 /* ---- diagnostics ---------------------------------------------------------- */
-
-/* The report's powers are sum A_i x_i in the user's units: the sums are
- * taken with the scaled areas and E (2^-ka, 2^-ke) and scaled back, so
- * they are inf only when the power itself exceeds the double range; the
- * balance, a ratio, is computed before that.  H = F B and rs, the row
- * sums of F, come from the caller (solvers.h). */
-void rad_solve_balance(int n, const double *H, const double *rs, const double *rho,
-                       const double *E, const double *B, const double *area, int ka, int ke,
-                       rad_solve_report *rep)
-{
-    rep->row_sum_min = n ? HUGE_VAL : 0;
-    rep->row_sum_max = n ? -HUGE_VAL : 0;
-    for (int i = 0; i < n; i++) {
-        rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
-        rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
-    }
-    double emax = max_abs(E, (size_t)n * RAD_BANDS), res = 0;
-    for (int b = 0; b < RAD_BANDS; b++) {
-        double em = 0, ab = 0, es = 0;
-        for (int i = 0; i < n; i++) {
-            size_t k = (size_t)i + (size_t)b * n;
-            double a = area[i];
-            res = fmax(res, fabs(B[k] - rho[k] * H[k] - E[k]));
-            em += a * E[k];
-            ab += a * (1 - rho[k]) * H[k];
-            es += a * B[k] * (1 - rs[i]);
-        }
-        rep->emitted[b] = ldexp(em, ka + ke);
-        rep->absorbed[b] = ldexp(ab, ka + ke);
-        rep->escaped[b] = ldexp(es, ka + ke);
-        rep->balance[b] = em > 0 ? (em - ab - es) / em : ldexp(em - ab - es, ka + ke);
-    }
-    rep->residual = emax > 0 ? res / emax : res;
-}
 
 static rad_status diagnose(int n, const double *F, const double *rho, const double *E,
                            const double *B, const double *area, int ka, int ke,
@@ -342,23 +154,6 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
     return RAD_OK;
 }
 
-/* 2^e with 2^(e-1) <= max |x_k| < 2^e (0 for all zeros or a non-finite
- * maximum): the exponent that scales x to a largest value in [1/2, 1). */
-int rad_scale_exponent(const double *x, size_t n)
-{
-    int e = 0;
-    const double m = max_abs(x, n);
-    if (m > 0 && isfinite(m))
-        frexp(m, &e);
-    return e;
-}
-
-void rad_scale_by(double *x, size_t n, int e)
-{
-    for (size_t k = 0; k < n; k++)
-        x[k] = ldexp(x[k], e);
-}
-
 /* B = B' 2^ke, or RAD_ERR_INVALID when that leaves the double range (or B'
  * is not finite: an overflow inside a solver that got E unscaled). */
 static rad_status unscale_b(double *B, size_t n3, int ke, rad_error *err)
@@ -380,6 +175,37 @@ static rad_status unscale_b(double *B, size_t n3, int ke, rad_error *err)
     }
     rad_scale_by(B, n3, ke);
     return RAD_OK;
+}
+
+/* Progressive refinement (progressive.c) on the dense F.  A trace
+ * (opt->on_shot) without a reference gets the converged solution, by
+ * gauss, solved here before the first shot: the shooter never calls back
+ * up into this dispatcher. */
+rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const double *rho,
+                                 const double *E, const rad_solve_options *opt, double *B,
+                                 rad_solve_report *report, rad_error *err)
+{
+    const rad_shoot_source src = {F, NULL};
+    if (!opt->on_shot || opt->reference || !F)
+        return rad_progressive_run(m, &src, rho, E, opt, B, report, err);
+    if (!(opt->tolerance > 0) || opt->max_iterations < 1)
+        return rad_fail(err, RAD_ERR_INVALID,
+                        "tolerance must be positive and max-iterations at least 1");
+    rad_solve_options g = *opt, traced = *opt;
+    g.solver = RAD_SOLVER_GAUSS;
+    g.on_shot = NULL;
+    g.reference = NULL;
+    g.bounces = -1;
+    double *own = malloc(sizeof *own * (size_t)(m->nelements ? m->nelements : 1) * RAD_BANDS);
+    if (!own)
+        return rad_fail(err, RAD_ERR_NOMEM, "out of memory for the trace's reference");
+    rad_status st = rad_solve(m, F, &g, own, NULL, err);
+    if (st == RAD_OK) {
+        traced.reference = own;
+        st = rad_progressive_run(m, &src, rho, E, &traced, B, report, err);
+    }
+    free(own);
+    return st;
 }
 
 rad_status rad_solve(const rad_mesh *m, const double *F, const rad_solve_options *opt,

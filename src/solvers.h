@@ -14,10 +14,10 @@
 
 /* The next set of bands that share one reflectance vector and are not yet
  * done: their indices in bands[], marked done; returns how many (0 when
- * every band is done).  One factorisation serves each set (solve.c). */
+ * every band is done).  One factorisation serves each set (lusolve.c). */
 int rad_next_band_set(int n, const double *rho, int done[RAD_BANDS], int bands[RAD_BANDS]);
 
-/* LU (solve.c) of the bands listed in bands[0..nb), which share the
+/* LU (lusolve.c) of the bands listed in bands[0..nb), which share the
  * reflectances rho (those of bands[0]). */
 rad_status rad_solve_lu(int n, const double *F, const double *rho, const double *E, double *B,
                         const int *bands, int nb, const rad_solve_options *opt,
@@ -40,7 +40,7 @@ rad_status rad_solve_cg(const rad_mesh *m, const double *F, const double *rho,
                         rad_solve_report *rep, rad_error *err);
 
 /* The report's row sums, residual and energy balance from H = F B and
- * the row sums rs of F (solve.c); area and E scaled by 2^-ka and 2^-ke,
+ * the row sums rs of F (balance.c); area and E scaled by 2^-ka and 2^-ke,
  * which the powers undo.  The distributed solve (mpisolve.c) reduces H
  * and rs over its processes and calls this on rank 0. */
 void rad_solve_balance(int n, const double *H, const double *rs, const double *rho,
@@ -49,14 +49,14 @@ void rad_solve_balance(int n, const double *H, const double *rs, const double *r
 
 /* The exponent e with max |x_k| in [2^(e-1), 2^e) (0 for all zeros or a
  * non-finite maximum), and x *= 2^e exactly: the scalings of E and the
- * areas that keep every solver inside the double range (solve.c, Range;
- * solvefree.c). */
+ * areas that keep every solver inside the double range (scale.c;
+ * solve.c, Range). */
 int rad_scale_exponent(const double *x, size_t n);
 void rad_scale_by(double *x, size_t n, int e);
 
 /* RAD_ERR_TOOBIG (the message names `what`) when `matrices` n x n
  * matrices of doubles would not fit in the memory available now: the
- * check before LU's or Cholesky's working matrix (solve.c). */
+ * check before LU's or Cholesky's working matrix (lusolve.c). */
 rad_status rad_solve_matrix_check(int n, int matrices, const char *what, rad_error *err);
 
 /* Append "why" to the report's fallback note (count it): cholesky, cg. */

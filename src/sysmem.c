@@ -20,8 +20,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "radiosity/pipeline.h"
 #include "radiosity.h"
+#include "status.h"
 
 double rad_memory_available(void)
 {
@@ -99,4 +99,18 @@ double rad_memory_limit(void)
             have = smaller(have, (double)rl.rlim_cur);
     }
     return smaller(have, cgroup_room());
+}
+
+rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err)
+{
+    double limit = rad_memory_limit();
+    if (have)
+        *have = limit;
+    if (limit > 0 && need > limit)
+        return rad_fail(err, RAD_ERR_TOOBIG,
+                        "%s need %.0f MiB, but only %.0f MiB are available (the least of "
+                        "free memory, the process limits and the cgroup's); use a coarser "
+                        "--mesh",
+                        what, need / 1048576.0, limit / 1048576.0);
+    return RAD_OK;
 }

@@ -46,7 +46,7 @@
 
 #include "vs3read.h"
 #include "readnum.h"
-#include "scene.h"
+#include "polycheck.h"
 #include "scenebuild.h"
 #include "status.h"
 

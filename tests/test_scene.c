@@ -14,7 +14,7 @@
 
 #include "radiosity.h"
 #include "readfile.h"
-#include "scene.h"
+#include "polycheck.h"
 #include "tap.h"
 
 static const char *M = "material w reflect 0.5\n";

@@ -90,20 +90,6 @@ typedef rad_status (*rad_pipeline_fn)(const rad_scene *scene, const rad_pipeline
 RAD_API rad_status rad_pipeline_present(const rad_scene *scene, const rad_pipeline_options *opt,
                                         rad_result *result, rad_error *err, rad_pipeline_fn run);
 
-/* Elements the scene's mesh specification makes (a double: it may exceed
- * any int), without meshing. */
-RAD_API double rad_scene_element_count(const rad_scene *scene);
-
-/* Refuse (RAD_ERR_TOOBIG) when `need` bytes exceed what the machine allows
- * now (rad_memory_limit); `what` names the need in the message.  *have
- * (may be NULL) receives the limit, 0 if unknown. */
-RAD_API rad_status rad_memory_check(double need, const char *what, double *have, rad_error *err);
-
-/* The smallest of the memory available now (MemAvailable), the address
- * space and data limits (RLIMIT_AS, RLIMIT_DATA) and the cgroup's
- * memory.max less its memory.current; 0 if none is known. */
-RAD_API double rad_memory_limit(void);
-
 #ifdef __cplusplus
 }
 #endif

@@ -1,9 +1,9 @@
-/* scene.h -- scene parsing internals shared with the tests.
+/* polycheck.h -- what one scene may ask for, and the polygon check.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  */
-#ifndef RAD_SCENE_H
-#define RAD_SCENE_H
+#ifndef RAD_POLYCHECK_H
+#define RAD_POLYCHECK_H
 
 #include "radiosity.h"
 
@@ -21,4 +21,4 @@
 rad_status rad_polygon_check(const rad_vec3 *p, int n, const char *what,
                              const char *file, int line, rad_error *err);
 
-#endif /* RAD_SCENE_H */
+#endif /* RAD_POLYCHECK_H */
