@@ -12,9 +12,9 @@ echo "== form-factor fill, cube 20x20 (2400 elements, 2,878,800 unordered pairs)
 echo "   (rad_ff_matrix only, ${BENCH_FF_REPEATS:-5} runs each, modes in turn: median and best)"
 "$ff" "$cube" 20x20 ${BENCH_FF_REPEATS:-5}
 echo
-# The fill rate of each instruction-set clone of the kernels (issue 18):
+# The fill rate of each instruction-set clone of the kernels:
 # ff_rate linked with ffgauss.c and ffcontour.c compiled for one -march
-# (RAD_ONE_ISA, src/vecmath.h); the program above runs the clone the CPU's
+# (RAD_ONE_ISA, src/util/vecmath.h); the program above runs the clone the CPU's
 # resolver picks.  Each runs only where the CPU has its instructions.
 has_flags() { for f in "$@"; do grep -q -w "$f" /proc/cpuinfo 2> /dev/null || return 1; done; }
 if [ -x "${ff}_base" ]; then
@@ -59,7 +59,7 @@ awk '/"frame": [1-9]/ {
      function median(v, n,   i, j, x) {
            for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (v[j] < v[i]) { x = v[i]; v[i] = v[j]; v[j] = x }
            return n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2 }
-     END { printf "   median ratio %.3f (the issue asks at most 0.25)\n", median(r, n)
+     END { printf "   median ratio %.3f (the target is at most 0.25)\n", median(r, n)
            printf "   median ratio of the changed pairs alone %.3f (computed as a fresh solve\n", median(q, n)
            printf "   computes them, which a frame equal to a fresh solve must do too)\n" }' "$tmp/anim.json"
 
@@ -76,11 +76,11 @@ if [ "${BENCH_HC:-1}" = 1 ]; then
   sh "$(dirname "$0")/hemicube.sh" "$rad" "$data"
 fi
 
-# Occluded pairs (issue 20): the open Cornell box at 6x6 (1260 elements),
-# default's fill and reference's on one thread, and every default entry
-# above 1e-6 against reference (the issue asks: within 1e-6 relative,
-# default at most 1.5 times its time before, reference at most 3 times
-# default's).  About half a minute; BENCH_CORNELL=0 skips.
+# Occluded pairs: the open Cornell box at 6x6 (1260 elements), default's
+# fill and reference's on one thread, and every default entry above 1e-6
+# against reference (the targets: within 1e-6 relative, default at most
+# 1.5 times its time before, reference at most 3 times default's).  About
+# half a minute; BENCH_CORNELL=0 skips.
 if [ "${BENCH_CORNELL:-1}" = 1 ] && command -v /usr/bin/time > /dev/null; then
   box=$data/cornell-box.scene
   echo
@@ -93,7 +93,7 @@ if [ "${BENCH_CORNELL:-1}" = 1 ] && command -v /usr/bin/time > /dev/null; then
   grep -E '"(max|rms)_error"|"max_error_pair"' "$tmp/cb.json" 2> /dev/null | sed 's/^ */   /' || true
 fi
 
-# The solve phase of every solver on the 15,000-element cube (issue 18).
+# The solve phase of every solver on the 15,000-element cube.
 # Long (form factors ~9 s per run, gauss ~80 s, 3.6 GB): only with
 # BENCH_CUBE50=1; BENCH_CUBE50_SOLVERS and BENCH_CUBE50_MESH choose.
 if [ "${BENCH_CUBE50:-0}" = 1 ]; then

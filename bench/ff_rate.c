@@ -21,8 +21,11 @@
 #include <string.h>
 #include <time.h>
 
-#include "lapack.h"
-#include "radiosity.h"
+#include "util/lapack.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
+#include "radiosity/formfactor.h"
 
 static double now(void)
 {
@@ -70,7 +73,7 @@ int main(int argc, char **argv)
     rad_mesh mesh;
     rad_error err;
     int nx = 20, ny = 20, reps = argc > 3 ? atoi(argv[3]) : 5;
-    rad_blas_park_threads(); /* OpenBLAS's spinning threads would take a core */
+    radi_blas_park_threads(); /* OpenBLAS's spinning threads would take a core */
     if (argc < 3 || sscanf(argv[2], "%dx%d", &nx, &ny) != 2 || reps < 1 || reps > 100) {
         fprintf(stderr, "usage: ff_rate SCENE NxM [REPEATS [MODE]]\n");
         return 2;

@@ -1,7 +1,7 @@
 #!/bin/sh
 # hemicube.sh -- the hemicube's error against resolution, 16 to 1024, and
-# its time at 2,400 elements (issue 16, item 3).  Called by bench.sh;
-# prints figures, asserts nothing (tests/test_hemicube.c asserts the
+# its time at 2,400 elements.  Called by bench.sh;
+# prints figures, asserts nothing (tests/unit/hemicube/test_hemicube.c asserts the
 # bounds at 16, 64 and 256).
 # Usage: bench/hemicube.sh RADIOSITY DATADIR
 #   BENCH_HC_RES     resolutions (default 16 32 64 128 256 512 1024)

@@ -16,8 +16,8 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "lapack.h"
-#include "lu.h"
+#include "util/lapack.h"
+#include "solve/lu.h"
 
 static double now(void)
 {
@@ -71,7 +71,7 @@ int main(int argc, char **argv)
             fill(C, n, 3);
             int stopped;
             t0 = now();
-            rad_lu_factor(n, C, ipiv, NULL, NULL, "lu", &stopped);
+            radi_lu_factor(n, C, ipiv, NULL, NULL, "lu", &stopped);
             t1 = now();
             best_bl = t1 - t0 < best_bl ? t1 - t0 : best_bl;
             fill(C, n, 3);

@@ -1,6 +1,6 @@
 #!/bin/sh
 # matrixfree.sh -- progressive refinement without a stored matrix at
-# 10^4..10^5 elements (issue 16): peak resident memory against N with a
+# 10^4..10^5 elements: peak resident memory against N with a
 # least-squares line, seconds per shot, and pair integrals per second
 # inside the shots.  Called by bench.sh; prints figures, asserts nothing
 # (timings on a shared machine are not tests).
@@ -79,8 +79,8 @@ awk -v mesh="$mesh" -v shots="$shots" '
 
 # the same pair integrals in the dense fill and in matrix-free shots, on
 # one core, back to back (user CPU seconds: the dense run's output and
-# the page faults of its matrix are system time): the issue's target is
-# the dense path's rate
+# the page faults of its matrix are system time): the target is the
+# dense path's rate
 mesh=${BENCH_MFREE_PAIR_MESH:-30x30} shots=${BENCH_MFREE_PAIR_SHOTS:-2000}
 for round in 1 2 3; do
   /usr/bin/time -f 'dense_user %U' "$rad" formfactor -q --threads 1 --mesh "$mesh" \

@@ -22,7 +22,11 @@
 #include <string.h>
 #include <time.h>
 
-#include "radiosity.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
+#include "radiosity/formfactor.h"
+#include "radiosity/solve.h"
 
 #define MAX_SOLVERS 8
 #define MAX_REPEATS 31

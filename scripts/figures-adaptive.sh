@@ -10,7 +10,7 @@
 #
 # Blocker: the receiver (z = 1) and the blocker's lower face seen from below
 #          and aside, adaptive from 4x4 (--subdivide-test error, threshold
-#          0.0102, depth 3; the run of tests/adaptive.sh), beside the uniform
+#          0.0102, depth 3; the run of tests/papers/adaptive.sh), beside the uniform
 #          16x16 mesh whose error it beats.
 # Cornell: adaptive from 3x3 per quad (default threshold 0.1, depth 3),
 #          converged to 1e-3 of the emitted power; the exposure is set by
@@ -42,7 +42,7 @@ figure adaptive-blocker.png "Blocker, adaptive from 4x4 (Cohen et al. 1988, sec.
   "$radiosity" render "$data/blocker.scene" --solver progressive --adaptive --mesh 4x4 \
   --subdivide-test error --subdivide-threshold 0.0102 --max-depth 3 --edges $view
 # shellcheck disable=SC2086
-figure adaptive-blocker-uniform.png "Blocker, uniform 16x16 (LU), for comparison: a larger area-weighted RMS error against a 32x32 reference than the adaptive mesh, with more elements (tests/adaptive.sh)" \
+figure adaptive-blocker-uniform.png "Blocker, uniform 16x16 (LU), for comparison: a larger area-weighted RMS error against a 32x32 reference than the adaptive mesh, with more elements (tests/papers/adaptive.sh)" \
   "$radiosity" render "$data/blocker.scene" --mesh 16x16 --edges $view
 figure adaptive-cornell.png "Cornell box, adaptive from 3x3 per quad: look for small elements along the contact shadows of the boxes on the floor and where the walls meet the ceiling near the lamp" \
   "$radiosity" render "$data/cornell-box.scene" --solver progressive --adaptive --mesh 3x3 \

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-# gen-pow10.py -- writes src/pow10tab.h, the 128-bit powers of ten of
-# src/fmtdouble.c and the decimal-exponent thresholds of each binade.
+# gen-pow10.py -- writes src/util/pow10tab.h, the 128-bit powers of ten of
+# src/util/fmtdouble.c and the decimal-exponent thresholds of each binade.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+.
 #
 # For each k in [KMIN, KMAX]: P = floor(10^k * 2^-q), the integer with
@@ -15,7 +15,7 @@ print("#define RAD_POW10_KMAX %d" % KMAX)
 EXACT_MAX = 55  # 5^55 < 2^128 < 5^56: P is exact for k in [0, EXACT_MAX]
 assert 5 ** EXACT_MAX < 2 ** 128 < 5 ** (EXACT_MAX + 1)
 print("#define RAD_POW10_EXACT_MAX %d" % EXACT_MAX)
-print("static const struct rad_pow10 { uint64_t hi, lo; int q; } rad_pow10_tab[] = {")
+print("static const struct rad_pow10 { uint64_t hi, lo; int q; } radi_pow10_tab[] = {")
 for k in range(KMIN, KMAX + 1):
     if k >= 0:
         x = 10 ** k
@@ -39,7 +39,7 @@ from fractions import Fraction
 import math
 EMIN, EMAX = -1074, 1023
 print("#define RAD_LOG10_EMIN (%d)" % EMIN)
-print("static const uint64_t rad_log10_thr[] = {")
+print("static const uint64_t radi_log10_thr[] = {")
 for e in range(EMIN, EMAX + 1):
     d = (e * 1292913986) >> 32
     lo, hi = Fraction(2) ** e, Fraction(2) ** (e + 1)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # adaptive_rms.py -- compare element tables on a common grid, for the
-# adaptive-subdivision tests (tests/adaptive.sh) and figure.
+# adaptive-subdivision tests (tests/papers/adaptive.sh) and figure.
 #
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #

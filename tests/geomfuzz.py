@@ -7,12 +7,12 @@
 #                    [--family NAME] [--limit SECONDS] [--keep DIR] [--tap]
 #
 # A parser fuzzer (tests/fuzz/) sends bytes; this one sends geometry that
-# the parser accepts and the numerics find hard (issue 20): hinges from
+# the parser accepts and the numerics find hard: hinges from
 # 0.001 to 179.999 degrees, nearly coplanar facing plates, blockers
 # between plates (centred, off-centre, touching, nearly complete), long
 # thin strips, tiny elements beside large ones, a panel's two faces with a
 # tiny twist, two to four blockers at random angles between plates (edges
-# of two blockers not parallel: the events of three edges, src/occeee.c),
+# of two blockers not parallel: the events of three edges, src/occ/occeee.c),
 # closed rooms with one or two boxes on a floor cut around them (or whole), one
 # sometimes pushed against a wall or turned (furniture: pairs that see ten
 # blockers at once),
@@ -224,7 +224,7 @@ def any_rot(rng):
 def fam_crossed(rng, sc):
     """Two to four blockers between facing plates at random angles, so
     that edges of two blockers are not parallel (the events of three
-    edges, src/occeee.c): convex quads or triangles (panels: both faces),
+    edges, src/occ/occeee.c): convex quads or triangles (panels: both faces),
     sometimes a closed box (6 quads; 5 when it stands on a plate or hangs
     from it, the plate closing it), overlapping as seen from the plates,
     stacked in z so that they never cross, sometimes touching each other
@@ -308,7 +308,7 @@ def fam_room(rng, sc):
     around upright footprints, as the closed Cornell box's is, or left
     whole under the boxes.  Every pair sees several blockers at once, and
     a pair's domain can start with more pieces than the adaptive rule's
-    whole budget (src/occhidden.c, integrate)."""
+    whole budget (src/occ/occhidden.c, integrate)."""
     walls = [list(reversed(f)) for f in CUBE]  # inward
     sc.quad(walls[1], mesh(rng, 2), "e")  # the ceiling, z = 1
     for f in walls[2:]:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # heldout.py -- form factors of random geometry against an independent
-# high-precision evaluation (issue 5: "cases you have not seen").
+# high-precision evaluation: random cases, not the ones the code was tuned on.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #
 # Usage: heldout.py RADIOSITY SEED ROUNDS.  Prints TAP lines (no plan).

@@ -53,9 +53,9 @@ against_value() {
 # default modes within their promises (1e-9, 1e-6) of tests/pairref.py's
 # value for SPEC (to 1e-9 of the value: with 1e-10 the value moved by
 # 6e-11), and each mode's error estimate, with pairref's own, at or above
-# the difference (issue 20: estimates that bound the error).  A promise is
-# relative to the value, or to 1e-4 of the unoccluded factor (pairref's
-# third number) for a pair hidden beyond that.  Five checks, or one skip
+# the difference: the estimates bound the error.  A promise is relative
+# to the value, or to 1e-4 of the unoccluded factor (pairref's third
+# number) for a pair hidden beyond that.  Five checks, or one skip
 # without python3.
 against_pairref() {
   if ! command -v python3 > /dev/null 2>&1; then

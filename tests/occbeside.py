@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # occbeside.py -- a light over a floor tile that a box stands just beside,
-# against an independent reference (issue 20).
+# against an independent reference.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #
 # Usage: occbeside.py RADIOSITY [--print].  Prints TAP lines (no plan);

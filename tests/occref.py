@@ -1,7 +1,6 @@
 #!/usr/bin/env python3
-# occref.py -- partly hidden pairs against an independent reference
-# (issue 20): two parallel rectangles with an axis-aligned opaque rectangle
-# between them.
+# occref.py -- partly hidden pairs against an independent reference: two
+# parallel rectangles with an axis-aligned opaque rectangle between them.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #
 # Usage: occref.py RADIOSITY [--print] [CASE...].  Prints TAP lines (no plan);

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """pairref.py -- an independent form factor between two planar convex
-quadrilaterals with convex solids between them, for the tests (issue 20).
+quadrilaterals with convex solids between them, for the tests.
 
 Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 
 Nothing here is the program's method.  Each solid blocks as the convex hull
 of its vertices (not as a list of faces, so the program's choice of which
-faces a pair needs, src/occsolid.c, is checked, not copied).  From a point x
+faces a pair needs, src/occ/occsolid.c, is checked, not copied).  From a point x
 of the outer quad the part of the inner quad that x sees is the quad less
 the shadow of each solid: the solid cut to the slab between x's level and
 the inner plane (its vertices there and the crossings of the segments
@@ -18,7 +18,7 @@ solid's vertices project towards infinity, and hull edges through points
 1e8 away lost 1e-5 of a nearly hidden pair's visible part (the pair of
 tests/flush-pair.spec, against the same computation in 40 digits).  A
 twisted inner quad is read as its bilinear surface, the surface the
-program's kernel integrates over (src/ffarea.c): the visible pieces, cut
+program's kernel integrates over (src/ff/ffarea.c): the visible pieces, cut
 in the projection on its plane, are lifted back onto it, so that their
 edges on the quad's edges are the quad's own.  A convex polygon less a convex
 polygon is cut into convex pieces, one per edge of the shadow (the part
@@ -30,10 +30,10 @@ rules of 6 and 10 points a side, the cell with the largest difference split
 in four, until the differences sum to TOL of the value, or of FLOOR times
 the unoccluded factor U (the same integral with no solids) when the value
 is smaller: the program's promise holds relative to the value down to pairs
-hidden to FLOOR = 1e-4 of U, and absolutely below that (issue 20), so a
-reference for a nearly hidden pair needs no more.  That estimate can miss a
-kink that no point of a cell sees, like any such rule: a test using it
-states a value that two starting grids agree on.
+hidden to FLOOR = 1e-4 of U, and absolutely below that (doc/design.md,
+"Conventions"), so a reference for a nearly hidden pair needs no more.
+That estimate can miss a kink that no point of a cell sees, like any such
+rule: a test using it states a value that two starting grids agree on.
 
 Usage: pairref.py SPEC [TOL [N]], SPEC a file of lines
     outer X Y Z X Y Z X Y Z X Y Z
@@ -107,7 +107,7 @@ class Pair:
     def to3(s,q):
         """The point of the inner quad over q: on its plane, or on a twisted
         quad's bilinear surface (the surface the program's kernel integrates
-        over, src/ffarea.c, so that its edges are the quad's own)."""
+        over, src/ff/ffarea.c, so that its edges are the quad's own)."""
         if not s.twisted: return add(s.t0,add(mul(s.u,q[0]),mul(s.w,q[1])))
         Q=s.Q2; a,b=0.5,0.5
         for _ in range(8):              # Newton on bil(Q2, a, b) = q

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # progress_adaptive.py -- independent checks of `progress --adaptive`
-# (tests/progress_adaptive.sh).
+# (tests/papers/progress_adaptive.sh).
 #
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #

@@ -21,8 +21,8 @@
 # after them), PREV.tsv the converged table before the change, REF.tsv the
 # converged table after it (`solve --elements`).  Pure Python: no numpy.
 #
-# The model is that of the issue and of src/animshoot.c, written here from
-# the paper's equations and not from the program's code.  At the change,
+# The model is that of src/anim/animshoot.c, written here from the
+# paper's equations and not from the program's code.  At the change,
 # every element j has shot T_j = B_j (a converged frame; an added element
 # has T = 0) along the old factors; pair (i, j) with dF_ij = Fnew_ij -
 # Fold_ij != 0 owes receiver i the amount rho_i dF_ij T_j (George et al.
@@ -113,7 +113,7 @@ def mask_of(area, yprev, yref):
 
 
 def ratio(num, den):
-    """num / den as src/animerror.c takes it: 0 / 0 is 0, x / 0 is inf."""
+    """num / den as src/anim/animerror.c takes it: 0 / 0 is 0, x / 0 is inf."""
     return num / den if den > 0 else float('inf') if num > 0 else 0.0
 
 

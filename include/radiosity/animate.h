@@ -20,8 +20,8 @@
 #ifndef RAD_ANIMATE_H
 #define RAD_ANIMATE_H
 
-#include "../radiosity.h"
-#include "changes.h"
+#include "radiosity/solve.h"
+#include "radiosity/changes.h"
 
 #include <stdio.h>
 

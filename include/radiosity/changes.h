@@ -25,7 +25,7 @@
 #ifndef RAD_CHANGES_H
 #define RAD_CHANGES_H
 
-#include "../radiosity.h"
+#include "radiosity/scene.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -1,4 +1,4 @@
-/* export.h -- writers for the output files of DESIGN.md section 6.
+/* export.h -- writers for the output files of radiosity-files(5).
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -11,7 +11,7 @@
 
 #include <stdio.h>
 
-#include "radiosity.h"
+#include "radiosity/solve.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -2,8 +2,8 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * scene -> mesh -> form factors -> solve per band -> smooth (DESIGN.md
- * section 2).  Every command that solves a scene goes through
+ * scene -> mesh -> form factors -> solve per band -> smooth (radiosity(3),
+ * DESCRIPTION).  Every command that solves a scene goes through
  * rad_pipeline_run; it prints nothing and opens no file: progress and
  * cancellation go through the callback in the options, and the result
  * record carries what the summary and the JSON report say.
@@ -11,7 +11,7 @@
 #ifndef RAD_PIPELINE_H
 #define RAD_PIPELINE_H
 
-#include "radiosity.h"
+#include "radiosity/solve.h"
 
 #ifdef __cplusplus
 extern "C" {

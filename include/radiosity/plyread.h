@@ -3,8 +3,8 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * Reads the ASCII PLY that `radiosity solve --output FILE.ply` writes
- * (DESIGN.md section 6) and, as far as they carry what a picture needs,
- * other ASCII PLY files:
+ * (radiosity-files(5), SOLUTION) and, as far as they carry what a picture
+ * needs, other ASCII PLY files:
  *   - element vertex with x, y, z; vertex radiosity from radiosity_r/g/b,
  *     else from the sRGB colours red/green/blue (decoded to linear), else
  *     the mean of the radiosity of the faces around the vertex;
@@ -23,7 +23,6 @@
 
 #include <stddef.h>
 
-#include "radiosity.h"
 #include "radiosity/render.h"
 
 #ifdef __cplusplus

@@ -19,7 +19,7 @@
 
 #include <stdio.h>
 
-#include "radiosity.h"
+#include "radiosity/mesh.h"
 
 #ifdef __cplusplus
 extern "C" {

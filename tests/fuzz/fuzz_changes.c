@@ -21,7 +21,8 @@
 #include <string.h>
 
 #include "fuzz_common.h"
-#include "radiosity.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
 #include "radiosity/changes.h"
 
 #define FUZZ_NAME "fuzz.changes"

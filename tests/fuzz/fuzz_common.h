@@ -10,7 +10,7 @@
 
 #include <string.h>
 
-#include "radiosity.h"
+#include "radiosity/scene.h"
 
 /* "NAME:" then a line number >= 1, then ": " and a non-empty reason. */
 static int fuzz_message_at(const char *msg, const char *name)

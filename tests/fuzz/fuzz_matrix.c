@@ -3,7 +3,7 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * The first byte chooses the element count n (1 to 8); the rest is
- * written to a file that rad_ff_read() reads as another solver's n x n
+ * written to a file that radi_ff_read() reads as another solver's n x n
  * form-factor matrix: NumPy .npy, Matrix Market, View3D's text or binary
  * view-factor file, or the program's own form-factor table (ffread.h).
  * Contracts checked: the status is RAD_OK, RAD_ERR_IO or RAD_ERR_PARSE;
@@ -23,8 +23,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "ffread.h"
-#include "radiosity.h"
+#include "io/ffread.h"
+#include "radiosity/base.h"
 
 static char path[4096];
 
@@ -58,7 +58,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *format = NULL;
     rad_error err;
     memset(&err, 0, sizeof err);
-    rad_status st = rad_ff_read(path, n, F, &format, &err);
+    rad_status st = radi_ff_read(path, n, F, &format, &err);
     if (st == RAD_OK) {
         if (!format)
             abort();

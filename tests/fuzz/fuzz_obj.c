@@ -3,7 +3,7 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * An input is OBJ text, then optionally the line "%%mtl" and MTL text: the
- * OBJ part is read as "fuzz.obj" by rad_obj_read, whose first `mtllib`
+ * OBJ part is read as "fuzz.obj" by radi_obj_read, whose first `mtllib`
  * reads the MTL part from memory (nothing is opened on disk).  On success
  * the scene is checked (materials and objects exist, quads have 4
  * vertices) and meshed with rad_mesh_build up to FUZZ_MAX_ELEMENTS
@@ -20,9 +20,11 @@
 #include <string.h>
 
 #include "fuzz_common.h"
-#include "radiosity.h"
-#include "objread.h"
-#include "readfile.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
+#include "scene/objread.h"
+#include "util/readfile.h"
 
 #define FUZZ_MAX_ELEMENTS 20000
 #define SEPARATOR "\n%%mtl\n"
@@ -91,9 +93,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rad_lines r;
     size_t obj_len, mtl_at = split(data, size, &obj_len);
     memset(&err, 0, sizeof err);
-    rad_lines_mem(&r, (const char *)data, obj_len, "fuzz.obj", '#', &err);
-    rad_status st = rad_obj_read(&scene, &r, (const char *)data + mtl_at, size - mtl_at);
-    rad_lines_close(&r);
+    radi_lines_mem(&r, (const char *)data, obj_len, "fuzz.obj", '#', &err);
+    rad_status st = radi_obj_read(&scene, &r, (const char *)data + mtl_at, size - mtl_at);
+    radi_lines_close(&r);
     if (st != RAD_OK) {
         if (err.status != st || !message_ok(err.message) || !fuzz_scene_empty(&scene))
             abort();

@@ -22,10 +22,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/render.h"
+#include "radiosity/plyread.h"
 #include "radiosity/plyread.h"
 #include "fuzz_common.h"
-#include "radiosity.h"
-#include "radiosity/render.h"
 
 #define FUZZ_NAME "fuzz.ply"
 

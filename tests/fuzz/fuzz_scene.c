@@ -16,9 +16,9 @@
  * PACKAGE_VERSION:
  *     clang -g -O1 -fsanitize=fuzzer,address,undefined \
  *         -fno-sanitize-recover=undefined -I$TMP -Isrc \
- *         tests/fuzz/fuzz_scene.c src/scene.c src/scenebuild.c \
- *         src/objread.c src/vs3read.c src/readnum.c src/mesh.c \
- *         src/status.c src/readfile.c -lm -o $TMP/fuzz_scene
+ *         tests/fuzz/fuzz_scene.c src/scene/scene.c src/scene/polycheck.c src/scene/scenebuild.c \
+ *         src/scene/objread.c src/scene/vs3read.c src/util/readnum.c src/mesh/mesh.c \
+ *         src/util/status.c src/util/readfile.c -lm -o $TMP/fuzz_scene
  *     $TMP/fuzz_scene -max_total_time=600 -max_len=4096 \
  *         -dict=tests/fuzz/scene.dict $TMP/scene/corpus
  * To replay one input: $TMP/fuzz_scene FILE.
@@ -29,7 +29,9 @@
 #include <string.h>
 
 #include "fuzz_common.h"
-#include "radiosity.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
 
 #define FUZZ_MAX_ELEMENTS 20000
 #define FUZZ_NAME "fuzz.scene"

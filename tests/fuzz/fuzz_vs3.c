@@ -20,7 +20,9 @@
 #include <string.h>
 
 #include "fuzz_common.h"
-#include "radiosity.h"
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
 
 #define FUZZ_MAX_ELEMENTS 20000
 #define FUZZ_NAME "fuzz.vs3"

@@ -50,11 +50,11 @@ printf '#define PACKAGE_VERSION "fuzz"\n' > "$work/config.h"
 # The sources each harness needs, and its corpus and dictionary.
 sources() {
     case $1 in
-        scene) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
-        ply) echo plyread.c readfile.c scene.c scenebuild.c objread.c vs3read.c readnum.c status.c render.c plot.c atomicfile.c mesh.c ;;
-        obj|vs3) echo scene.c scenebuild.c objread.c vs3read.c readnum.c mesh.c status.c readfile.c ;;
-        changes) echo changeread.c scene.c scenebuild.c scenepresent.c objread.c vs3read.c readnum.c status.c readfile.c ;;
-        matrix) echo ffread.c npyread.c vfread.c readfile.c readnum.c status.c ;;
+        scene) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
+        ply) echo io/plyread.c util/readfile.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c util/status.c render/render.c render/plot.c cli/atomicfile.c mesh/mesh.c ;;
+        obj|vs3) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
+        changes) echo scene/changeread.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/scenepresent.c scene/objread.c scene/vs3read.c util/readnum.c util/status.c util/readfile.c ;;
+        matrix) echo io/ffread.c io/npyread.c io/vfread.c util/readfile.c util/readnum.c util/status.c ;;
     esac
 }
 libs() {

@@ -1,0 +1,83 @@
+/* radiosity/mesh.h -- equal elements, and vertex radiosity from element radiosity.
+ *
+ * Copyright (C) 2026 The radiosity authors.
+ * This program is free software: you can redistribute it and/or modify it
+ * under the terms of the GNU General Public License as published by the Free
+ * Software Foundation, either version 3 of the License, or (at your option)
+ * any later version.  See COPYING.
+ *
+ */
+#ifndef RADIOSITY_MESH_H
+#define RADIOSITY_MESH_H
+
+#include "radiosity/scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- mesh (mesh.c) ------------------------------------------------------ */
+
+typedef struct rad_element {
+    int surface;                /* index of the scene surface it came from */
+    int gi, gj;                 /* position in the surface's grid (0,0 for polygons) */
+    int nverts;                 /* 4 for quad elements, K for polygons */
+    int first;                  /* its vertex indices: mesh.vindex[first..first+nverts) */
+    rad_vec3 centroid;
+    rad_vec3 normal;            /* unit front normal */
+    double area;
+    double reflect[RAD_BANDS];
+    double emit[RAD_BANDS];
+} rad_element;
+
+typedef struct rad_mesh {
+    int nelements;
+    rad_element *elements;
+    int nvertices;
+    rad_vec3 *vertices;         /* shared inside a surface, never across */
+    int *vindex;                /* element vertex lists, counter-clockwise */
+    int nsurfaces;
+    int *surface_first;         /* elements of surface s: [first[s], first[s+1]) */
+    int *surface_vfirst;        /* vertices of surface s: [vfirst[s], vfirst[s+1]);
+                                   a quad's are row-major: (gj) * (n+1) + gi */
+    int *surface_n, *surface_m; /* grid size per surface (1 x 1 for polygons) */
+} rad_mesh;
+
+/* Refuses (RAD_ERR_INVALID, naming the scene's line) an element whose area
+ * is not a normal double: the areas are in the user's units. */
+RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
+RAD_API void rad_mesh_free(rad_mesh *mesh);
+/* The vertex v (0..nverts-1) of element e. */
+RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
+/* Elements the scene's mesh specification makes (a double: it may exceed
+ * any int), without meshing. */
+RAD_API double rad_scene_element_count(const rad_scene *scene);
+
+/* ---- vertex radiosity (smooth.c) ---------------------------------------- */
+
+/* Vertex radiosity from element radiosity (Goral et al. 1984, section 3;
+ * Gouraud 1971), never across surfaces.  B is nelements x RAD_BANDS and Bv
+ * nvertices x RAD_BANDS, both column-major. */
+RAD_API void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
+
+/* How a vertex on a surface's boundary gets its value (smooth.c):
+ * EXTRAPOLATE is the 1984 paper's linear extrapolation (the default, what
+ * rad_smooth_vertices does); CORNER is the course notes' rule, where the
+ * mean of a boundary vertex and its nearest interior vertex equals the
+ * mean of the elements that meet at the boundary vertex.  The two agree
+ * on edges and on fields linear over the surface; they differ at
+ * corners. */
+typedef enum rad_vertex_rule {
+    RAD_VERTEX_EXTRAPOLATE = 0,
+    RAD_VERTEX_CORNER
+} rad_vertex_rule;
+RAD_API void rad_smooth_vertices_rule(const rad_mesh *mesh, const double *B, double *Bv,
+                                      rad_vertex_rule rule);
+/* "extrapolate", "corner", or NULL. */
+RAD_API const char *rad_vertex_rule_name(int rule);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RADIOSITY_MESH_H */

@@ -1,0 +1,98 @@
+/* radiosity/scene.h -- the scene: surfaces, materials, objects, camera (scene.c).
+ *
+ * Copyright (C) 2026 The radiosity authors.
+ * This program is free software: you can redistribute it and/or modify it
+ * under the terms of the GNU General Public License as published by the Free
+ * Software Foundation, either version 3 of the License, or (at your option)
+ * any later version.  See COPYING.
+ *
+ */
+#ifndef RADIOSITY_SCENE_H
+#define RADIOSITY_SCENE_H
+
+#include "radiosity/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- scene (scene.c) ---------------------------------------------------- */
+
+#define RAD_NAME_MAX 64
+
+typedef struct rad_material {
+    char name[RAD_NAME_MAX];
+    double reflect[RAD_BANDS];  /* rho in [0, 1] */
+    double emit[RAD_BANDS];     /* E >= 0 */
+    int line;                   /* where it was defined */
+} rad_material;
+
+typedef enum rad_surface_kind {
+    RAD_SURFACE_QUAD = 0,       /* meshed into mesh_n x mesh_m elements */
+    RAD_SURFACE_POLYGON         /* convex planar polygon, one element */
+} rad_surface_kind;
+
+typedef struct rad_surface {
+    rad_surface_kind kind;
+    int material;               /* index into rad_scene.materials */
+    int nverts;                 /* 4 for a quad, K >= 3 for a polygon */
+    rad_vec3 *verts;            /* counter-clockwise about the front */
+    int mesh_n, mesh_m;         /* v1->v2 in N parts, v2->v3 in M parts */
+    int line;                   /* input line, for messages */
+    int object;                 /* index into rad_scene.objects; -1: the static
+                                   environment (outside every object) */
+} rad_surface;
+
+/* A named group of surfaces that a change may move, add or remove (the
+ * dynamic-scene contract of radiosity-scene(5)): `object NAME [absent]`
+ * ... `end` in a scene file, `o` and `g` statements in OBJ. */
+typedef struct rad_object {
+    char name[RAD_NAME_MAX];
+    int absent;                 /* 1: joins the scene only when a change adds it */
+    int line;                   /* where it was first named */
+} rad_object;
+
+typedef struct rad_camera {
+    int defined;                /* 0: the scene has no camera line */
+    rad_vec3 eye, at, up;
+    double fov;                 /* vertical, degrees */
+} rad_camera;
+
+typedef struct rad_scene {
+    char *filename;
+    rad_material *materials;
+    int nmaterials;
+    rad_surface *surfaces;
+    int nsurfaces;
+    rad_object *objects;
+    int nobjects;
+    rad_camera camera;
+} rad_scene;
+
+/* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
+ * input.  A name ending in ".obj" is read as Wavefront OBJ (its mtllib
+ * files relative to it), one ending in ".vs3" as View3D 3.x input (both
+ * case-insensitive; radiosity-scene(5) says what they map to).  On
+ * failure *scene is left empty and err says FILE:LINE: why. */
+RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
+/* Parse scene text held in memory; `name` is used in messages and picks
+ * the format by its ending as rad_scene_load does. */
+RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
+                           const char *name, rad_error *err);
+RAD_API void rad_scene_free(rad_scene *scene);
+/* Override the mesh of every quad (the --mesh option). */
+RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
+/* 1 if some surface belongs to an absent object (scenepresent.c). */
+RAD_API int rad_scene_has_absent(const rad_scene *scene);
+/* A copy of the scene with only the present surfaces, in file order:
+ * present[o] (nobjects entries) says which objects are in, or, when
+ * present is NULL, the objects not declared absent.  Free it with
+ * rad_scene_free. */
+RAD_API rad_status rad_scene_present_copy(const rad_scene *in, const unsigned char *present,
+                                          rad_scene *out, rad_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RADIOSITY_SCENE_H */

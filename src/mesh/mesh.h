@@ -1,0 +1,64 @@
+/* mesh.h -- mesh internals shared with the solver and the tests.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ */
+#ifndef RAD_MESH_H
+#define RAD_MESH_H
+
+#include <stddef.h>
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "radiosity/base.h"
+#include "radiosity/scene.h"
+#include "radiosity/mesh.h"
+
+/* How many elements, vertices and vertex indices the scene's mesh has,
+ * without building it (for the memory check).  RAD_ERR_TOOBIG when one of
+ * the counts exceeds RADI_MESH_COUNT_MAX, a quarter of INT32_MAX, so that
+ * every count and index of the mesh fits in an int with room to spare. */
+#define RADI_MESH_COUNT_MAX (INT32_MAX / 4)
+rad_status radi_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
+                          size_t *nindex);
+
+/* A frame that makes geometry scale-free: p -> (p - shift) 2^-exponent
+ * maps a bounding box into [-1, 1]^3 exactly (the shift is 0, or an end of
+ * the box that lies within a factor 2 of all of it, so the subtraction is
+ * exact by Sterbenz's lemma; the scaling is by a power of two), barring
+ * subnormal results. */
+typedef struct rad_frame {
+    rad_vec3 shift;
+    int exponent;
+} rad_frame;
+
+/* The frame of the box [lo, hi]; -1 (and the identity) when the box is a
+ * point or not finite. */
+int radi_frame_fit(rad_frame *frame, rad_vec3 lo, rad_vec3 hi);
+rad_vec3 radi_frame_apply(const rad_frame *frame, rad_vec3 p);
+/* shift 2^-exponent: a point's coordinates as the user gave them are, in
+ * the frame's units, its coordinates in the frame plus this.  They carry
+ * the user's rounding, eps of their size (radi_occ_scene_snap,
+ * occlusion.h). */
+rad_vec3 radi_frame_offset(const rad_frame *frame);
+
+/* A private copy of the mesh's geometry in the frame of its bounding box
+ * (frame may be NULL): the same elements, surfaces, normals and vertex
+ * lists; vertices, areas and centroids in the frame.  Form factors and
+ * visibility computed on it are those of the mesh at any scale.  Free it
+ * with rad_mesh_free. */
+rad_status radi_mesh_normalized(const rad_mesh *mesh, rad_mesh *out, rad_frame *frame,
+                               rad_error *err);
+
+/* The point (1-v)((1-u) q0 + u q1) + v((1-u) q3 + u q2) of the quad q,
+ * by the formula rad_mesh_build grids a quad with (exact at the corners):
+ * a finer grid of the same quad repeats the coarse grid's vertices bit
+ * for bit (adaptnodes.c). */
+rad_vec3 radi_mesh_bilinear(const rad_vec3 q[4], double u, double v);
+
+/* Area and centroid of the planar polygon p (n vertices, unit normal nrm)
+ * as rad_mesh_build computes an element's. */
+void radi_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
+                            rad_vec3 *centroid);
+
+#endif /* RAD_MESH_H */

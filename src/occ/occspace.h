@@ -1,0 +1,418 @@
+/* occspace.h -- what the occlusion files share (internal to them): the
+ * tolerances, the scene's culling data (struct rad_occ), the per-thread
+ * work space and the functions one file calls in another.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * occlusion.c lists the files and their jobs; each function is described
+ * where it is defined.
+ */
+#ifndef RAD_OCCSPACE_H
+#define RAD_OCCSPACE_H
+
+#include <stddef.h>
+#include <time.h>
+
+#include "ff/formfactor.h"
+#include "occ/occlusion.h"
+#include "radiosity/base.h"
+#include "radiosity/formfactor.h"
+#include "util/status.h"
+
+/* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
+ * within OCC_SNAP of the scene's bounding-box diagonal L, plus the
+ * rounding of the scene's coordinates (OCC_ROUND ulps of the largest as
+ * the user gave them: the frame's shift, mesh.h, keeps their rounding),
+ * plus the surfaces' own departures from planarity (the scene accepts
+ * 1e-6 of a quad's size; scene.c): two faces of one twisted panel lie on
+ * one plane as far as the data can say.  The kernel decides what is on a
+ * plane with the same first two (radi_occ_scene_snap, occshaft.c).
+ * Nothing larger: near the origin a blocker 1e-9 of the scene's size
+ * from an element is in front of it, and hides what lies behind (a
+ * tolerance of 1e-9 L once let a floor's light through to an element
+ * 1e-9 above it); far from it, what the coordinates' rounding resolves. */
+#define OCC_SNAP 1e-11
+#define OCC_ROUND 16
+#define OCC_SLIVER 1e-10    /* pieces below this fraction of the inner element
+                               are slivers: of the inner element seen from a
+                               point, dropped; of the outer element's domain,
+                               not cut off (occspace.c, occ_cut_piece) */
+/* Per-pair error targets, relative to the occluded A_i F_ij down to
+ * OCC_FLOOR of the unoccluded one (occhidden.c, integrate), half of each
+ * mode's promise (the kernel's error of the unoccluded S adds to it); the
+ * order of the rule on a cell (occrule.c); the largest number of cells
+ * the adaptive rule may add to the domain's first ones. */
+#define OCC_TOL_DEFAULT 5e-7
+#define OCC_TOL_REFERENCE 5e-10
+#define OCC_FLOOR RAD_OCC_FLOOR
+#define OCC_KERNEL_SHARE 0.25   /* of the promise: see occlusion.c, sharper_sum */
+/* The round-off each point-to-polygon sum of the integrand may carry, as
+ * a share of the pair's target spread over its domain (occhidden.c,
+ * integrate; an evaluation adds one sum per hidden piece): a sum that
+ * could carry more is done again in long double (occpoint.c,
+ * ff_point_polygon). */
+#define OCC_NOISE_SHARE 0.125
+#define OCC_ORDER_DEFAULT 6
+#define OCC_ORDER_REFERENCE 10
+#define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
+#define OCC_TOUCH_MAX 8   /* blocker vertices on the outer element kept (touch_points) */
+#define OCC_LEAVES_DEFAULT 1024
+#define OCC_LEAVES_REFERENCE 8192
+/* ... and the most evaluations of hidden(x) it may spend on a pair
+ * beyond those of the first cells: a
+ * pair whose integrand keeps a kink inside a piece (in the lens a chord of
+ * occeee.c leaves) converges slowly there, and stops here with its
+ * estimate (which the fill then reports as an unmet promise).  Default's
+ * budgets were 256 leaves and 1e4 evaluations: on the 6x6 Cornell box 14
+ * entries above 1e-6 stopped there more than 1e-6 from reference mode's
+ * value; with these none do.  Reference's were 2048 and 1e5: with the
+ * strips of occeee.c its rows of the closed Cornell box (2x2) missed 1 by
+ * 5e-8 there, and by 6e-10 with these. */
+#define OCC_EVALS_DEFAULT 4e4
+#define OCC_EVALS_REFERENCE 4e5
+/* ... and this many more for each of the domain's first cells: a domain
+ * of thousands of pieces spends the budgets above on raising a few
+ * hundred cells' orders (each of orders 1 to 3 first, occhidden.c eq. 2,
+ * whose differences overstate a smooth cell's error).  Seen in rooms of
+ * the geometry fuzzer (tests/geomfuzz.py at af114e8, family room, seed
+ * 99: pairs with 7 to 10 blockers and 2,298 to 4,225 pieces): in 5 rooms
+ * of 20, 54 default entries missed the promise by their own estimates,
+ * up to 3.6e-5 of their values; with 64 evaluations more a cell (raising
+ * a cell from order 3 to 5 takes about 40) none did, for 11% more time
+ * over the 20 rooms.  The closed Cornell box's tables do not change. */
+#define OCC_EVALS_PER_CELL 64
+/* ... but no more than this many times the budget above, so that a
+ * domain cut into a runaway number of pieces stops with its estimate
+ * (default mode: 4e5 more at most, 6,250 cells' worth). */
+#define OCC_EVALS_CELLS_MAX 10
+/* In default mode a pair with at most OCC_WEDGE_BLOCKERS blockers is
+ * first integrated on
+ * a domain cut only where each event happens (occevent.c), with
+ * OCC_WEDGE_BUDGET of the budgets above; if it misses its target there,
+ * it is done again on the domain cut along every event plane, with the
+ * whole budgets (occhidden.c, orient_integral). */
+#define OCC_WEDGE_BLOCKERS 4
+#define OCC_WEDGE_BUDGET 0.25
+/* A blocker within this part of the outer element's size of its plane
+ * has every event plane cut whole (occdomain.c, near_outer). */
+#define OCC_NEAR_OUTER 1e-4
+/* A pair integrated again with narrower lenses (occhidden.c,
+ * orient_integral) has OCC_LENS_BUDGET times default mode's budgets
+ * above: each strip the lenses add is a piece, and each piece a leaf.
+ * (With the budget of the first try, two nearly hidden pairs of the
+ * closed 6x6 Cornell box in default mode spent their leaves on the
+ * pieces, missed the target by 2e5 and 5e5 times, and kept the first
+ * try, one with a lens estimate of 5e-6 of its value.  Reference mode's
+ * budgets, eight and ten times default's, are left as they are: four
+ * times more cost its fill of that box 5% and confirmed no more
+ * entries.) */
+#define OCC_LENS_BUDGET 4
+/* The events of three edges (occeee.c) are cut for pairs with at most
+ * OCC_EEE_BLOCKERS blockers: their number grows as the square of the
+ * blockers' (64 edge triples per pair of quads), and a pair with more
+ * (seen: 34 with shaft culling off) spent minutes there.  On the Cornell
+ * box with culling no pair has more than 9. */
+#define OCC_EEE_BLOCKERS 12
+/* The chords along the conics of occeee.c leave lenses of the outer
+ * element with a kink inside: where a lens is wider than the pair's
+ * arc_tol of its chord, the piece is cut into strips first (occeee.c,
+ * follow_arc, with the measurements).  Default mode uses
+ * OCC_ARC_TOL_DEFAULT, reference mode OCC_ARC_TOL_REFERENCE.  Relative
+ * to a partly hidden pair's smaller value the kink in a lens weighs
+ * more, so a pair that kept a lens wider than it needs is integrated
+ * again with narrower ones (occhidden.c, arcs_by_fraction): in default mode
+ * a pair whose occluded value came out below OCC_NEAR_HIDDEN of its
+ * unoccluded one, with OCC_ARC_TOL_HIDDEN; in reference mode a pair
+ * below OCC_PARTLY_HIDDEN of it, with OCC_ARC_TOL_REFERENCE times the
+ * cube root of its visible fraction (the lens's error falls as the cube
+ * of its width), down to OCC_ARC_TOL_FINEST. */
+#define OCC_ARC_TOL_DEFAULT 1e-2
+#define OCC_ARC_TOL_HIDDEN 5e-4
+#define OCC_ARC_TOL_REFERENCE 5e-4
+#define OCC_ARC_TOL_FINEST 2e-5
+#define OCC_NEAR_HIDDEN 0.1
+#define OCC_PARTLY_HIDDEN 0.25
+/* A pair whose lenses' error estimate (occeee.c, eq. 2) is above
+ * OCC_ARC_SHARE of its target is integrated again with narrower lenses
+ * too (occhidden.c, arcs_by_estimate).  The target is half the promise
+ * and the rules' estimate stops below it, so a quarter more for the
+ * lenses keeps the two together within the promise. */
+#define OCC_ARC_SHARE 0.25
+
+struct rad_occ {
+    rad_occ_mode mode;
+    rad_accuracy accuracy;
+    int nsurf;
+    rad_vec3 *sv;               /* surface polygons: sv[sfirst[s] .. sfirst[s+1]) */
+    int *sfirst;
+    rad_vec3 *snormal, *slo, *shi;
+    double *stwist;             /* each surface's largest vertex distance from
+                                   its plane through the vertex mean */
+    int *esurf;                 /* surface of each element */
+    int *twin;                  /* an earlier surface that is this one reversed
+                                   (a two-sided panel's other face), or -1 */
+    size_t *cand_off;           /* candidates of surface pair p: cand[cand_off[p] ..) */
+    int *cand;
+    double snap;                /* absolute tolerance (see OCC_SNAP) */
+    int *solid;                 /* each surface's convex solid (occsolid.c), or -1 */
+    int nsolid;
+    int *hfirst;                /* solid g's face planes: [hfirst[g], hfirst[g+1]) */
+    rad_vec3 *hnrm, *hpt;       /* outward unit normal, a point */
+    unsigned char *hopen;       /* the solid's surfaces do not cover the facet */
+};
+
+/* Index of the unordered surface pair a < b among ns(ns-1)/2. */
+static inline size_t pair_index(int a, int b, int ns)
+{
+    return (size_t)a * (size_t)(2 * ns - a - 1) / 2 + (size_t)(b - a - 1);
+}
+
+/* One cell of the adaptive rule, a triangle or (default and reference
+ * modes) a convex quadrilateral: its own 3-point value and those of its
+ * four midpoint children (classic), or its product rules' values. */
+typedef struct tri_node {
+    rad_vec3 p[4];
+    int nv;                     /* its vertices, 3 or 4 */
+    double area;
+    double q;                   /* the rule on the cell */
+    double qc[4];               /* the rule on each child */
+    double err;                 /* its estimated error */
+    double dlast;               /* the last difference of two orders */
+    int order;                  /* the product rule's order (occrule.c), or 0 */
+    int stalled;                /* raising the order did not help: split */
+    double center;              /* hidden(x) at the point the odd orders
+                                   share, or NaN (occrule.c) */
+} tri_node;
+
+/* The leaves of the adaptive rule as a tournament tree (occleaves.c):
+ * best[1] the leaf with the largest estimate (-1: none), err[1] and
+ * val[1] the sums of the leaves' estimates and values. */
+typedef struct occ_leaves {
+    int *best;
+    double *err, *val;
+    int cap;                    /* leaves the tree holds (a power of 2) */
+    int alloc;                  /* leaves the arrays can hold */
+} occ_leaves;
+
+/* A list of polygons sharing one vertex array. */
+typedef struct polyset {
+    rad_vec3 *v;
+    int nv, capv;
+    int *first;                 /* np + 1 entries */
+    int np, capp;
+} polyset;
+
+/* Per-thread space. */
+typedef struct occ_space {
+    polyset loc;                /* the two elements in the pair's frame: 0 = i, 1 = j */
+    polyset elem;               /* the two clipped elements: 0 = i, 1 = j */
+    polyset blk;                /* the pair's blockers, whole */
+    polyset blkc;               /* the same, clipped to the front of the inner plane */
+    int *bid;                   /* surface of each blocker of the pair */
+    int capb;
+    rad_vec3 *bn, *bc;          /* clipped blockers: normal, centroid */
+    int capbn, capbc;
+    polyset cur, next;          /* visible pieces before / after a blocker */
+    rad_vec3 *rem, *tmp, *tmp2; /* the piece being cut, and the cut's output
+                                   (tmp2: the other side, occdomain.c) */
+    int caprem, captmp, captmp2;
+    double *d;                  /* signed distances */
+    int capd;
+    rad_vec3 *cone, *conep;     /* cone planes: inward normal, point */
+    int capcone, capconep;
+    rad_vec3 *sn, *sa;          /* penumbra or umbra planes of all blockers */
+    int capsn, capsa;
+    int *sfirst;                /* blocker b's planes: [sfirst[b], sfirst[b+1]) */
+    int capsf;
+    int *empty;                 /* blocker b's umbra has no interior */
+    int capem;
+    polyset da, db;             /* the support domain while it is built */
+    polyset dom;                /* the support domain: disjoint convex pieces */
+    rad_vec3 *pcen, *qcen;      /* bounding spheres of dom's (p) and db's (q)
+                                   pieces while split_events runs */
+    double *prad, *qrad;
+    int cappc, capqc, cappr, capqr;
+    polyset umb;                /* its pieces inside some blocker's umbra */
+    polyset arc;                /* a piece cut along an arc and its strips,
+                                   in the order made (occeee.c, follow_arc) */
+    polyset arc2;               /* the pieces after one of two arcs is cut
+                                   (occeee.c, follow_two_arcs) */
+    rad_vec3 *pj0, *pj1;        /* a blocker's shadow on the inner plane, clipped */
+    int cappj0, cappj1;
+    rad_vec3 *hn, *ha;          /* hull planes: outward normal, point */
+    int caphn, capha;
+    tri_node *node;
+    int capnode;
+    int nhull;                  /* the pair's shaft: the face planes
+                                   hn/ha[0 .. nhull) of occshaft.c (0: not
+                                   built, with culling off) */
+    occ_leaves leaves;          /* the tree of sp->node's leaves */
+    double snap;                /* the pair's tolerance: o->snap plus the
+                                   twists of its surfaces and candidates */
+    int any_hidden, any_visible;/* over the pair's evaluations */
+    double arc_left;            /* the widest lens a chord of occeee.c left,
+                                   a part of its chord */
+    double arc_err;             /* the error estimate of the lenses the
+                                   chords of occeee.c left (its eq. 2), in
+                                   the units of the hidden-part integral */
+    double noise_tol;           /* the round-off allowed in one point-to-
+                                   polygon sum (OCC_NOISE_SHARE) */
+    double evals;
+} occ_space;
+
+/* What an evaluation needs: the outer element's normal, the inner element
+ * (clipped) and the blockers (clipped to the front of the inner plane). */
+typedef struct pair_ctx {
+    rad_vec3 nx;                /* outer normal */
+    rad_vec3 tn;                /* inner normal */
+    const rad_vec3 *t;          /* inner element */
+    int nt;
+    int flat;                   /* the inner element is planar to round-off
+                                   (occhidden.c, orient_integral): shadows may
+                                   be taken on its plane (occpoint.c,
+                                   hidden_last) */
+    int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
+    double snap, sliver;        /* distance and area tolerances */
+    int events;                 /* split the domain along the event planes:
+                                   0 not at all (classic), OCC_SPLIT_ALL along
+                                   each plane, OCC_SPLIT_WEDGES only where its
+                                   event happens (occevent.c) */
+    int direct;                 /* evaluate visible(x), not hidden(x) (occpoint.c) */
+    int order;                  /* the rule on a cell (occrule.c): 0 the
+                                   3-point rule, k >= 2 the k x k Gauss
+                                   product (collapsed on a triangle) */
+    double arc_tol;             /* the widest lens a chord of occeee.c may
+                                   leave, a part of the chord (OCC_ARC_TOL_*) */
+    rad_vec3 touch[OCC_TOUCH_MAX]; /* blocker vertices on the outer element
+                                      (occhidden.c, touch_points) */
+    int ntouch;
+} pair_ctx;
+
+
+
+enum { OCC_SPLIT_ALL = 1, OCC_SPLIT_WEDGES = 2 };
+
+/* Where on an event plane the event happens (occevent.c): the event
+ * plane's part inside n half-spaces, each with inward unit normal m[h]
+ * through a[h]. */
+typedef struct occ_wedge {
+    rad_vec3 m[3], a[3];
+    int n;
+} occ_wedge;
+
+enum { OCC_EVENT_EV, OCC_EVENT_VE };  /* blocker edge and inner vertex, or
+                                          inner edge and blocker vertex */
+
+/* ---- across the files (each described where it is defined) ------------ */
+
+/* occspace.c: growable arrays, polysets, the cuts */
+void *occ_realloc(void *p, int *cap, int need, size_t size);
+int occ_ps_push(polyset *s, const rad_vec3 *p, int n);
+int occ_ps_push_shifted(polyset *s, const rad_vec3 *p, int n, rad_vec3 origin);
+void occ_ps_pop(polyset *s);
+void occ_space_free(occ_space *sp);
+int occ_clip_into(occ_space *sp, polyset *s, const rad_vec3 *p, int n, rad_vec3 nrm,
+                  rad_vec3 a, double tol);
+enum { OCC_SLIVERS_DROP, OCC_SLIVERS_KEEP, OCC_SLIVERS_MERGE }; /* occ_cut_piece */
+int occ_cut_piece(occ_space *sp, const rad_vec3 *nrm, const rad_vec3 *pt, int np, double snap,
+                  double sliver, int slivers, polyset *out, int *n);
+int occ_load_rem(occ_space *sp, const polyset *s, int k);
+
+/* occshaft.c: the pair's blockers */
+int occ_clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const rad_vec3 *q,
+                  int nq, rad_vec3 qn, double tol);
+double occ_pair_snap(const rad_occ *o, int a, int b, const int *cand, int ncand);
+int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                   const rad_ff_poly *pj, rad_vec3 origin);
+int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
+                      const rad_ff_poly *pj, rad_vec3 origin);
+
+/* occsolid.c: convex solids, and the faces a pair may leave out */
+rad_status occ_find_solids(rad_occ *o);
+int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
+
+/* occdomain.c: the domain of integration */
+int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occsplit.c: sp->dom's pieces split by a plane (their bounding spheres
+ * first, then every piece the plane crosses; with a wedge w only where
+ * its chord meets w), or by a whole plane after occeee.c's cuts */
+int occ_dom_spheres(occ_space *sp);
+int occ_split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
+                  const occ_wedge *w, double sliver);
+int occ_split_plane(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a);
+
+/* occevent.c: the wedges of the event planes */
+void occ_event_wedge(occ_wedge *w, int kind, rad_vec3 nrm, rad_vec3 e0, rad_vec3 e1,
+                     rad_vec3 f);
+int occ_event_misses(const occ_wedge *w, const rad_vec3 *p, const double *d, int n, double tol);
+
+/* occeee.c: the events of three edges, cut by chords */
+int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occpoint.c: hidden(x) */
+int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
+
+/* occrule.c: the integral of hidden(x) over one cell.  occ_rule: c's
+ * rule on a triangle (the 3-point rule, or the collapsed product of
+ * order c->order); occ_rule_order: the product rule of order k on a cell
+ * of nv vertices; occ_cell_children: the four children a cell is split
+ * into (a triangle's midpoint triangles, or the quarters of a
+ * quadrilateral's bilinear map). */
+int occ_rule(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q);
+/* The n = k^2 points x and weights w of occ_rule_order's rule of order k
+ * on cell p (nv 3 or 4 vertices, area `area`); returns n. */
+int occ_rule_points(int k, const rad_vec3 *p, int nv, double area, rad_vec3 *x, double *w);
+int occ_rule_order(occ_space *sp, const pair_ctx *c, int k, const rad_vec3 *p, int nv,
+                   double area, double *q, double *center);
+void occ_cell_children(const rad_vec3 *p, int nv, rad_vec3 ch[4][4]);
+
+/* occleaves.c: the worst leaf and the sums, O(log n) per change.  Build
+ * from node[0 .. n); set: node[k] changed and n leaves are in use (the
+ * tree grows when n passes its capacity).  0, or -1 on memory. */
+int occ_leaves_build(occ_leaves *lt, const tri_node *node, int n);
+int occ_leaves_set(occ_leaves *lt, const tri_node *node, int k, int n);
+void occ_leaves_free(occ_leaves *lt);
+
+/* occhidden.c: how much of a pair is hidden */
+int occ_occluded_sum(const rad_occ *o, occ_space *sp, rad_occ_stats *st, int nb,
+                     const rad_ff_poly *pi, const rad_ff_poly *pj, double s, double *snew,
+                     double *errest, int *direct);
+
+/* Make room for `need` elements in *p (capacity *cap); 0, or -1 when
+ * memory ran out (then *p is untouched).  One per element type, so that
+ * no pointer is accessed through a pointer of another type; the check is
+ * inline (the cuts call it once per plane), the growth is occ_realloc. */
+#define OCC_GROW(name, T)                                                                   \
+    static inline int name(T **p, int *cap, int need)                                       \
+    {                                                                                       \
+        if (need <= *cap)                                                                   \
+            return 0;                                                                       \
+        T *q = occ_realloc(*p, cap, need, sizeof *q);                                       \
+        if (!q)                                                                             \
+            return -1;                                                                      \
+        *p = q;                                                                             \
+        return 0;                                                                           \
+    }
+OCC_GROW(occ_grow_v3, rad_vec3)
+OCC_GROW(occ_grow_d, double)
+OCC_GROW(occ_grow_node, tri_node)
+OCC_GROW(occ_grow_i, int)
+
+/* Exchange two growable arrays (a cut's input and output). */
+static inline void occ_swap_v3(rad_vec3 **a, int *capa, rad_vec3 **b, int *capb)
+{
+    rad_vec3 *t = *a;
+    int tc = *capa;
+    *a = *b;
+    *capa = *capb;
+    *b = t;
+    *capb = tc;
+}
+
+static inline void occ_ps_clear(polyset *s)
+{
+    s->nv = s->np = 0;
+}
+
+#endif /* RAD_OCCSPACE_H */
