@@ -16,7 +16,7 @@
 extern "C" {
 #endif
 
-/* ---- form factors (formfactor.c) ---------------------------------------- */
+/* ---- form factors (the pair: src/ff/; polygons and matrices: src/fill/) - */
 
 typedef enum rad_accuracy {
     RAD_ACCURACY_CLASSIC = 0,   /* Goral et al. 1984: K Gauss points per edge,

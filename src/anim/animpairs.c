@@ -64,7 +64,6 @@
 #include <string.h>
 
 #include "anim/animint.h"
-#include "fill/ffblock.h"
 #include "fill/ffpairs.h"
 #include "mesh/mesh.h"
 #include "occ/occlusion.h"

@@ -3,7 +3,7 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * The dense fill (ffmatrix.c) computes all of F at once.  A distributed
- * solve (ScaLAPACK's 2-D block-cyclic layout, mpisolve.c) holds only some
+ * solve (ScaLAPACK's 2-D block-cyclic layout, mpi_solve.c) holds only some
  * rows and columns of F on each process, and must fill exactly those, to
  * the same values: F_ij from one rank and from the dense fill are the same
  * double.  A block is the cross product of a list of global rows and a

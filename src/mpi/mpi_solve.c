@@ -54,7 +54,6 @@
 #include "solve/solvers.h"
 #include "util/status.h"
 
-#define RAD_RCOND_MIN 1e-10 /* as gauss (lusolve.c) */
 
 
 /* What one job works on, on every process. */

@@ -65,7 +65,6 @@
 #include "solve/solvers.h"
 #include "util/status.h"
 
-#define RAD_RCOND_MIN 1e-10 /* as gauss (lusolve.c) */
 
 void radi_report_fallback(rad_solve_report *rep, const char *why)
 {

@@ -12,7 +12,7 @@
  * is not positive definite.  Arrays are column-major as solve.c states.
  *
  * A system is reported singular when dgetrf meets an exact zero pivot or
- * the reciprocal condition estimate falls below RAD_RCOND_MIN: then fewer
+ * the reciprocal condition estimate falls below RAD_RCOND_MIN (solvers.h): then fewer
  * than about 6 digits of B could be trusted (round-off 1e-16 times the
  * condition number 1e10).
  */
@@ -29,7 +29,6 @@
 #include "solve/solvers.h"
 #include "util/status.h"
 
-#define RAD_RCOND_MIN 1e-10
 
 /* The working matrix of LU or Cholesky, refused (RAD_ERR_TOOBIG) before
  * it is allocated when it cannot fit: a solver that reached LU by a

@@ -101,7 +101,6 @@
 
 #include "fill/ffrow.h"
 #include "mesh/patchgrid.h"
-#include "render/plot.h"
 #include "solve/progressive.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"

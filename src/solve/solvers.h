@@ -14,6 +14,12 @@
 #include "radiosity/mesh.h"
 #include "radiosity/solve.h"
 
+/* A system is reported singular when the reciprocal condition estimate
+ * falls below this: then fewer than about 6 digits of B could be trusted
+ * (round-off 1e-16 times the condition number 1e10).  LU (lusolve.c),
+ * Cholesky (cholesky.c) and the distributed solve (mpi_solve.c) share it. */
+#define RAD_RCOND_MIN 1e-10
+
 /* The next set of bands that share one reflectance vector and are not yet
  * done: their indices in bands[], marked done; returns how many (0 when
  * every band is done).  One factorisation serves each set (lusolve.c). */
@@ -43,7 +49,7 @@ rad_status radi_solve_cg(const rad_mesh *m, const double *F, const double *rho,
 
 /* The report's row sums, residual and energy balance from H = F B and
  * the row sums rs of F (balance.c); area and E scaled by 2^-ka and 2^-ke,
- * which the powers undo.  The distributed solve (mpisolve.c) reduces H
+ * which the powers undo.  The distributed solve (mpi_solve.c) reduces H
  * and rs over its processes and calls this on rank 0. */
 void radi_solve_balance(int n, const double *H, const double *rs, const double *rho,
                        const double *E, const double *B, const double *area, int ka, int ke,

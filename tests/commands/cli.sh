@@ -94,12 +94,12 @@ ok $? "write error on a file: exit $rc, '$msg', no file left"
 
 # usage and help: --help and -h alike for every command; getopt's own
 # messages name the program and the command
-for cmd in formfactor analytic solve render progress sweep; do
+for cmd in formfactor analytic solve render progress sweep animate compare; do
   "$RADIOSITY" $cmd --help | grep -q "Usage: radiosity $cmd"; ok $? "$cmd --help"
   "$RADIOSITY" $cmd -h > "$work/h" 2>&1; rc=$?
   [ $rc -eq 0 ] && grep -q "Usage: radiosity $cmd" "$work/h"; ok $? "$cmd -h works like --help (exit $rc)"
 done
-for cmd in formfactor solve render progress sweep; do
+for cmd in formfactor solve render progress sweep animate compare; do
   "$RADIOSITY" $cmd --no-such-option "$work/two.scene" > /dev/null 2> "$work/err"; rc=$?
   msg=$(head -n 1 "$work/err")
   case "$msg" in "radiosity $cmd: "*"no-such-option"*) m=0 ;; *) m=1 ;; esac
