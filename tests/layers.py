@@ -12,8 +12,9 @@ Every folder SRCDIR/NAME holds one module.  A file of module M may include
     - any header of its own folder, spelled "M/x.h";
     - a face header of a module listed before M, spelled "N/x.h".
 Anything else -- a folder above M, a header that is private to its folder,
-a name without its folder, a folder that MODULES does not list -- is
-printed as FILE:LINE: what is wrong, and the exit status is 1.
+a name without its folder, a folder that MODULES does not list, headers
+that include each other in a circle -- is printed as FILE:LINE: what is
+wrong, and the exit status is 1.
 
 With BUILDDIR, the calls are checked too, from the object files that the
 build left in BUILDDIR/src/M/ (nm): an include rule alone cannot see a
@@ -59,6 +60,7 @@ def check(src):
             if not os.path.isfile(os.path.join(src, name, h)):
                 bad.append('%s/MODULES: %s names %s, which is not in %s/%s'
                            % (src, name, h, src, name))
+    includes = {}
     for d in folders:
         if d not in rank:
             continue
@@ -70,9 +72,13 @@ def check(src):
                 for n, line in enumerate(f, 1):
                     m = INCLUDE.match(line)
                     if m:
+                        includes.setdefault('%s/%s' % (d, fn), set()).add(m.group(1))
                         why = verdict(m.group(1), d, rank, faces)
                         if why:
                             bad.append('%s:%d: "%s" %s' % (path, n, m.group(1), why))
+    for cycle in circles(includes):
+        bad.append('headers that include each other in a circle: %s'
+                   % ' '.join('src/' + h for h in cycle))
     return bad
 
 

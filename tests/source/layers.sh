@@ -60,6 +60,20 @@ mkdir "$work/src/stray" && cp "$src/$first/$victim" "$work/src/stray/"
 python3 "$check" "$work/src" > "$work/stray" 2>&1
 [ $? -eq 1 ] && grep -q "stray: a folder that MODULES does not list" "$work/stray"
 ok $? "a folder MODULES does not list is refused"
+# two headers of one folder that include each other
+pair=$(cd "$src/$first" && ls *.h | head -n 2 | tr '\n' ' ')
+set -- $pair
+if [ $# -eq 2 ]; then
+  scratch
+  printf '#include "%s/%s"\n' "$first" "$2" >> "$work/src/$first/$1"
+  printf '#include "%s/%s"\n' "$first" "$1" >> "$work/src/$first/$2"
+  python3 "$check" "$work/src" > "$work/circle" 2>&1
+  [ $? -eq 1 ] && grep -q "include each other in a circle: src/$first/$1 src/$first/$2" "$work/circle"
+  ok $? "$first/$1 and $first/$2 including each other are refused"
+else
+  skip "$first/ has fewer than two headers"
+fi
+
 # README.md's Layout lists the module folders, in the order of src/MODULES
 awk '!/^#/ && NF { print $1 }' "$src/MODULES" > "$work/modules"
 awk '/^## Layout/ { on = 1; next } /^## / { on = 0 } on && $1 ~ /^src\/[a-z0-9_]+\/$/ {
