@@ -6,11 +6,12 @@ Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 usage: layers.py SRCDIR [BUILDDIR]
 
 SRCDIR/MODULES lists the modules lowest first, one a line:
-    NAME  FACE.h [FACE.h ...]   -- what the module owns
+    NAME  [FACE.h]   -- what the module owns
+(one face header at most: the module's interface to those after it).
 Every folder SRCDIR/NAME holds one module.  A file of module M may include
     - the installed headers ("radiosity.h", "radiosity/...") and config.h;
     - any header of its own folder, spelled "M/x.h";
-    - a face header of a module listed before M, spelled "N/x.h".
+    - the face header of a module listed before M, spelled "N/x.h".
 Anything else -- a folder above M, a header that is private to its folder,
 a name without its folder, a folder that MODULES does not list, headers
 that include each other in a circle -- is printed as FILE:LINE: what is
@@ -56,6 +57,9 @@ def check(src):
         if d not in rank:
             bad.append('%s/%s: a folder that MODULES does not list' % (src, d))
     for name, face in modules:
+        if len(face) > 1:
+            bad.append('%s/MODULES: %s has %d faces (%s); a module has one'
+                       % (src, name, len(face), ' '.join(sorted(face))))
         for h in face:
             if not os.path.isfile(os.path.join(src, name, h)):
                 bad.append('%s/MODULES: %s names %s, which is not in %s/%s'

@@ -73,8 +73,8 @@
 #include "adapt/adaptive.h"
 #include "adapt/adaptmesh.h"
 #include "adapt/adaptstate.h"
-#include "solve/solvefree.h"
-#include "util/status.h"
+#include "solve/solve.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 #define PICK_TIE 1e-12 /* as progressive.c */

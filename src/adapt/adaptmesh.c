@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "adapt/adaptmesh.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 

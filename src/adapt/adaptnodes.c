@@ -17,7 +17,7 @@
 
 #include "adapt/adaptnodes.h"
 #include "mesh/mesh.h"
-#include "util/status.h"
+#include "util/util.h"
 
 void radi_adapt_nodes_free(rad_adapt_nodes *a)
 {

@@ -31,7 +31,7 @@
 #include <string.h>
 
 #include "adapt/adaptproject.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 

@@ -44,8 +44,8 @@
 #include "adapt/adaptmesh.h"
 #include "adapt/adaptproject.h"
 #include "adapt/adaptrace.h"
-#include "compare/rmserror.h"
-#include "util/status.h"
+#include "compare/compare.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 

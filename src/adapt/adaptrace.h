@@ -10,7 +10,7 @@
 #ifndef RAD_ADAPTRACE_H
 #define RAD_ADAPTRACE_H
 
-#include "solve/progressive.h"
+#include "solve/solve.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"

@@ -71,7 +71,7 @@
 #include <string.h>
 
 #include "adapt/adaptstate.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 

@@ -15,7 +15,7 @@
 #define RAD_ADAPTSTATE_H
 
 #include "adapt/adaptnodes.h"
-#include "fill/ffrow.h"
+#include "fill/fill.h"
 #include "radiosity/base.h"
 #include "radiosity/solve.h"
 

@@ -46,8 +46,7 @@
 #include <time.h>
 
 #include "anim/animint.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 
 void rad_anim_options_init(rad_anim_options *opt)

@@ -33,7 +33,7 @@
 #include <stdlib.h>
 
 #include "anim/animint.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* The estimated power j sends toward the samples (the header's I_j). */
 static double toward_samples(const rad_element *ej, const rad_anim_sample *s, int ns)

@@ -53,7 +53,7 @@
 #include <string.h>
 
 #include "anim/animint.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define LOG_MAGIC "radiosity-animation-log 1"
 

@@ -64,11 +64,10 @@
 #include <string.h>
 
 #include "anim/animint.h"
-#include "fill/ffpairs.h"
+#include "fill/fill.h"
 #include "mesh/mesh.h"
 #include "occ/occlusion.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* Elements with more vertices (polygons, disks) skip the shaft test and
  * are recomputed whenever their box meets the object's. */

@@ -51,7 +51,7 @@
 #include <string.h>
 
 #include "anim/animint.h"
-#include "util/status.h"
+#include "util/util.h"
 
 double radi_anim_unshot(const rad_anim *a)
 {

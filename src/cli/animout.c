@@ -13,7 +13,7 @@
 #include <stdio.h>
 
 #include "cli/animrun.h"
-#include "util/jsonstr.h"
+#include "util/util.h"
 
 static void tsv_num(FILE *out, double v)
 {

@@ -32,7 +32,7 @@
 #include <unistd.h>
 
 #include "cli/atomicfile.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define RAD_AFILE_MAX_HOPS 40 /* as the kernel's own limit on link chains */
 

@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "util/lapack.h"
+#include "util/util.h"
 
 /* ---- dispatch ----------------------------------------------------------- */
 

@@ -20,7 +20,7 @@
 
 #include "cli/atomicfile.h"
 #include "cli/cli.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* The library names its parameters as a C caller knows them, in
  * backquotes (`max_iterations`, `mesh`: radiosity.h's option fields); the

@@ -25,7 +25,7 @@
 #include "cli/atomicfile.h"
 #include "cli/animrun.h"
 #include "cli/cli.h"
-#include "util/jsonstr.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"

@@ -27,8 +27,7 @@
 
 #include "cli/cli.h"
 #include "cli/compare_print.h"
-#include "compare/elmatch.h"
-#include "compare/ffcompare.h"
+#include "compare/compare.h"
 #include "io/ffread.h"
 
 #define DEFAULT_FLOOR 1e-6

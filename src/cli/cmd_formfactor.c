@@ -17,7 +17,7 @@
 #include "radiosity/formfactor.h"
 #include "radiosity/export.h"
 #include "radiosity/export.h"
-#include "fill/persurface.h"
+#include "fill/fill.h"
 #include "mesh/mesh.h"
 
 static void help(void)

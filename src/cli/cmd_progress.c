@@ -31,11 +31,11 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "render/plotxy.h"
-#include "fill/ffrow.h"
+#include "render/render.h"
+#include "fill/fill.h"
 #include "cli/progress_adaptive.h"
 #include "cli/progress_snap.h"
-#include "solve/progressive.h"
+#include "solve/solve.h"
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"
@@ -43,7 +43,7 @@
 #include "radiosity/render.h"
 #include "radiosity/pipeline.h"
 #include "radiosity/render.h"
-#include "compare/rmserror.h"
+#include "compare/compare.h"
 
 #define DEFAULT_STEPS_CAP 10000 /* default --steps: 2 x elements, at most this */
 #define MAX_STEPS 10000000

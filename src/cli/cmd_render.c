@@ -18,7 +18,7 @@
 #include <strings.h>
 
 #include "cli/cli.h"
-#include "render/plot.h"
+#include "render/render.h"
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/render.h"

@@ -44,8 +44,8 @@
 #include "radiosity/accuracy.h"
 #include "radiosity/pipeline.h"
 #include "radiosity/accuracy.h"
-#include "util/lapack.h"
-#include "render/plotxy.h"
+#include "util/util.h"
+#include "render/render.h"
 
 enum { OPT_MESHES = 1200, OPT_ACCURACIES, OPT_SOLVERS, OPT_TRUTH_MESH, OPT_PLOT,
        OPT_RESOLUTIONS };

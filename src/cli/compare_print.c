@@ -21,8 +21,8 @@
 
 #include "cli/cli.h"
 #include "cli/compare_print.h"
-#include "util/jsonstr.h"
-#include "render/plotxy.h"
+#include "util/util.h"
+#include "render/render.h"
 
 int compare_within(const compare_ctx *c)
 {

@@ -13,7 +13,7 @@
 
 #include <stdio.h>
 
-#include "compare/ffcompare.h"
+#include "compare/compare.h"
 #include "radiosity/mesh.h"
 
 typedef struct compare_ctx {

@@ -33,7 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "adapt/adaptrace.h"
+#include "adapt/adapt.h"
 #include "cli/progress_adaptive.h"
 
 void progress_adaptive_init(progress_adaptive *o)

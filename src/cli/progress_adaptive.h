@@ -10,7 +10,7 @@
 
 #include "cli/cli.h"
 #include "cli/progress_snap.h"
-#include "solve/progressive.h"
+#include "solve/solve.h"
 
 typedef struct progress_adaptive {
     rad_solve_options solve;    /* adaptive, subdivide_threshold, max_depth:

@@ -19,7 +19,7 @@
 #include <stdlib.h>
 
 #include "cli/cli.h"
-#include "render/errcolour.h"
+#include "render/render.h"
 #include "cli/progress_snap.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"

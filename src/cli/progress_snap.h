@@ -10,7 +10,7 @@
 #ifndef RAD_PROGRESS_SNAP_H
 #define RAD_PROGRESS_SNAP_H
 
-#include "solve/progressive.h"
+#include "solve/solve.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/render.h"

@@ -20,9 +20,7 @@
 #include <string.h>
 
 #include "compare/elmatch.h"
-#include "util/readfile.h"
-#include "util/readnum.h"
-#include "util/status.h"
+#include "util/util.h"
 
 enum { COL_ELEMENT, COL_CX, COL_CY, COL_CZ, NCOLS };
 

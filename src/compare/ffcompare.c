@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "compare/ffcompare.h"
-#include "util/status.h"
+#include "util/util.h"
 
 double radi_ffcmp_bin_edge(int b)
 {

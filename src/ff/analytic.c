@@ -65,7 +65,7 @@
 
 #include <float.h>
 #include <math.h>
-#include "util/vec.h"
+#include "util/util.h"
 
 
 /* ---- argument checks and regimes ---------------------------------------- */

@@ -115,7 +115,7 @@
 #include "ff/formfactor.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 #define AREA_ORDER_MAX 10
 

@@ -33,7 +33,7 @@
 #include "ff/formfactor.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 typedef struct lv3 {
     long double x, y, z;

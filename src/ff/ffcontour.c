@@ -106,8 +106,7 @@
 #include <math.h>
 
 #include "ff/formfactor.h"
-#include "util/vec.h"
-#include "util/vecmath.h"
+#include "util/util.h"
 
 /* Kronrod 15-point nodes and weights and the embedded 7-point Gauss
  * weights (QUADPACK QK15). */

@@ -129,8 +129,7 @@
 
 #include "ff/formfactor.h"
 #include "ff/gausstab.h"
-#include "util/vec.h"
-#include "util/vecmath.h"
+#include "util/util.h"
 
 #define THETA 0.9  /* how far towards the singularity the ellipse reaches */
 #define BATCH 64   /* edge pairs per batch (a multiple of 4) */

@@ -27,7 +27,7 @@
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* Colinear (formfactor.h).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */

@@ -63,11 +63,9 @@
 
 #include "ff/formfactor.h"
 #include "ff/gausstab.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/status.h"
-#include "util/vec.h"
 
 
 /* ulps of the coordinates allowed for the rounding of a centroid */

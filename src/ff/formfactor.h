@@ -8,6 +8,7 @@
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
+#include "ff/gausstab.h"
 
 /* One edge of a polygon, relative to the polygon's centroid. */
 typedef struct rad_ff_edge {

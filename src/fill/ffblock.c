@@ -35,8 +35,7 @@
 #include "fill/ffblock.h"
 #include "fill/ffpairs.h"
 #include "mesh/mesh.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 struct rad_ff_block {
     rad_mesh unit;              /* the normalized copy */

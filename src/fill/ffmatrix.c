@@ -44,8 +44,7 @@
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 
 /* The two polygons in the frame of their common bounding box (mesh.h):

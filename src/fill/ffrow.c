@@ -44,8 +44,7 @@
 #include "fill/ffrow.h"
 #include "hemicube/hemicube.h"
 #include "mesh/mesh.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* Columns shorter than this run on one thread: a parallel region per shot
  * costs a barrier, and on a loaded machine (more runnable threads than

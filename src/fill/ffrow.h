@@ -39,7 +39,7 @@
 
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
-#include "mesh/patchgrid.h"
+#include "mesh/mesh.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"

@@ -35,7 +35,7 @@
 #include "fill/ffblock.h"
 #include "hemicube/hemicube.h"
 #include "mesh/mesh.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* Rows [i0, i1) into F, in parallel; returns the first failure. */
 static rad_status fill_rows(const rad_hemicube *hc, int i0, int i1, int threads, double *rows,

@@ -44,8 +44,7 @@
 #include <stdlib.h>
 
 #include "hemicube/hemicube.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 double radi_hc_delta_top(double u, double v, double dA)
 {

@@ -62,8 +62,7 @@
 #include "radiosity/mesh.h"
 #include "radiosity/render.h"
 #include "radiosity/render.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 struct rad_hemicube {
     rad_hc_table tab;

@@ -36,8 +36,7 @@
 #include "radiosity/render.h"
 #include "radiosity/export.h"
 #include "radiosity/export.h"
-#include "util/fmtdouble.h"
-#include "util/jsonstr.h"
+#include "util/util.h"
 
 int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
 {

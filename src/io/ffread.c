@@ -35,9 +35,7 @@
 #include <strings.h>
 
 #include "io/ffread.h"
-#include "util/readfile.h"
-#include "util/readnum.h"
-#include "util/status.h"
+#include "util/util.h"
 
 enum { PEEK = 128 };
 

@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "io/ffread.h"
-#include "util/status.h"
+#include "util/util.h"
 
 enum { NPY_HEADER_LIMIT = 1 << 16 };
 

@@ -34,8 +34,7 @@
 #include "radiosity/plyread.h"
 #include "radiosity/plyread.h"
 #include "scene/polycheck.h"
-#include "util/readfile.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define MAX_ELEMENTS 16
 #define MAX_PROPERTIES 64

@@ -33,9 +33,7 @@
 #include <string.h>
 
 #include "io/ffread.h"
-#include "util/readfile.h"
-#include "util/readnum.h"
-#include "util/status.h"
+#include "util/util.h"
 
 enum { VF_HEADER = 32 };
 

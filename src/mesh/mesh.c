@@ -55,8 +55,7 @@
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 #define RAD_AREA_MIN DBL_MIN /* 2.2e-308: smaller areas lose digits */
 #define RAD_AREA_MAX DBL_MAX /* 1.8e308 */

@@ -13,6 +13,7 @@
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"
+#include "mesh/patchgrid.h"
 
 /* How many elements, vertices and vertex indices the scene's mesh has,
  * without building it (for the memory check).  RAD_ERR_TOOBIG when one of

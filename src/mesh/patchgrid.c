@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "mesh/patchgrid.h"
-#include "util/status.h"
+#include "util/util.h"
 
 void radi_patch_grid_free(rad_patch_grid *g)
 {

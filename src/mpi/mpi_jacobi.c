@@ -30,7 +30,7 @@
 #include <string.h>
 
 #include "mpi/mpi_jacobi.h"
-#include "util/status.h"
+#include "util/util.h"
 
 static double max_abs(const double *x, size_t n)
 {

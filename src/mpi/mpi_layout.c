@@ -17,7 +17,7 @@
 
 #include "mpi/mpi_layout.h"
 #include "mpi/scalapack.h"
-#include "util/status.h"
+#include "util/util.h"
 
 void mpi_grid_shape(int size, int *pr, int *pc)
 {

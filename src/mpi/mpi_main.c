@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "util/lapack.h"
+#include "util/util.h"
 #include "mpi/mpi_solve.h"
 #include "mpi/scalapack.h"
 

@@ -46,13 +46,13 @@
 #include <string.h>
 #include <time.h>
 
-#include "fill/ffblock.h"
+#include "fill/fill.h"
 #include "mpi/mpi_jacobi.h"
 #include "mpi/mpi_layout.h"
 #include "mpi/mpi_solve.h"
 #include "mpi/scalapack.h"
-#include "solve/solvers.h"
-#include "util/status.h"
+#include "solve/solve.h"
+#include "util/util.h"
 
 
 

@@ -25,9 +25,8 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
-#include "util/vec.h"
 
 
 /* The penumbra region of a convex blocker P lit by a convex polygon T, the

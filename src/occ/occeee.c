@@ -53,8 +53,7 @@
 #include <string.h>
 
 #include "occ/occspace.h"
-#include "util/polygon.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* One line of an event: a point and a direction, in the event's own
  * units: x in the pair's frame is x * inv there (inv a power of two, the

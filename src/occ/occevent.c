@@ -43,7 +43,7 @@
 #include <math.h>
 
 #include "occ/occspace.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* Add to w the half-space (of the event plane, unit normal nrm) bounded
  * by the line through a and b: the side of ref when `in`, else the other

@@ -45,10 +45,9 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/vec.h"
 
 
 /* Is x in convex polygon p (n vertices, normal nrm), within tol? */

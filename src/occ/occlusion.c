@@ -67,11 +67,9 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/status.h"
-#include "util/vec.h"
 
 
 /* The pair in its own frame: vertices and centroids less `origin` (the

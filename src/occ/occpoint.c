@@ -34,9 +34,8 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
-#include "util/vec.h"
 
 
 /* The difference q - x in long double: exact where the two exponents

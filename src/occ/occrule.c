@@ -34,9 +34,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "ff/gausstab.h"
+#include "ff/formfactor.h"
 #include "occ/occspace.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* The 3-point degree-2 rule (order 0, above). */
 static int rule3(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, double area, double *q)

@@ -44,12 +44,10 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
-#include "util/status.h"
-#include "util/vec.h"
 #include "occ/visibility.h"
 
 

@@ -87,9 +87,8 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
-#include "util/vec.h"
 
 #define SOLID_MAX_V 64  /* vertices of a group searched for its face planes */
 #define FACET_CAP (SOLID_MAX_V + 8)

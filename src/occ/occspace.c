@@ -21,9 +21,8 @@
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
-#include "util/vec.h"
 
 
 /* The capacity to grow to for `need` elements. */

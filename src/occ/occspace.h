@@ -17,7 +17,7 @@
 #include "occ/occlusion.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* Tolerances.  A point is on a plane (and a blocker only touches a shaft)
  * within OCC_SNAP of the scene's bounding-box diagonal L, plus the

@@ -17,9 +17,8 @@
 
 #include "occ/occlusion.h"
 #include "occ/occspace.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
-#include "util/vec.h"
 
 /* Append polygon p (n vertices) to sp->db with its bounding sphere
  * (centre cen, radius rad); 0 or -1. */

@@ -29,7 +29,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "util/status.h"
+#include "util/util.h"
 #include "occ/visibility.h"
 
 namespace {

@@ -20,7 +20,7 @@
 #include "radiosity/formfactor.h"
 #include "radiosity/accuracy.h"
 #include "radiosity/accuracy.h"
-#include "util/status.h"
+#include "util/util.h"
 
 int rad_furnace_radiosity(const rad_scene *s, double B[RAD_BANDS])
 {

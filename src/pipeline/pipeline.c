@@ -27,10 +27,10 @@
 #include "radiosity/pipeline.h"
 #include "radiosity/pipeline.h"
 #include "mesh/mesh.h"
-#include "adapt/adaptive.h"
-#include "solve/solvefree.h"
+#include "adapt/adapt.h"
+#include "solve/solve.h"
 #include "hemicube/hemicube.h"
-#include "util/status.h"
+#include "util/util.h"
 
 
 void rad_pipeline_options_init(rad_pipeline_options *opt)

@@ -23,8 +23,7 @@
 
 #include "render/plot.h"
 #include "radiosity/base.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* ---- PNG output ------------------------------------------------------------ */
 

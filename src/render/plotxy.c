@@ -15,8 +15,7 @@
 
 #include "render/plot.h"
 #include "render/plotxy.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 #define ML 86.0
 #define MR 210.0

@@ -57,13 +57,11 @@
 #include <cairo.h>
 
 #include "render/plot.h"
-#include "util/polygon.h"
+#include "util/util.h"
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"
 #include "radiosity/render.h"
-#include "util/status.h"
-#include "util/vec.h"
 
 #define ZNEAR_REL 1e-6          /* near plane, relative to the scene's size */
 #define EDGE_HALF_WIDTH 0.55    /* pixels: lines about one pixel wide */

@@ -24,7 +24,7 @@
 #include "radiosity/scene.h"
 #include "radiosity/changes.h"
 #include "radiosity/changes.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* Area-weighted centroid of object o's surfaces (Newell's vector gives
  * each polygon's area; its centroid by the triangle fan). */

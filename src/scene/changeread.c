@@ -27,8 +27,7 @@
 #include "radiosity/scene.h"
 #include "radiosity/changes.h"
 #include "radiosity/changes.h"
-#include "util/readfile.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* The reader's state: the changes so far and presence per object. */
 typedef struct change_state {

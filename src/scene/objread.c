@@ -41,10 +41,9 @@
 #include <string.h>
 
 #include "scene/objread.h"
-#include "util/readnum.h"
+#include "util/util.h"
 #include "scene/polycheck.h"
 #include "scene/scenebuild.h"
-#include "util/status.h"
 
 #define NO_MATERIAL "(no material)"
 #define MTLLIB_NAME_MAX 255 /* bytes in an mtllib file name, as in NAME_MAX */

@@ -9,7 +9,7 @@
 
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
-#include "util/readfile.h"
+#include "util/util.h"
 
 /* Read the OBJ lines of r (opened with '#' as its comment character) into
  * *scene, r->name naming the file in messages and r->err taking the error.

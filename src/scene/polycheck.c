@@ -22,8 +22,7 @@
 
 #include "radiosity/base.h"
 #include "scene/polycheck.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 #define RAD_PLANAR_TOL 1e-6
 #define RAD_TURN_TOL 1e-9

@@ -38,9 +38,7 @@
 #include "scene/scenebuild.h"
 #include "scene/objread.h"
 #include "scene/vs3read.h"
-#include "util/readfile.h"
-#include "util/status.h"
-#include "util/vec.h"
+#include "util/util.h"
 
 /* One line being parsed: its tokens and where it came from. */
 typedef struct line_ctx {

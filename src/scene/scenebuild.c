@@ -16,7 +16,7 @@
 
 #include "scene/scenebuild.h"
 #include "scene/polycheck.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* ---- names ------------------------------------------------------------------ */
 

@@ -18,7 +18,7 @@
 
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
-#include "util/status.h"
+#include "util/util.h"
 
 /* Is surface s present: outside every object, or in a present one? */
 static int surface_present(const rad_scene *in, const unsigned char *present, int s)

@@ -45,10 +45,9 @@
 #include <strings.h>
 
 #include "scene/vs3read.h"
-#include "util/readnum.h"
+#include "util/util.h"
 #include "scene/polycheck.h"
 #include "scene/scenebuild.h"
-#include "util/status.h"
 
 typedef struct vs3_state {
     rad_scene_build b;

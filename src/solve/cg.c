@@ -47,7 +47,7 @@
 
 #include "solve/fpass.h"
 #include "solve/solvers.h"
-#include "util/status.h"
+#include "util/util.h"
 
 typedef struct cg {
     int n;

@@ -61,9 +61,8 @@
 #endif
 
 #include "solve/fpass.h"
-#include "util/lapack.h"
+#include "util/util.h"
 #include "solve/solvers.h"
-#include "util/status.h"
 
 
 void radi_report_fallback(rad_solve_report *rep, const char *why)

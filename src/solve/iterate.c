@@ -51,7 +51,7 @@
 
 #include "solve/fpass.h"
 #include "solve/solvers.h"
-#include "util/status.h"
+#include "util/util.h"
 
 #define GS_BLOCK 1024
 

@@ -19,7 +19,7 @@
  */
 #include <config.h>
 
-#include "util/lapack.h"
+#include "util/util.h"
 #include "solve/lu.h"
 
 #define LU_BLOCK 256

@@ -22,12 +22,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "util/lapack.h"
+#include "util/util.h"
 #include "solve/lu.h"
 #include "radiosity/base.h"
 #include "radiosity/solve.h"
 #include "solve/solvers.h"
-#include "util/status.h"
 
 
 /* The working matrix of LU or Cholesky, refused (RAD_ERR_TOOBIG) before

@@ -99,14 +99,14 @@
 #include <string.h>
 
 
-#include "fill/ffrow.h"
-#include "mesh/patchgrid.h"
+#include "fill/fill.h"
+#include "mesh/mesh.h"
 #include "solve/progressive.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/solve.h"
-#include "compare/rmserror.h"
-#include "util/status.h"
+#include "compare/compare.h"
+#include "util/util.h"
 
 #define NB RAD_BANDS
 

@@ -12,7 +12,7 @@
 #ifndef RAD_PROGRESSIVE_H
 #define RAD_PROGRESSIVE_H
 
-#include "fill/ffrow.h"
+#include "fill/fill.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"

@@ -50,7 +50,7 @@
 #include "radiosity/solve.h"
 #include "solve/progressive.h"
 #include "solve/solvers.h"
-#include "util/status.h"
+#include "util/util.h"
 
 void rad_solve_options_init(rad_solve_options *opt)
 {

@@ -28,11 +28,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fill/ffrow.h"
+#include "fill/fill.h"
 #include "solve/progressive.h"
 #include "solve/solvefree.h"
 #include "solve/solvers.h"
-#include "util/status.h"
+#include "util/util.h"
 
 void radi_report_init_shooting(rad_solve_report *rep)
 {

@@ -60,6 +60,15 @@ mkdir "$work/src/stray" && cp "$src/$first/$victim" "$work/src/stray/"
 python3 "$check" "$work/src" > "$work/stray" 2>&1
 [ $? -eq 1 ] && grep -q "stray: a folder that MODULES does not list" "$work/stray"
 ok $? "a folder MODULES does not list is refused"
+# a module with a second face
+scratch
+ownface=$(awk -v m="$first" '$1 == m { print $2 }' "$src/MODULES")
+second=$(cd "$src/$first" && ls *.h | grep -vx "$ownface" | head -n 1)
+awk -v m="$first" -v h="$second" '$1 == m { $2 = $2 " " h } { print }' "$src/MODULES" > "$work/src/MODULES"
+python3 "$check" "$work/src" > "$work/second" 2>&1
+[ $? -eq 1 ] && grep -q "MODULES: $first has 2 faces" "$work/second"
+ok $? "a second face of $first/ ($second) is refused"
+
 # two headers of one folder that include each other
 pair=$(cd "$src/$first" && ls *.h | head -n 2 | tr '\n' ' ')
 set -- $pair
