@@ -23,38 +23,40 @@
 #include "util/util.h"
 
 /* The library names its parameters as a C caller knows them, in
- * backquotes (`max_iterations`, `mesh`: radiosity.h's option fields); the
- * program speaks of its options.  Each `name` becomes --name, underscores
- * as hyphens, but for the parameters whose option is spelled otherwise
- * (the table).  Anything else in backquotes is written as it is. */
+ * backquotes (`max_iterations`, `mesh`: the option fields of radiosity.h);
+ * the program speaks of its options.  Each parameter of the table becomes
+ * its option; anything else, a path that happens to hold backquotes
+ * included, is written as it is.  tests/source/libwords.sh checks that
+ * the library names no option itself, and that this table knows every
+ * parameter the library names. */
 static void put_option_names(const char *s, FILE *out)
 {
     static const struct {
         const char *param, *option;
-    } renamed[] = {
+    } names[] = {
         {"`patch_p` x `patch_q`", "--patches PxQ"},
         {"`keep_form_factors`", "--form-factors"},
+        {"`max_iterations`", "--max-iterations"},
+        {"`max_depth`", "--max-depth"},
+        {"`resolution`", "--resolution"},
+        {"`accuracy`", "--accuracy"},
+        {"`bounces`", "--bounces"},
+        {"`patches`", "--patches"},
+        {"`matrix`", "--matrix"},
+        {"`solver`", "--solver"},
+        {"`mesh`", "--mesh"},
     };
+    const size_t count = sizeof names / sizeof names[0];
     while (*s) {
-        size_t k = 0, n = 0;
-        for (k = 0; k < sizeof renamed / sizeof renamed[0]; k++)
-            if (strncmp(s, renamed[k].param, strlen(renamed[k].param)) == 0)
-                break;
-        if (k < sizeof renamed / sizeof renamed[0]) {
-            fputs(renamed[k].option, out);
-            s += strlen(renamed[k].param);
-            continue;
+        size_t k = 0;
+        while (k < count && strncmp(s, names[k].param, strlen(names[k].param)) != 0)
+            k++;
+        if (k < count) {
+            fputs(names[k].option, out);
+            s += strlen(names[k].param);
+        } else {
+            fputc(*s++, out);
         }
-        if (*s == '`')
-            n = strspn(s + 1, "abcdefghijklmnopqrstuvwxyz_");
-        if (n > 0 && s[n + 1] == '`') {
-            fputs("--", out);
-            for (size_t i = 1; i <= n; i++)
-                fputc(s[i] == '_' ? '-' : s[i], out);
-            s += n + 2;
-            continue;
-        }
-        fputc(*s++, out);
     }
 }
 

@@ -21,6 +21,15 @@ python3 "$check" "$work/src" > "$work/bad" 2>&1
 [ $? -eq 1 ] && grep -q 'solve/solve.c:[0-9]*: "use a coarser --mesh"' "$work/bad"
 ok $? "a library string naming --mesh is found, with its file and line"
 
+# every parameter the library names is one the program can translate
+python3 "$check" "$top_srcdir/src" --params > "$work/params"
+missing=
+while read -r name; do
+  grep -q "{\".*\`$name\`.*\"," "$top_srcdir/src/cli/cli_common.c" || missing="$missing $name"
+done < "$work/params"
+[ -s "$work/params" ] && [ -z "$missing" ]
+ok $? "the program's table turns every parameter the library names into its option ($(wc -l < "$work/params") names)${missing:+; missing:$missing}"
+
 # the program speaks of its options: the library's `max_iterations` and
 # `solver` reach the user as --max-iterations and --solver
 cat > "$work/open.scene" <<'END'
