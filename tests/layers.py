@@ -14,7 +14,8 @@ Every folder SRCDIR/NAME holds one module.  A file of module M may include
     - the face header of a module listed before M, spelled "N/x.h".
 Anything else -- a folder above M, a header that is private to its folder,
 a name without its folder, a folder that MODULES does not list, headers
-that include each other in a circle -- is printed as FILE:LINE: what is
+that include each other in a circle, a file that neither its folder's
+local.mk nor Makefile.am lists -- is printed as FILE:LINE: what is
 wrong, and the exit status is 1.
 
 With BUILDDIR, the calls are checked too, from the object files that the
@@ -80,6 +81,16 @@ def check(src):
                         why = verdict(m.group(1), d, rank, faces)
                         if why:
                             bad.append('%s:%d: "%s" %s' % (path, n, m.group(1), why))
+    am = os.path.join(src, os.pardir, 'Makefile.am')
+    top_am = open(am).read() if os.path.isfile(am) else ''
+    for d in folders:
+        mk = os.path.join(src, d, 'local.mk')
+        listed = set(re.findall(r'%reldir%/([\w.]+)', open(mk).read())) if os.path.isfile(mk) else set()
+        listed |= set(re.findall(r'\bsrc/%s/([\w.]+)' % d, top_am))
+        for fn in sorted(os.listdir(os.path.join(src, d))):
+            if re.search(r'\.(c|h|cc)$', fn) and fn not in listed:
+                bad.append('%s/%s/%s: not listed in %s, so not built or distributed'
+                           % (src, d, fn, mk))
     for cycle in circles(includes):
         bad.append('headers that include each other in a circle: %s'
                    % ' '.join('src/' + h for h in cycle))

@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/adapt.h \
 	%reldir%/adaptive.c %reldir%/adaptive.h \
 	%reldir%/adaptmesh.c %reldir%/adaptmesh.h \
 	%reldir%/adaptnodes.c %reldir%/adaptnodes.h \

@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/compare.h \
 	%reldir%/elmatch.c %reldir%/elmatch.h \
 	%reldir%/ffcompare.c %reldir%/ffcompare.h \
 	%reldir%/rmserror.c %reldir%/rmserror.h

@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/fill.h \
 	%reldir%/ffblock.c %reldir%/ffblock.h \
 	%reldir%/ffmatrix.c \
 	%reldir%/ffpairs.h \

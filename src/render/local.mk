@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/render.h \
 	%reldir%/errcolour.c %reldir%/errcolour.h \
 	%reldir%/exposure.c \
 	%reldir%/plot.c %reldir%/plot.h \

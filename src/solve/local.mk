@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/solve.h \
 	%reldir%/balance.c \
 	%reldir%/cg.c \
 	%reldir%/cholesky.c \

@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/util.h \
 	%reldir%/blasthreads.c \
 	%reldir%/fmtdouble.c %reldir%/fmtdouble.h \
 	%reldir%/jsonstr.c %reldir%/jsonstr.h \

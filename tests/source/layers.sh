@@ -69,6 +69,15 @@ python3 "$check" "$work/src" > "$work/second" 2>&1
 [ $? -eq 1 ] && grep -q "MODULES: $first has 2 faces" "$work/second"
 ok $? "a second face of $first/ ($second) is refused"
 
+# a file its folder's local.mk does not list (it would be left out of
+# the build and the tarball)
+scratch
+cp "$top_srcdir/Makefile.am" "$work/Makefile.am"
+grep -v "%reldir%/$ownface" "$src/$first/local.mk" > "$work/src/$first/local.mk"
+python3 "$check" "$work/src" > "$work/unlisted" 2>&1
+[ $? -eq 1 ] && grep -q "src/$first/$ownface: not listed in" "$work/unlisted"
+ok $? "$first/$ownface left out of $first/local.mk is refused"
+
 # two headers of one folder that include each other
 pair=$(cd "$src/$first" && ls *.h | head -n 2 | tr '\n' ' ')
 set -- $pair
