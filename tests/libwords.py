@@ -17,25 +17,20 @@ import os
 import re
 import sys
 
+sys.dont_write_bytecode = True  # a read-only source tree (distcheck) stays clean
+from layers import read_modules  # noqa: E402 (after the flag above)
+
 PROGRAMS = {'cli', 'mpi'}
 TOKENS = re.compile(r'/\*.*?\*/|//[^\n]*|"(?:[^"\\\n]|\\.)*"|\'(?:[^\'\\\n]|\\.)*\'', re.S)
 OPTION = re.compile(r'(?<![\w-])--[a-z]')
 PARAM = re.compile(r'`([a-z_]+)`')
 
 
-def modules(src):
-    with open(os.path.join(src, 'MODULES')) as f:
-        for line in f:
-            line = line.split('--')[0].split('#')[0].strip()
-            if line:
-                yield line.split()[0]
-
-
 def main():
     if len(sys.argv) not in (2, 3) or (len(sys.argv) == 3 and sys.argv[2] != '--params'):
         sys.exit(__doc__.split('\n\n')[1])
     src, bad, params = sys.argv[1], 0, set()
-    for mod in modules(src):
+    for mod, _ in read_modules(os.path.join(src, 'MODULES')):
         if mod in PROGRAMS:
             continue
         folder = os.path.join(src, mod)

@@ -30,15 +30,8 @@
 #include <string.h>
 
 #include "mpi/mpi_jacobi.h"
+#include "solve/solve.h"
 #include "util/util.h"
-
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
-}
 
 /* q per band from the reduced row sums of |F| (INFINITY when >= 1). */
 static void contraction(const mpi_grid *g, const double *F, const double *rho, double *rowabs,
@@ -125,17 +118,17 @@ rad_status mpi_jacobi(const mpi_grid *g, const double *F, const double *rho, con
     for (k = 1; k <= max_iterations && !stop; k++) {
         sweep(g, F, rho, E, B, H, chg);
         change = fmax(chg[0], fmax(chg[1], chg[2]));
-        if (prev > 0 && change > 0 && change > 1e4 * DBL_EPSILON * max_abs(B, n3))
+        if (prev > 0 && change > 0 && change > 1e4 * DBL_EPSILON * radi_max_abs(B, n3))
             rate = change / prev;
         prev = change;
         bound = error_bound(q, chg, k > 1 ? rate : 0, &stop_on);
-        stop = stop_on <= tolerance * max_abs(B, n3);
+        stop = stop_on <= tolerance * radi_max_abs(B, n3);
         MPI_Bcast(&stop, 1, MPI_INT, 0, MPI_COMM_WORLD);
     }
     k--;
     rep->sweeps = k;
     rep->spectral_radius = rate;
-    rep->error_bound = bound / fmax(max_abs(B, n3), DBL_MIN);
+    rep->error_bound = bound / fmax(radi_max_abs(B, n3), DBL_MIN);
     if (!stop)
         st = radi_fail(err, RAD_ERR_NOCONV,
                       "jacobi did not converge in %d sweeps: error bound %.3g relative, "

@@ -17,7 +17,6 @@
 #include <config.h>
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 
 #include "radiosity/base.h"
@@ -28,17 +27,6 @@
 #define RAD_TURN_TOL 1e-9
 #define RAD_AREA_TOL 1e-12
 #define RAD_SELFX_MAX 4096  /* O(n^2) self-intersection diagnosis up to this n */
-
-static rad_status fail_at(rad_error *err, const char *file, int line, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-static rad_status fail_at(rad_error *err, const char *file, int line, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    rad_status st = radi_fail_vat(err, file, line, fmt, ap);
-    va_end(ap);
-    return st;
-}
 
 /* ---- polygon validation ------------------------------------------------- */
 
@@ -102,18 +90,18 @@ rad_status radi_polygon_check(const rad_vec3 *p, int n, const char *what,
     v3_bounds(p, n, &lo, &hi);
     double diam = v3_norm(v3_sub(hi, lo));
     if (diam > 0 && !(diam >= 0x1p-510 && diam <= 0x1p510)) /* areas: normal doubles (mesh.c) */
-        return fail_at(err, file, line, "%s is %.3g across, outside the sizes this program accepts (%.3g to %.3g, so that areas are normal doubles); rescale the scene", what, diam, 0x1p-510, 0x1p510);
+        return radi_fail_at(err, file, line, "%s is %.3g across, outside the sizes this program accepts (%.3g to %.3g, so that areas are normal doubles); rescale the scene", what, diam, 0x1p-510, 0x1p510);
     if (!(diam > 0) || !isfinite(diam))
-        return fail_at(err, file, line, "%s has zero area (all vertices coincide)", what);
+        return radi_fail_at(err, file, line, "%s has zero area (all vertices coincide)", what);
     for (int k = 0; k < n; k++)
         if (v3_norm(v3_sub(p[(k + 1) % n], p[k])) <= RAD_AREA_TOL * diam)
-            return fail_at(err, file, line, "%s has a repeated vertex (vertices %d and %d)", what,
+            return radi_fail_at(err, file, line, "%s has a repeated vertex (vertices %d and %d)", what,
                            k + 1, (k + 1) % n + 1);
     rad_vec3 nw = v3_newell(p, n);
     double twice_area = v3_norm(nw);
     rad_vec3 nrm = twice_area > 0 ? nw : largest_turn_normal(p, n);
     if (!(v3_norm(nrm) > RAD_AREA_TOL * diam * diam))
-        return fail_at(err, file, line, "%s has zero area (its vertices are colinear)", what);
+        return radi_fail_at(err, file, line, "%s has zero area (its vertices are colinear)", what);
     nrm = v3_scale(nrm, 1.0 / v3_norm(nrm));
 
     /* Planarity: distance of each vertex from the plane through the mean. */
@@ -124,7 +112,7 @@ rad_status radi_polygon_check(const rad_vec3 *p, int n, const char *what,
     for (int k = 0; k < n; k++) {
         double off = fabs(v3_dot(v3_sub(p[k], mean), nrm));
         if (off > RAD_PLANAR_TOL * diam)
-            return fail_at(err, file, line,
+            return radi_fail_at(err, file, line,
                            "%s is not planar (vertex %d is %.3g off its plane; "
                            "tolerance %g of its size)",
                            what, k + 1, off, RAD_PLANAR_TOL);
@@ -144,12 +132,12 @@ rad_status radi_polygon_check(const rad_vec3 *p, int n, const char *what,
     }
     if (reflex >= 0 || total > 2 * RAD_PI + 1e-6) {
         if (n <= RAD_SELFX_MAX && polygon_self_intersects(p, n, nrm))
-            return fail_at(err, file, line, "%s is self-intersecting", what);
+            return radi_fail_at(err, file, line, "%s is self-intersecting", what);
         if (reflex >= 0)
-            return fail_at(err, file, line, "%s is not convex (at vertex %d)", what, reflex + 1);
-        return fail_at(err, file, line, "%s is self-intersecting (it winds more than once)", what);
+            return radi_fail_at(err, file, line, "%s is not convex (at vertex %d)", what, reflex + 1);
+        return radi_fail_at(err, file, line, "%s is self-intersecting (it winds more than once)", what);
     }
     if (!(0.5 * twice_area > RAD_AREA_TOL * diam * diam))
-        return fail_at(err, file, line, "%s has zero area", what);
+        return radi_fail_at(err, file, line, "%s has zero area", what);
     return RAD_OK;
 }

@@ -17,14 +17,6 @@
 #include "radiosity/solve.h"
 #include "solve/solvers.h"
 
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
-}
-
 /* The report's powers are sum A_i x_i in the user's units: the sums are
  * taken with the scaled areas and E (2^-ka, 2^-ke) and scaled back, so
  * they are inf only when the power itself exceeds the double range; the
@@ -40,7 +32,7 @@ void radi_solve_balance(int n, const double *H, const double *rs, const double *
         rep->row_sum_min = fmin(rep->row_sum_min, rs[i]);
         rep->row_sum_max = fmax(rep->row_sum_max, rs[i]);
     }
-    double emax = max_abs(E, (size_t)n * RAD_BANDS), res = 0;
+    double emax = radi_max_abs(E, (size_t)n * RAD_BANDS), res = 0;
     for (int b = 0; b < RAD_BANDS; b++) {
         double em = 0, ab = 0, es = 0;
         for (int i = 0; i < n; i++) {

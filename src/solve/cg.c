@@ -59,14 +59,6 @@ typedef struct cg {
     int live[RAD_BANDS];        /* band still iterating */
 } cg;
 
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
-}
-
 static void cg_free(cg *c)
 {
     free(c->v);
@@ -195,8 +187,8 @@ static int cg_run(cg *c, const rad_solve_options *opt, rad_solve_report *rep)
     double bound = cg_restart(c);
     int k = 0;
     while (bound >= 0) {
-        const double goal = opt->tolerance * max_abs(c->B, n3);
-        rep->error_bound = bound / fmax(max_abs(c->B, n3), DBL_MIN);
+        const double goal = opt->tolerance * radi_max_abs(c->B, n3);
+        rep->error_bound = bound / fmax(radi_max_abs(c->B, n3), DBL_MIN);
         if (bound <= goal)
             break;
         if (k == opt->max_iterations)

@@ -64,14 +64,6 @@ typedef struct iter {
     double q[RAD_BANDS];        /* contraction factor per band, INFINITY if >= 1 */
 } iter;
 
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
-}
-
 /* The contraction factors, per band, from the scan's row sums. */
 static void contraction(iter *it, const rad_fscan *sc, rad_solve_report *rep)
 {
@@ -246,11 +238,11 @@ rad_status radi_solve_iterate(const rad_mesh *m, const double *F, const double *
         change = fmax(chg[0], fmax(chg[1], chg[2]));
         /* asymptotic factor: the ratio of successive changes, while they are
          * well above round-off (below 1e4 eps |B| the ulps of B dominate) */
-        if (prev > 0 && change > 0 && change > 1e4 * DBL_EPSILON * max_abs(B, n3))
+        if (prev > 0 && change > 0 && change > 1e4 * DBL_EPSILON * radi_max_abs(B, n3))
             rate = change / prev;
         prev = change;
         bound = error_bound(&it, chg, k > 1 ? rate : 0, &stop_on);
-        const double goal = opt->tolerance * max_abs(B, n3);
+        const double goal = opt->tolerance * radi_max_abs(B, n3);
         if (opt->progress && k % 16 == 0 && opt->bounces < 0 && goal > 0) {
             /* digits gained of those asked for */
             const double frac = stop_on > goal ? log(stop_on / goal * opt->tolerance) /
@@ -265,7 +257,7 @@ rad_status radi_solve_iterate(const rad_mesh *m, const double *F, const double *
     }
     rep->sweeps = k > limit ? limit : k;
     rep->spectral_radius = rate;
-    rep->error_bound = bound / fmax(max_abs(B, n3), DBL_MIN);
+    rep->error_bound = bound / fmax(radi_max_abs(B, n3), DBL_MIN);
     if (opt->bounces < 0 && k > limit) {
         char what[96];
         snprintf(what, sizeof what, isnan(rep->error_bound)
@@ -276,7 +268,7 @@ rad_status radi_solve_iterate(const rad_mesh *m, const double *F, const double *
                       "%s did not converge in %d sweeps: %s, tolerance %g (change %.3g; "
                       "convergence factor per sweep %.6f%s)",
                       it.gs ? "gauss-seidel" : "jacobi", limit, what, opt->tolerance,
-                      change / fmax(max_abs(B, n3), DBL_MIN), rate,
+                      change / fmax(radi_max_abs(B, n3), DBL_MIN), rate,
                       rate >= 1 - 1e-9 ? ": the system looks singular (rho = 1 in a closed scene?)"
                                        : "; raise `max_iterations` or use `solver` gauss");
     }

@@ -102,6 +102,7 @@
 #include "fill/fill.h"
 #include "mesh/mesh.h"
 #include "solve/progressive.h"
+#include "solve/solvers.h"
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/solve.h"
@@ -127,14 +128,6 @@ static double sum(const double *x, int n)
     for (int i = 0; i < n; i++)
         s += x[i];
     return s;
-}
-
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
 }
 
 static double max_diff(const double *a, const double *b, size_t n)
@@ -785,7 +778,7 @@ rad_status radi_race_run_source(const rad_mesh *mesh, const rad_shoot_source *sr
         }
     for (int m = 0; m < RAD_RACE_METHODS; m++)
         reached[m] = -1;
-    race rc = {opt, n, rho, area, Bref, sum(area, n), max_abs(Bref, (size_t)n * NB), rms,
+    race rc = {opt, n, rho, area, Bref, sum(area, n), radi_max_abs(Bref, (size_t)n * NB), rms,
                reached, src, row, row ? row + n : NULL, err, RAD_OK};
     int stop = race_gather(&rc, E, B);
     for (int sort = 0; sort <= 1 && !stop && st == RAD_OK; sort++) {

@@ -15,7 +15,8 @@
 #include "radiosity/base.h"
 #include "solve/solvers.h"
 
-static double max_abs(const double *x, size_t n)
+/* The largest |x_k| (0 for n = 0; NaN entries are passed over by fmax). */
+double radi_max_abs(const double *x, size_t n)
 {
     double m = 0;
     for (size_t k = 0; k < n; k++)
@@ -28,7 +29,7 @@ static double max_abs(const double *x, size_t n)
 int radi_scale_exponent(const double *x, size_t n)
 {
     int e = 0;
-    const double m = max_abs(x, n);
+    const double m = radi_max_abs(x, n);
     if (m > 0 && isfinite(m))
         frexp(m, &e);
     return e;

@@ -100,14 +100,6 @@ double rad_solve_bytes_for(int n, const rad_solve_options *opt)
     return nn * solve_matrices(opt) + 64.0 * n * sizeof(double);
 }
 
-static double max_abs(const double *x, size_t n)
-{
-    double m = 0;
-    for (size_t k = 0; k < n; k++)
-        m = fmax(m, fabs(x[k]));
-    return m;
-}
-
 /* ---- gauss ---------------------------------------------------------------- */
 
 static rad_status solve_gauss(int n, const double *F, const double *rho, const double *E,
@@ -160,7 +152,7 @@ static rad_status diagnose(int n, const double *F, const double *rho, const doub
  * is not finite: an overflow inside a solver that got E unscaled). */
 static rad_status unscale_b(double *B, size_t n3, int ke, rad_error *err)
 {
-    const double m = max_abs(B, n3);
+    const double m = radi_max_abs(B, n3);
     for (size_t k = 0; k < n3; k++)
         if (!isfinite(B[k]))
             return radi_fail(err, RAD_ERR_INVALID,
@@ -190,9 +182,6 @@ rad_status rad_solve_progressive(const rad_mesh *m, const double *F, const doubl
     const rad_shoot_source src = {F, NULL};
     if (!opt->on_shot || opt->reference || !F)
         return radi_progressive_run(m, &src, rho, E, opt, B, report, err);
-    if (!(opt->tolerance > 0) || opt->max_iterations < 1)
-        return radi_fail(err, RAD_ERR_INVALID,
-                        "tolerance must be positive and max-iterations at least 1");
     rad_solve_options g = *opt, traced = *opt;
     g.solver = RAD_SOLVER_GAUSS;
     g.on_shot = NULL;

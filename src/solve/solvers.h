@@ -60,6 +60,9 @@ void radi_solve_balance(int n, const double *H, const double *rs, const double *
  * areas that keep every solver inside the double range (scale.c;
  * solve.c, Range). */
 int radi_scale_exponent(const double *x, size_t n);
+/* max_k |x_k|, the norm every solver's stopping test and scaling uses
+ * (scale.c). */
+double radi_max_abs(const double *x, size_t n);
 void radi_scale_by(double *x, size_t n, int e);
 
 /* RAD_ERR_TOOBIG (the message names `what`) when `matrices` n x n

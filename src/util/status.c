@@ -40,6 +40,15 @@ rad_status radi_fail(rad_error *err, rad_status status, const char *fmt, ...)
     return status;
 }
 
+rad_status radi_fail_at(rad_error *err, const char *file, int line, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    rad_status st = radi_fail_vat(err, file, line, fmt, ap);
+    va_end(ap);
+    return st;
+}
+
 rad_status radi_fail_vat(rad_error *err, const char *file, int line, const char *fmt,
                         va_list ap)
 {

@@ -18,7 +18,11 @@ extern "C" {
 rad_status radi_fail(rad_error *err, rad_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
-/* RAD_ERR_PARSE with the message "FILE:LINE: what" (input errors). */
+/* RAD_ERR_PARSE with the message "FILE:LINE: what" (input errors); _at
+ * takes the arguments themselves, _vat a va_list for a reader's own
+ * wrapper. */
+rad_status radi_fail_at(rad_error *err, const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 rad_status radi_fail_vat(rad_error *err, const char *file, int line, const char *fmt,
                         va_list ap) __attribute__((format(printf, 4, 0)));
 
