@@ -76,6 +76,13 @@ if [ "${BENCH_HC:-1}" = 1 ]; then
   sh "$(dirname "$0")/hemicube.sh" "$rad" "$data"
 fi
 
+echo
+echo "== hidden surfaces: many small blockers between a lamp and a floor (bench/scenes.py),"
+echo "   one thread, per mode (BENCH_HIDDEN=0 skips; bench/hidden.sh says the knobs)"
+if [ "${BENCH_HIDDEN:-1}" = 1 ]; then
+  sh "$(dirname "$0")/hidden.sh" "$rad"
+fi
+
 # Occluded pairs: the open Cornell box at 6x6 (1260 elements), default's
 # fill and reference's on one thread, and every default entry above 1e-6
 # against reference (the targets: within 1e-6 relative, default at most

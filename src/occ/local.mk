@@ -15,4 +15,5 @@ src_libradcore_la_SOURCES += \
 	%reldir%/occsolid.c \
 	%reldir%/occspace.c %reldir%/occspace.h \
 	%reldir%/occsplit.c \
+	%reldir%/occunion.c \
 	%reldir%/visibility.cc %reldir%/visibility.h

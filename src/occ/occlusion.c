@@ -16,7 +16,8 @@
  *   occdomain.c  where on the outer element anything can be hidden (the
  *                domain of that integral: penumbras, umbras, events);
  *   occpoint.c   the hidden part seen from one point (cone cuts, shadows,
- *                the point-to-polygon form factor);
+ *                the point-to-polygon form factor), by occunion.c's
+ *                boundary of the union of the shadows where it applies;
  * with helpers of one job each too: occrule.c (the quadrature rules on one
  * cell of that integral), occleaves.c (the cell with the largest error
  * estimate), occevent.c and occeee.c (events, for occdomain.c); all

@@ -86,14 +86,12 @@ static inline double sum_double(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int
     return sum;
 }
 
-#define NOISE_EPS 4.0
-
 /* Point-to-polygon form factor from a differential area at x with unit
  * normal nrm to polygon q (Lambert 1760; Baum et al. 1989, eq. 6).
  *
  * Its terms cancel where the polygon is seen nearly edge on: the
  * factor is then far smaller than its terms, and their round-off, about
- * NOISE_EPS eps times the sum of their magnitudes, is not small beside
+ * OCC_NOISE_EPS eps times the sum of their magnitudes, is not small beside
  * it.  (Each term rounds a few times, in its atan2, cross product, norm
  * and quotient, and the sum m more, so (m + 8) eps would bound it; but the
  * roundings fall either way.  Over the 3.9e7 sums of the closed 2x2
@@ -118,11 +116,11 @@ static double ff_point_polygon(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int 
     /* each term is at most its angle, and the angles of a convex polygon
      * seen from a point off its plane sum to less than 2 pi: from this
      * tol up, no sum needs its terms' sizes */
-    if (!(NOISE_EPS * DBL_EPSILON > tol))
+    if (!(OCC_NOISE_EPS * DBL_EPSILON > tol))
         return -sum_double(x, nrm, q, m, NULL) / (2 * RAD_PI);
     double size = 0;
     const double sum = sum_double(x, nrm, q, m, &size);
-    if (NOISE_EPS * DBL_EPSILON * size > 2 * RAD_PI * tol)
+    if (OCC_NOISE_EPS * DBL_EPSILON * size > 2 * RAD_PI * tol)
         return (double)(-sum_long(x, nrm, q, m) / (2 * RAD_PI_LONG));
     return -sum / (2 * RAD_PI);
 }
@@ -306,7 +304,8 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     return 0;
 }
 
-/* hidden(x), or with c->direct the visible part's factor
+/* hidden(x) (occunion.c where the inner element is planar and x off its
+ * plane, else the cuts above), or with c->direct the visible part's factor
  *     visible(x) = F(x -> A_t) - hidden(x)
  * (occhidden.c integrates it for pairs whose domain is the whole outer
  * element).  Both terms are exact to round-off, so visible(x) is too, to
@@ -314,7 +313,8 @@ static int hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
  * a nearly hidden pair's value. */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
 {
-    if (hidden_at(sp, c, x, out))
+    const int r = occ_hidden_union(sp, c, x, out);
+    if (r < 0 || (r == 0 && hidden_at(sp, c, x, out)))
         return -1;
     if (c->direct)
         *out = fabs(ff_point_polygon(x, c->nx, c->t, c->nt, sp->noise_tol)) - *out;

@@ -134,6 +134,14 @@ void occ_space_free(occ_space *sp)
     free(sp->ha);
     free(sp->node);
     occ_leaves_free(&sp->leaves);
+    ps_free(&sp->sh);
+    free(sp->shlo);
+    free(sp->shhi);
+    free(sp->uv);
+    free(sp->tuv);
+    free(sp->upl);
+    free(sp->iv);
+    free(sp->seg);
     memset(sp, 0, sizeof *sp);
 }
 

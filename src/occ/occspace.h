@@ -52,6 +52,9 @@
  * could carry more is done again in long double (occpoint.c,
  * ff_point_polygon). */
 #define OCC_NOISE_SHARE 0.125
+/* The round-off of a sum of eq. 6's terms, in eps times the sum of their
+ * magnitudes (measured: occpoint.c, ff_point_polygon). */
+#define OCC_NOISE_EPS 4.0
 #define OCC_ORDER_DEFAULT 6
 #define OCC_ORDER_REFERENCE 10
 #define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
@@ -258,6 +261,19 @@ typedef struct occ_space {
     double noise_tol;           /* the round-off allowed in one point-to-
                                    polygon sum (OCC_NOISE_SHARE) */
     double evals;
+    polyset sh;                 /* the blockers' shadows on the inner plane,
+                                   and their bounding boxes (occunion.c) */
+    rad_vec3 *shlo, *shhi;
+    int capshlo, capshhi;
+    double *uv, *tuv;           /* their vertices and the inner element's
+                                   in the plane's axes */
+    int capuv, captuv;
+    rad_vec3 *upl;              /* the pyramid from x over the inner element */
+    int capupl;
+    double *iv;                 /* an edge's covered intervals */
+    int capiv;
+    rad_vec3 *seg;              /* the union's boundary: pairs of ends */
+    int capseg, nseg;
 } occ_space;
 
 /* What an evaluation needs: the outer element's normal, the inner element
@@ -333,6 +349,10 @@ int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occunion.c: hidden(x) from the boundary of the union of the shadows
+ * (1; 0 where it does not apply, -1) */
+int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
 /* occsplit.c: sp->dom's pieces split by a plane (their bounding spheres
  * first, then every piece the plane crosses; with a wedge w only where

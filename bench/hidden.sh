@@ -1,0 +1,56 @@
+#!/bin/sh
+# hidden.sh -- `make bench`'s hidden-surface section: scenes of many small
+# blockers between a lamp and a floor (bench/scenes.py), one thread, per
+# accuracy mode: the fill's time, its pairs by route, the partly hidden
+# pairs' share of the time and the growth of the time with the number of
+# blockers (the slope of log time against log blockers between the two
+# largest sizes).  Prints figures; asserts nothing.
+# Usage: bench/hidden.sh RADIOSITY
+# BENCH_HIDDEN_SQUARES (default "4 6 10"): the N of the N x N squares;
+# BENCH_HIDDEN_TORUS (default "250"): torus triangle counts;
+# BENCH_HIDDEN_MODES (default "classic default reference");
+# BENCH_HIDDEN_TIMEOUT (default 300): seconds before a run is given up.
+# Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+set -e
+rad=$1
+here=$(dirname "$0")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+limit=${BENCH_HIDDEN_TIMEOUT:-300}
+printf 'scene\tblockers\tmode\tseconds\tpairs_tested\tunblocked\tfully_hidden\tpartly_hidden\tvisibility_s\tms_per_partial\n'
+run() { # NAME BLOCKERS SCENE
+  for mode in ${BENCH_HIDDEN_MODES:-classic default reference}; do
+    if timeout "$limit" "$rad" solve -q --threads 1 --accuracy "$mode" \
+         --report "$tmp/r.json" -o "$tmp/i.png" "$3" 2> /dev/null; then
+      awk -v name="$1" -v nb="$2" -v mode="$mode" '
+        function num(key,   s) { s = $0; if (!match(s, "\"" key "\": [0-9.e+-]*")) return 0
+          s = substr(s, RSTART + length(key) + 4, RLENGTH - length(key) - 4); return s + 0 }
+        { t = num("form_factors") ; if (t > 0) ff = t
+          if (index($0, "\"visibility\"")) { pt = num("pairs_tested"); pb = num("pairs_blockable")
+            hid = num("pairs_blocked"); par = num("pairs_partial"); vs = num("seconds") } }
+        END { printf "%s\t%s\t%s\t%.3f\t%d\t%d\t%d\t%d\t%.3f\t%.3f\n", name, nb, mode, ff, pt,
+                pt - hid - par, hid, par, vs, (par > 0 ? 1000 * vs / par : 0) }' "$tmp/r.json" \
+        | tee -a "$tmp/all"
+    else
+      printf '%s\t%s\t%s\tover %s s\n' "$1" "$2" "$mode" "$limit"
+    fi
+  done
+}
+for n in ${BENCH_HIDDEN_SQUARES-4 6 10}; do
+  python3 "$here/scenes.py" squares "$n" > "$tmp/s.scene"
+  run "squares-$n" $((n * n)) "$tmp/s.scene"
+done
+for t in ${BENCH_HIDDEN_TORUS-250}; do
+  python3 "$here/scenes.py" torus "$t" > "$tmp/t.scene"
+  nb=$(grep -c '^polygon' "$tmp/t.scene")
+  run "torus-$nb" "$nb" "$tmp/t.scene"
+done
+# growth: log(t2 / t1) / log(n2 / n1) for each mode between its two
+# largest finished scenes of one kind
+[ -f "$tmp/all" ] && awk -F '\t' '
+  { split($1, k, "-"); key = k[1] " " $3; n[key]++; b[key, n[key]] = $2; s[key, n[key]] = $4 }
+  END { for (key in n) if (n[key] >= 2) { i = n[key]; j = i - 1
+          if (s[key, j] > 0 && b[key, i] != b[key, j])
+            printf "growth %s: time ~ blockers^%.2f (%s to %s)\n", key,
+              log(s[key, i] / s[key, j]) / log(b[key, i] / b[key, j]), b[key, j], b[key, i] } }' \
+  "$tmp/all" | sort

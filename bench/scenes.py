@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""scenes.py -- writes the generated scenes of `make bench`'s hidden-surface
+section to standard output, in the native scene format.
+
+Usage: scenes.py squares N     N x N small squares at staggered heights
+       scenes.py torus T       a torus of about T triangles in a room
+
+Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+
+Both stand a cloud of small blockers between a lamp and a floor, so that
+most pairs of floor and lamp elements are partly hidden, by blockers at
+different depths whose shadows overlap: what a triangulated model makes.
+
+squares: a 6 x 6 floor (y = 0, facing up), a 2 x 2 lamp 3 above it (facing
+down) and N x N squares of side 0.15, square (i, j) with its corner at
+x = -1 + 2i/N + 0.05j, z = -1 + 2j/N + 0.05i, y = 1 + (iN + j)/N^2: no two
+at one height, each shifted against the grid so shadows never line up.
+
+torus: the same floor and lamp, and a torus (major radius 0.8, minor 0.3,
+its axis tilted 30 degrees from the vertical, its centre 0.9 above the
+floor) cut into U x V quadrilaterals of two triangles each, U = 5V,
+2UV >= T: a closed model of small flat triangles, as a modelling tool
+exports one.  Every triangle is a separate surface of one element, which
+is what an OBJ model becomes.
+"""
+import math
+import sys
+
+
+def room(out):
+    out.write("material floor reflect 0.6\n")
+    out.write("material lamp reflect 0 emit 10\n")
+    out.write("material model reflect 0.5\n")
+    out.write("quad floor  -3 0 -3  -3 0 3  3 0 3  3 0 -3  mesh 6x6\n")
+    out.write("quad lamp  -1 3 -1  1 3 -1  1 3 1  -1 3 1  mesh 2x2\n")
+    out.write("camera eye 0 4 9 at 0 0.8 0 up 0 1 0 fov 45\n")
+
+
+def squares(n, out):
+    out.write("# %d x %d staggered squares under a lamp (bench/scenes.py)\n" % (n, n))
+    room(out)
+    s = 0.15
+    for i in range(n):
+        for j in range(n):
+            x = -1 + 2.0 * i / n + 0.05 * j
+            z = -1 + 2.0 * j / n + 0.05 * i
+            y = 1 + (i * n + j) / float(n * n)
+            # facing up: counter-clockwise seen from above
+            out.write("quad model  %.17g %.17g %.17g  %.17g %.17g %.17g  %.17g %.17g %.17g"
+                      "  %.17g %.17g %.17g\n"
+                      % (x, y, z, x, y, z + s, x + s, y, z + s, x + s, y, z))
+
+
+def torus(t, out):
+    v = 1
+    while 2 * 5 * v * v < t:
+        v += 1
+    u = 5 * v
+    out.write("# a torus of %d triangles (%d x %d) under a lamp (bench/scenes.py)\n"
+              % (2 * u * v, u, v))
+    room(out)
+    big, small, tilt = 0.8, 0.3, math.radians(30)
+    ct, st = math.cos(tilt), math.sin(tilt)
+
+    def point(a, b):
+        ang_u = 2 * math.pi * a / u
+        ang_v = 2 * math.pi * b / v
+        r = big + small * math.cos(ang_v)
+        x, y, z = r * math.cos(ang_u), small * math.sin(ang_v), r * math.sin(ang_u)
+        # tilt about the x axis, then lift
+        return (x, y * ct - z * st + 0.9, y * st + z * ct)
+
+    def tri(p, q, r):
+        out.write("polygon model 3  %s\n" % "  ".join(
+            "%.17g %.17g %.17g" % w for w in (p, q, r)))
+
+    for a in range(u):
+        for b in range(v):
+            p00, p10 = point(a, b), point(a + 1, b)
+            p01, p11 = point(a, b + 1), point(a + 1, b + 1)
+            # outward normals: (d/dv) x (d/du) points out of the tube
+            tri(p00, p01, p11)
+            tri(p00, p11, p10)
+
+
+def main(argv):
+    if len(argv) != 3 or argv[1] not in ("squares", "torus") or not argv[2].isdigit():
+        sys.stderr.write("usage: scenes.py squares N | torus T\n")
+        return 2
+    n = int(argv[2])
+    if n < 1:
+        sys.stderr.write("scenes.py: N must be at least 1\n")
+        return 2
+    (squares if argv[1] == "squares" else torus)(n, sys.stdout)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
