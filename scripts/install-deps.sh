@@ -5,7 +5,7 @@
 set -e
 pkgs="build-essential autoconf automake libtool autoconf-archive pkg-config
   libcgal-dev libgmp-dev libmpfr-dev liblapack-dev libopenblas-dev
-  libcairo2-dev help2man python3 python3-mpmath
+  libcairo2-dev help2man python3 python3-mpmath valgrind
   libscalapack-openmpi-dev libopenmpi-dev openmpi-bin"
 missing=
 for p in $pkgs; do
