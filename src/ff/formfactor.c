@@ -656,8 +656,9 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
     const double ca_max = v3_maxabs(a->centroid), cb_max = v3_maxabs(b->centroid);
     const double rtol = FF_ROUND * DBL_EPSILON * (ca_max > cb_max ? ca_max : cb_max) +
                          1e-12 * (a->size + b->size);
-    const double snap = fmax(a->snap, b->snap);
-    const double wtol = rtol + plane_doubt(a, b);
+    const double snap = a->snap > b->snap ? a->snap : b->snap;
+    /* (plane_doubt is 0 for planar polygons, most pairs: not computed) */
+    const double wtol = rtol + (a->twist > 0 || b->twist > 0 ? plane_doubt(a, b) : 0);
     const double tol = wide ? wtol : rtol + a->twist + b->twist;
     const double ctol = tol + snap, cwtol = wtol + snap; /* for the decision */
     p->ambiguous = 0;
