@@ -135,8 +135,11 @@ void occ_space_free(occ_space *sp)
     free(sp->node);
     occ_leaves_free(&sp->leaves);
     ps_free(&sp->sh);
-    free(sp->shlo);
-    free(sp->shhi);
+    free(sp->box);
+    free(sp->nbr);
+    free(sp->nbr_off);
+    free(sp->fill);
+    free(sp->sweep);
     free(sp->uv);
     free(sp->tuv);
     free(sp->upl);

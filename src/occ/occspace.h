@@ -261,10 +261,14 @@ typedef struct occ_space {
     double noise_tol;           /* the round-off allowed in one point-to-
                                    polygon sum (OCC_NOISE_SHARE) */
     double evals;
-    polyset sh;                 /* the blockers' shadows on the inner plane,
-                                   and their bounding boxes (occunion.c) */
-    rad_vec3 *shlo, *shhi;
-    int capshlo, capshhi;
+    polyset sh;                 /* the blockers' shadows on the inner plane
+                                   (occunion.c) */
+    double *box;                /* their boxes in the plane's axes */
+    int capbox;
+    int *nbr, *nbr_off, *fill;  /* the shadows whose boxes meet each one's */
+    int capnbr, capnoff, capfill;
+    struct sweep_key *sweep;    /* the boxes in order (occunion.c) */
+    int capsweep;
     double *uv, *tuv;           /* their vertices and the inner element's
                                    in the plane's axes */
     int capuv, captuv;

@@ -153,17 +153,25 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
                 sp->pj0[m - 1 - k] = t;
             }
         const int s = sp->sh.np;
-        if (occ_ps_push(&sp->sh, sp->pj0, m) || occ_grow_v3(&sp->shlo, &sp->capshlo, s + 1) ||
-            occ_grow_v3(&sp->shhi, &sp->capshhi, s + 1))
+        if (occ_ps_push(&sp->sh, sp->pj0, m) || occ_grow_d(&sp->box, &sp->capbox, 4 * (s + 1)))
             return -1;
-        v3_bounds(sp->pj0, m, &sp->shlo[s], &sp->shhi[s]);
         const int f = sp->sh.first[s];
         if (occ_grow_d(&sp->uv, &sp->capuv, 2 * (f + m)))
             return -1;
+        double *bx = sp->box + 4 * s;
         for (int k = 0; k < m; k++) {
             const rad_vec3 r = v3_sub(sp->pj0[k], c->t[0]);
-            sp->uv[2 * (f + k)] = v3_dot(r, e[0]);
-            sp->uv[2 * (f + k) + 1] = v3_dot(r, e[1]);
+            const double u = v3_dot(r, e[0]), v = v3_dot(r, e[1]);
+            sp->uv[2 * (f + k)] = u;
+            sp->uv[2 * (f + k) + 1] = v;
+            if (k == 0 || u < bx[0])
+                bx[0] = u;
+            if (k == 0 || u > bx[1])
+                bx[1] = u;
+            if (k == 0 || v < bx[2])
+                bx[2] = v;
+            if (k == 0 || v > bx[3])
+                bx[3] = v;
         }
     }
     return 1;
@@ -245,6 +253,80 @@ static int cmp_interval(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Do boxes p and q (ulo, uhi, vlo, vhi) meet, edges included? */
+static inline int boxes_meet(const double *p, const double *q)
+{
+    return p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3];
+}
+
+typedef struct sweep_key {
+    double ulo;
+    int i;
+} sweep_key;
+
+static int cmp_sweep(const void *x, const void *y)
+{
+    const double a = ((const sweep_key *)x)->ulo, b = ((const sweep_key *)y)->ulo;
+    return (a > b) - (a < b);
+}
+
+/* For each shadow, the others whose boxes meet its box, into
+ * sp->nbr[sp->nbr_off[a] .. sp->nbr_off[a + 1]): sweep and prune (the
+ * boxes in order of their lowest u, each against those that start before
+ * it ends), so that the edge tests cost O(K log K) plus the pairs that
+ * overlap, not K^2.  Boxes are compared exactly, edges included: a
+ * shadow left out of another's list cannot touch it.  Returns 0, -1. */
+static int neighbours(occ_space *sp)
+{
+    const int k = sp->sh.np;
+    if (k == 0)
+        return 0;
+    if (occ_grow_i(&sp->nbr_off, &sp->capnoff, k + 1))
+        return -1;
+    if (k > sp->capsweep) {
+        sweep_key *q = occ_realloc(sp->sweep, &sp->capsweep, k, sizeof *q);
+        if (!q)
+            return -1;
+        sp->sweep = q;
+    }
+    sweep_key *key = sp->sweep;
+    for (int i = 0; i < k; i++) {
+        key[i].ulo = sp->box[4 * i];
+        key[i].i = i;
+        sp->nbr_off[i + 1] = 0;
+    }
+    qsort(key, (size_t)k, sizeof *key, cmp_sweep);
+    for (int pass = 0; pass < 2; pass++) {
+        for (int p = 0; p < k; p++) {
+            const int i = key[p].i;
+            const double *bi = sp->box + 4 * i;
+            for (int q = p + 1; q < k && key[q].ulo <= bi[1]; q++) {
+                const int j = key[q].i;
+                if (!boxes_meet(bi, sp->box + 4 * j))
+                    continue;
+                if (pass == 0) {
+                    sp->nbr_off[i + 1]++;
+                    sp->nbr_off[j + 1]++;
+                } else {
+                    sp->nbr[sp->fill[i]++] = j;
+                    sp->nbr[sp->fill[j]++] = i;
+                }
+            }
+        }
+        if (pass == 0) {
+            sp->nbr_off[0] = 0;
+            for (int i = 0; i < k; i++)
+                sp->nbr_off[i + 1] += sp->nbr_off[i];
+            if (occ_grow_i(&sp->nbr, &sp->capnbr, sp->nbr_off[k] + 1) ||
+                occ_grow_i(&sp->fill, &sp->capfill, k))
+                return -1;
+            for (int i = 0; i < k; i++)
+                sp->fill[i] = sp->nbr_off[i];
+        }
+    }
+    return 0;
+}
+
 /* Add segment p + t0 (q - p) -> p + t1 (q - p) to sp->seg; 0, -1. */
 static int add_seg(occ_space *sp, rad_vec3 p, rad_vec3 q, double t0, double t1)
 {
@@ -268,14 +350,13 @@ static int edge_boundary(occ_space *sp, const pair_ctx *c, int a, rad_vec3 p, ra
     if (a >= 0 && !inside_interval(sp->tuv, c->nt, 0, pu, qu, &in0, &in1))
         return 0;
     int ni = 0;
-    rad_vec3 elo, ehi;
-    const rad_vec3 pq[2] = {p, q};
-    v3_bounds(pq, 2, &elo, &ehi);
-    const double tol = c->snap;
-    for (int b = 0; b < sp->sh.np; b++) {
-        if (b == a || sp->shlo[b].x > ehi.x + tol || sp->shhi[b].x < elo.x - tol ||
-            sp->shlo[b].y > ehi.y + tol || sp->shhi[b].y < elo.y - tol ||
-            sp->shlo[b].z > ehi.z + tol || sp->shhi[b].z < elo.z - tol)
+    const double ebox[4] = {pu[0] < qu[0] ? pu[0] : qu[0], pu[0] < qu[0] ? qu[0] : pu[0],
+                            pu[1] < qu[1] ? pu[1] : qu[1], pu[1] < qu[1] ? qu[1] : pu[1]};
+    /* a shadow's edge meets only its neighbours; the element's, any */
+    const int n0 = a >= 0 ? sp->nbr_off[a] : 0, n1 = a >= 0 ? sp->nbr_off[a + 1] : sp->sh.np;
+    for (int l = n0; l < n1; l++) {
+        const int b = a >= 0 ? sp->nbr[l] : l;
+        if (!boxes_meet(ebox, sp->box + 4 * b))
             continue;
         double t0, t1;
         const int f = sp->sh.first[b];
@@ -387,6 +468,8 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     if ((r = shadows(sp, c, x, h, sense, e)) <= 0)
         return r;
     sp->nseg = 0;
+    if (neighbours(sp))
+        return -1;
     for (int a = 0; a < sp->sh.np; a++) {
         const int f = sp->sh.first[a], n = sp->sh.first[a + 1] - f;
         for (int k = 0; k < n; k++) {
