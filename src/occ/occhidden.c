@@ -13,7 +13,8 @@
  * The hidden part.  With A_o the outer and A_t the inner element,
  *     A_o F_ot = A_t F_to = integral over x in A_o of F(x -> visible part of A_t),
  * and the integrand is computed exactly (occpoint.c: hidden(x), the form
- * factor from x to the part of A_t the blockers hide).  So
+ * factor from x to the part of A_t the blockers hide; occunion.c where
+ * A_t is planar).  So
  *     S_occluded = S - 2 pi * integral over A_o of hidden(x) dx,
  * where S is the unoccluded contour sum of the kernel: the quadrature
  * error only touches the hidden part, never the (possibly singular)

@@ -62,7 +62,8 @@ double radi_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off);
  * visibility work is needed.  stats (may be NULL) is cleared and receives
  * the setup's share. */
 rad_status radi_occ_create(rad_occ **occ, const rad_mesh *mesh, double snap, rad_occ_mode mode,
-                          rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err);
+                          rad_accuracy accuracy, int threads, rad_occ_stats *stats,
+                          rad_error *err);
 void radi_occ_free(rad_occ *occ);
 
 /* Is a surface c with mask[c] set on the candidate list of the pair of

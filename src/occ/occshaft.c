@@ -40,6 +40,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#else
+#define omp_get_max_threads() 1
+#endif
 
 #include "ff/formfactor.h"
 #include "occ/occlusion.h"
@@ -317,35 +322,77 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     return added;
 }
 
-static rad_status candidates(rad_occ *o, const rad_vis *vis, double *blockable_pairs)
+/* Every surface pair's candidate blockers, into o->cand_off and o->cand
+ * (the pairs in pair_index order), on `threads` threads (0: OpenMP's
+ * default); *blockable_pairs counts the pairs with any.  The listing is
+ * a query of the AABB tree and a shaft test per pair, O(S^2) for S
+ * surfaces: on a 3,732-triangle model it took 80 s on one thread. */
+static rad_status candidates(rad_occ *o, const rad_vis *vis, int threads,
+                             double *blockable_pairs)
 {
     const int ns = o->nsurf;
-    size_t npairs = ns > 1 ? (size_t)ns * (size_t)(ns - 1) / 2 : 0;
-    int *owners = malloc(sizeof *owners * (size_t)(ns > 0 ? ns : 1));
-    occ_space sp;
-    int ncand = 0, capcand = 0;
-    rad_status st = RAD_OK;
-    memset(&sp, 0, sizeof sp);
+    const size_t npairs = ns > 1 ? (size_t)ns * (size_t)(ns - 1) / 2 : 0;
+    int **rows = calloc((size_t)(ns > 0 ? ns : 1), sizeof *rows);
+    int *rowlen = calloc((size_t)(ns > 0 ? ns : 1), sizeof *rowlen);
+    int failed = !rows || !rowlen;
+    double blockable = 0;
     o->cand_off = malloc(sizeof *o->cand_off * (npairs + 1));
     o->cand = NULL;
-    if (!owners || !o->cand_off)
-        st = RAD_ERR_NOMEM;
-    *blockable_pairs = 0;
-    for (int a = 0; a < ns && st == RAD_OK; a++)
-        for (int b = a + 1; b < ns && st == RAD_OK; b++) {
-            size_t p = pair_index(a, b, ns);
-            o->cand_off[p] = (size_t)ncand;
-            int r = surface_pair_candidates(o, vis, &sp, a, b, owners, &o->cand, &ncand,
-                                            &capcand);
-            if (r < 0)
-                st = RAD_ERR_NOMEM;
-            *blockable_pairs += r > 0;
+    failed = failed || !o->cand_off;
+    /* each thread lists whole rows a (the pairs (a, b > a), contiguous in
+     * pair_index order) into a buffer of its own, the row's counts into
+     * cand_off; the rows are joined in order afterwards, so the lists are
+     * those of one thread, in the same order */
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads()) \
+    reduction(|| : failed) reduction(+ : blockable) if (!failed)
+    {
+        occ_space sp;
+        memset(&sp, 0, sizeof sp);
+        int *owners = malloc(sizeof *owners * (size_t)(ns > 0 ? ns : 1));
+        failed = !owners;
+#pragma omp for schedule(dynamic, 1)
+        for (int a = 0; a < ns; a++) {
+            int n = 0, cap = 0;
+            for (int b = a + 1; b < ns && !failed; b++) {
+                const int before = n;
+                const int r =
+                    surface_pair_candidates(o, vis, &sp, a, b, owners, &rows[a], &n, &cap);
+                if (r < 0)
+                    failed = 1;
+                o->cand_off[pair_index(a, b, ns)] = (size_t)(n - before);
+                blockable += r > 0;
+            }
+            rowlen[a] = n;
         }
-    if (st == RAD_OK)
-        o->cand_off[npairs] = (size_t)ncand;
-    free(owners);
-    occ_space_free(&sp);
-    return st;
+        free(owners);
+        occ_space_free(&sp);
+    }
+    size_t total = 0;
+    for (int a = 0; a < ns && !failed; a++)
+        total += (size_t)rowlen[a];
+    if (!failed && !(o->cand = malloc(sizeof *o->cand * (total > 0 ? total : 1))))
+        failed = 1;
+    if (!failed) {
+        size_t off = 0;
+        for (size_t p = 0; p < npairs; p++) {
+            const size_t c = o->cand_off[p];
+            o->cand_off[p] = off;
+            off += c;
+        }
+        o->cand_off[npairs] = off;
+        size_t at = 0;
+        for (int a = 0; a < ns; a++) {
+            if (rowlen[a] > 0)
+                memcpy(o->cand + at, rows[a], sizeof *o->cand * (size_t)rowlen[a]);
+            at += (size_t)rowlen[a];
+        }
+    }
+    for (int a = 0; rows && a < ns; a++)
+        free(rows[a]);
+    free(rows);
+    free(rowlen);
+    *blockable_pairs = failed ? 0 : blockable;
+    return failed ? RAD_ERR_NOMEM : RAD_OK;
 }
 
 void radi_occ_free(rad_occ *o)
@@ -383,7 +430,8 @@ double radi_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off)
 }
 
 rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_occ_mode mode,
-                          rad_accuracy accuracy, rad_occ_stats *stats, rad_error *err)
+                          rad_accuracy accuracy, int threads, rad_occ_stats *stats,
+                          rad_error *err)
 {
     double t0 = radi_seconds(), blockable = 0;
     rad_occ_stats st;
@@ -413,7 +461,7 @@ rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_oc
     if (s == RAD_OK) {
         st.surfaces = o->nsurf;
         st.triangles = radi_vis_triangles(vis);
-        s = candidates(o, vis, &blockable);
+        s = candidates(o, vis, threads, &blockable);
         if (s != RAD_OK)
             radi_fail(err, s, "visibility setup failed (out of memory, or CGAL raised an "
                              "exception)");

@@ -290,7 +290,7 @@ typedef struct pair_ctx {
     int flat;                   /* the inner element is planar to round-off
                                    (occhidden.c, orient_integral): shadows may
                                    be taken on its plane (occpoint.c,
-                                   hidden_last) */
+                                   hidden_last; occunion.c) */
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
     double snap, sliver;        /* distance and area tolerances */
     int events;                 /* split the domain along the event planes:
