@@ -275,8 +275,7 @@ static rad_status route_map_build(const rad_anim *a, const rad_scene *ps, const 
         radi_ff_mesh_polys(&unit, snap, &rm->polys, &rm->pts, &rm->edges) != RAD_OK)
         st = radi_fail(err, RAD_ERR_NOMEM, "out of memory");
     if (st == RAD_OK)
-        st = radi_occ_create(&rm->occ, &unit, snap, RAD_OCC_AUTO, a->opt.ff.accuracy,
-                              a->opt.ff.threads, NULL, err);
+        st = radi_occ_create(&rm->occ, &unit, snap, RAD_OCC_AUTO, &a->opt.ff, NULL, err);
     if (st == RAD_OK)
         radi_occ_work_init(&rm->w, rm->occ);
     for (int s = 0; st == RAD_OK && s < nf; s++)

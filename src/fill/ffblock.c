@@ -107,8 +107,7 @@ rad_status radi_ff_block_open(rad_ff_block **out, const rad_mesh *mesh,
     }
     for (int k = 0; k < n; k++)
         b->inv_t[k] = 1 / (2 * RAD_PI * b->polys[k].area);
-    st = radi_occ_create(&b->occ, &b->unit, snap, RAD_OCC_AUTO, opt->accuracy, opt->threads,
-                           &b->setup, err);
+    st = radi_occ_create(&b->occ, &b->unit, snap, RAD_OCC_AUTO, opt, &b->setup, err);
     if (st != RAD_OK) {
         radi_ff_block_close(b);
         return st;

@@ -213,7 +213,7 @@ static rad_status ff_matrix_unit(const rad_mesh *m, double snap, const rad_ff_op
     }
     rad_occ *occ = NULL;
     rad_occ_stats vst;
-    rad_status vs = radi_occ_create(&occ, m, snap, mode, opt->accuracy, opt->threads, &vst, err);
+    rad_status vs = radi_occ_create(&occ, m, snap, mode, opt, &vst, err);
     if (vs != RAD_OK) {
         free(polys);
         free(pts);

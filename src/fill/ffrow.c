@@ -204,8 +204,7 @@ static rad_status make_occ(rad_ffrow *r, rad_occ_mode mode, rad_error *err)
         m.elements = r->aug;
         m.nelements = r->n + r->np;
     }
-    return radi_occ_create(&r->occ, &m, r->snap, mode, r->opt.accuracy, r->opt.threads, &r->vst,
-                           err);
+    return radi_occ_create(&r->occ, &m, r->snap, mode, &r->opt, &r->vst, err);
 }
 
 static rad_status thread_space(rad_ffrow *r, rad_error *err)

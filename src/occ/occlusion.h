@@ -59,11 +59,13 @@ double radi_occ_scene_snap(const rad_vec3 *v, int n, rad_vec3 off);
  * tolerance is snap (radi_occ_scene_snap, above: the kernel's polygons
  * carry the same number).  *occ is NULL on return when the mode is
  * RAD_OCC_OFF or when no pair of surfaces can be blocked: then no
- * visibility work is needed.  stats (may be NULL) is cleared and receives
- * the setup's share. */
+ * visibility work is needed.  From opt: the accuracy, the threads that
+ * list the candidate blockers, and the progress callback (stage
+ * "visibility"; a non-zero return stops the setup: RAD_ERR_INVALID,
+ * "interrupted").  stats (may be NULL) is cleared and receives the
+ * setup's share. */
 rad_status radi_occ_create(rad_occ **occ, const rad_mesh *mesh, double snap, rad_occ_mode mode,
-                          rad_accuracy accuracy, int threads, rad_occ_stats *stats,
-                          rad_error *err);
+                          const rad_ff_options *opt, rad_occ_stats *stats, rad_error *err);
 void radi_occ_free(rad_occ *occ);
 
 /* Is a surface c with mask[c] set on the candidate list of the pair of

@@ -686,6 +686,74 @@ static void test_refusals(const rad_mesh *m)
     free(F);
 }
 
+/* The visibility setup on a scene with a blocker: its progress (stage
+ * "visibility", every surface pair counted, before the fill's stage), and
+ * its candidate lists made on two threads giving the matrix of one. */
+static const char *blocker_text =
+    "material w reflect 0.5\n"
+    "quad w 0 0 0  1 0 0  1 1 0  0 1 0  mesh 2x2\n"
+    "quad w 0 0 1  0 1 1  1 1 1  1 0 1  mesh 2x2\n"
+    "quad w 0.25 0.25 0.5  0.25 0.75 0.5  0.75 0.75 0.5  0.75 0.25 0.5  mesh 1x1\n"
+    "quad w 0.25 0.25 0.5  0.75 0.25 0.5  0.75 0.75 0.5  0.25 0.75 0.5  mesh 1x1\n";
+
+typedef struct stages {
+    int vis, ff, vis_after_ff;
+    double vdone, vtotal;
+} stages;
+
+static int record(void *user, const char *stage, double done, double total)
+{
+    stages *r = user;
+    if (strcmp(stage, "visibility") == 0) {
+        r->vis++;
+        r->vis_after_ff |= r->ff > 0;
+        r->vdone = done;
+        r->vtotal = total;
+    } else if (strcmp(stage, "form factors") == 0) {
+        r->ff++;
+    }
+    return 0;
+}
+
+static void test_visibility_setup(void)
+{
+    rad_scene s;
+    rad_mesh m;
+    rad_error err;
+    if (rad_scene_parse(&s, blocker_text, strlen(blocker_text), "blocker", &err) != RAD_OK ||
+        rad_mesh_build(&m, &s, &err) != RAD_OK) {
+        tap_ok(0, "the blocker scene builds (%s)", err.message);
+        return;
+    }
+    rad_scene_free(&s);
+    const int n = m.nelements;
+    double *F1 = malloc(sizeof *F1 * (size_t)n * n), *F2 = malloc(sizeof *F2 * (size_t)n * n);
+    stages r = {0};
+    rad_ff_options o = opts(RAD_ACCURACY_DEFAULT);
+    o.threads = 1;
+    rad_status st1 = F1 ? rad_ff_matrix(&m, &o, F1, NULL, NULL, &err) : RAD_ERR_NOMEM;
+    o.threads = 2;
+    o.progress = record;
+    o.progress_user = &r;
+    rad_status st2 = F2 ? rad_ff_matrix(&m, &o, F2, NULL, NULL, &err) : RAD_ERR_NOMEM;
+    tap_ok(st1 == RAD_OK && st2 == RAD_OK, "the blocker scene fills on one thread and on two");
+    tap_ok(r.vis >= 1 && r.vdone == 6 && r.vtotal == 6 && !r.vis_after_ff && r.ff >= 1,
+           "the visibility setup tells its progress first, ending at its 6 surface pairs "
+           "(%d calls, last %g of %g)", r.vis, r.vdone, r.vtotal);
+    tap_ok(st1 == RAD_OK && st2 == RAD_OK &&
+               memcmp(F1, F2, sizeof *F1 * (size_t)n * n) == 0,
+           "candidates listed on two threads give the one-thread matrix bit for bit");
+    int calls = 0;
+    o.progress = stop_now;
+    o.progress_user = &calls;
+    rad_status st3 = rad_ff_matrix(&m, &o, F2, NULL, NULL, &err);
+    tap_ok(st3 == RAD_ERR_INVALID && strstr(err.message, "interrupted") && calls == 1,
+           "stopping in the visibility setup interrupts the fill (%s)", err.message);
+    free(F1);
+    free(F2);
+    rad_mesh_free(&m);
+}
+
 int main(void)
 {
     rad_mesh m;
@@ -701,5 +769,6 @@ int main(void)
     test_hemicube(&m);
     test_refusals(&m);
     rad_mesh_free(&m);
+    test_visibility_setup();
     return tap_done();
 }
