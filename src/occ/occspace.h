@@ -354,6 +354,9 @@ int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
 
+/* occpoint.c: one edge's term of eq. 6 in long double (occunion.c too) */
+long double occ_edge_term_long(rad_vec3 a, rad_vec3 b, rad_vec3 x, rad_vec3 nrm);
+
 /* occunion.c: hidden(x) from the boundary of the union of the shadows
  * (1; 0 where it does not apply, -1) */
 int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);

@@ -412,19 +412,8 @@ static double seg_sum(const occ_space *sp, rad_vec3 x, rad_vec3 nrm, double *siz
 static long double seg_sum_long(const occ_space *sp, rad_vec3 x, rad_vec3 nrm)
 {
     long double sum = 0;
-    for (int k = 0; k < sp->nseg; k++) {
-        const rad_vec3 a = sp->seg[2 * k], b = sp->seg[2 * k + 1];
-        const long double r0[3] = {(long double)a.x - x.x, (long double)a.y - x.y,
-                                   (long double)a.z - x.z};
-        const long double r1[3] = {(long double)b.x - x.x, (long double)b.y - x.y,
-                                   (long double)b.z - x.z};
-        const long double cr[3] = {r0[1] * r1[2] - r0[2] * r1[1], r0[2] * r1[0] - r0[0] * r1[2],
-                                   r0[0] * r1[1] - r0[1] * r1[0]};
-        const long double cn = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
-        if (cn > 0)
-            sum += atan2l(cn, r0[0] * r1[0] + r0[1] * r1[1] + r0[2] * r1[2]) *
-                   (nrm.x * cr[0] + nrm.y * cr[1] + nrm.z * cr[2]) / cn;
-    }
+    for (int k = 0; k < sp->nseg; k++)
+        sum += occ_edge_term_long(sp->seg[2 * k], sp->seg[2 * k + 1], x, nrm);
     return sum;
 }
 
