@@ -38,31 +38,6 @@
 #include "radiosity/base.h"
 
 
-/* The difference q - x in long double: exact where the two exponents
- * are within 11 of each other, else rounded once in long double. */
-static void diff_long(rad_vec3 q, rad_vec3 x, long double r[3])
-{
-    r[0] = (long double)q.x - x.x;
-    r[1] = (long double)q.y - x.y;
-    r[2] = (long double)q.z - x.z;
-}
-
-/* One edge's term of eq. 6 below in long double, edge a -> b seen from x
- * (occunion.c sums them too): from differences that are exact there. */
-long double occ_edge_term_long(rad_vec3 a, rad_vec3 b, rad_vec3 x, rad_vec3 nrm)
-{
-    long double r0[3], r1[3];
-    diff_long(a, x, r0);
-    diff_long(b, x, r1);
-    const long double c[3] = {r0[1] * r1[2] - r0[2] * r1[1], r0[2] * r1[0] - r0[0] * r1[2],
-                              r0[0] * r1[1] - r0[1] * r1[0]};
-    const long double cn = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-    if (!(cn > 0))
-        return 0;
-    return atan2l(cn, r0[0] * r1[0] + r0[1] * r1[1] + r0[2] * r1[2]) *
-           (nrm.x * c[0] + nrm.y * c[1] + nrm.z * c[2]) / cn;
-}
-
 /* ff_point_polygon's sum again in long double (-2 pi times the factor). */
 static long double sum_long(rad_vec3 x, rad_vec3 nrm, const rad_vec3 *q, int m)
 {

@@ -10,6 +10,7 @@
 #ifndef RAD_OCCSPACE_H
 #define RAD_OCCSPACE_H
 
+#include <math.h>
 #include <stddef.h>
 #include <time.h>
 
@@ -354,9 +355,6 @@ int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
 
-/* occpoint.c: one edge's term of eq. 6 in long double (occunion.c too) */
-long double occ_edge_term_long(rad_vec3 a, rad_vec3 b, rad_vec3 x, rad_vec3 nrm);
-
 /* occunion.c: hidden(x) from the boundary of the union of the shadows
  * (1; 0 where it does not apply, -1) */
 int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
@@ -440,6 +438,32 @@ static inline void occ_swap_v3(rad_vec3 **a, int *capa, rad_vec3 **b, int *capb)
 static inline void occ_ps_clear(polyset *s)
 {
     s->nv = s->np = 0;
+}
+
+/* The difference q - x in long double: exact where the two exponents
+ * are within 11 of each other, else rounded once in long double. */
+static inline void occ_diff_long(rad_vec3 q, rad_vec3 x, long double r[3])
+{
+    r[0] = (long double)q.x - x.x;
+    r[1] = (long double)q.y - x.y;
+    r[2] = (long double)q.z - x.z;
+}
+
+/* One edge's term of eq. 6 (occpoint.c) in long double, edge a -> b seen
+ * from x (occpoint.c and occunion.c sum them): from differences that are
+ * exact there. */
+static inline long double occ_edge_term_long(rad_vec3 a, rad_vec3 b, rad_vec3 x, rad_vec3 nrm)
+{
+    long double r0[3], r1[3];
+    occ_diff_long(a, x, r0);
+    occ_diff_long(b, x, r1);
+    const long double c[3] = {r0[1] * r1[2] - r0[2] * r1[1], r0[2] * r1[0] - r0[0] * r1[2],
+                              r0[0] * r1[1] - r0[1] * r1[0]};
+    const long double cn = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (!(cn > 0))
+        return 0;
+    return atan2l(cn, r0[0] * r1[0] + r0[1] * r1[1] + r0[2] * r1[2]) *
+           (nrm.x * c[0] + nrm.y * c[1] + nrm.z * c[2]) / cn;
 }
 
 #endif /* RAD_OCCSPACE_H */
