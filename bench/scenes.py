@@ -63,8 +63,10 @@ def torus(t, out):
     ct, st = math.cos(tilt), math.sin(tilt)
 
     def point(a, b):
-        ang_u = 2 * math.pi * a / u
-        ang_v = 2 * math.pi * b / v
+        # indices taken modulo the grid, so that the seam's vertices are
+        # the same numbers on both sides: the model is watertight
+        ang_u = 2 * math.pi * (a % u) / u
+        ang_v = 2 * math.pi * (b % v) / v
         r = big + small * math.cos(ang_v)
         x, y, z = r * math.cos(ang_u), small * math.sin(ang_v), r * math.sin(ang_u)
         # tilt about the x axis, then lift

@@ -174,14 +174,37 @@ CASES = [
      0.5, 4, [(0, 8), (5, 4), (4, 11), (9, 6), (6, 3), (11, 14)]),
     ("hidden beyond the promise's floor", (0, 1, 0, 1), (0, 1, 0, 1),
      (0.000244140625, 1.5, -0.5, 1.5), 1, 0.5, 1, [(0, 0)]),
+    # the same blockers as fans of triangles, alternate ones turned over:
+    # a mesh whose shadows share edges (occunion.c, inner_edges)
+    ("centred blocker as a fan of triangles", (0, 1, 0, 1), (0, 1, 0, 1),
+     (0.3, 0.7, 0.3, 0.7), 1, 0.5, 1, [(0, 0)], "fan"),
+    ("small elements in a penumbra, the blocker as a fan", (0, 1, 0, 1), (0, 1, 0, 1),
+     (0.375, 1.5, -0.5, 0.625), 1, 0.5, 4, [(0, 8), (9, 6)], "fan"),
 ]
+
+
+def fan(z, r):
+    """rectangle r in plane z as eight triangles about an inner point,
+    every other one turned over"""
+    x0, x1, y0, y1 = r
+    xm, ym = (x0 + x1) / 2, (y0 + y1) / 2
+    ring = [(x0, y0), (xm, y0), (x1, y0), (x1, ym), (x1, y1), (xm, y1), (x0, y1), (x0, ym)]
+    c = (x0 + 0.37 * (x1 - x0), y0 + 0.61 * (y1 - y0))
+    out = []
+    for k in range(8):
+        t = [c, ring[k], ring[(k + 1) % 8]]
+        if k % 2:
+            t.reverse()
+        out.append("polygon m 3  " + "  ".join("%.17g %.17g %.17g" % (x, y, z) for x, y in t))
+    return "\n".join(out) + "\n"
 
 
 def scene(c):
     name, E, R, B, H, zb, mesh = c[:7]
     m = " mesh %dx%d" % (mesh, mesh) if mesh > 1 else ""
-    return ("material m reflect 0.5 emit 1\nquad m %s%s\nquad m %s%s\nquad m %s\n"
-            % (quad(0, E, True), m, quad(H, R, False), m, quad(zb, B, False)))
+    blocker = fan(zb, B) if c[8:] == ("fan",) else "quad m %s\n" % quad(zb, B, False)
+    return ("material m reflect 0.5 emit 1\nquad m %s%s\nquad m %s%s\n%s"
+            % (quad(0, E, True), m, quad(H, R, False), m, blocker))
 
 
 def element(r, mesh, e):
@@ -220,7 +243,7 @@ def main():
     os.close(fd)
     try:
         for c in CASES:
-            name, E, R, B, H, zb, mesh, pairs = c
+            name, E, R, B, H, zb, mesh, pairs = c[:8]
             if only and not any(o in name for o in only):
                 continue
             with open(path, "w") as f:

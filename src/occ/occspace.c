@@ -144,6 +144,8 @@ void occ_space_free(occ_space *sp)
     free(sp->tuv);
     free(sp->upl);
     free(sp->iv);
+    free(sp->inner);
+    free(sp->ehash);
     free(sp->seg);
     memset(sp, 0, sizeof *sp);
 }

@@ -277,6 +277,11 @@ typedef struct occ_space {
     int capupl;
     double *iv;                 /* an edge's covered intervals */
     int capiv;
+    int *inner;                 /* each shadow edge: 1 when it is interior
+                                   to the union (occunion.c, inner_edges) */
+    int capinner;
+    int *ehash;                 /* the shadow edges hashed by their ends */
+    int capehash;
     rad_vec3 *seg;              /* the union's boundary: pairs of ends */
     int capseg, nseg;
 } occ_space;

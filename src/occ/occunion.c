@@ -30,8 +30,11 @@
  * from A_t's, which every evaluation would otherwise meet at a grazing
  * angle.
  *
- * Edges that lie on each other's lines (the shadows of two triangles of
- * one mesh that share an edge) are covered as half-open sets: an edge on
+ * An edge that one other shadow has too, run the other way (two
+ * triangles of one mesh that share an edge, seen from the same side), is
+ * inside the union and is dropped before any test (inner_edges): what is
+ * left of a mesh is its outline.  Other edges that lie on each other's
+ * lines are covered as half-open sets: an edge on
  * another shadow's edge of the opposite direction is kept, and so is the
  * other's, and the two cancel in the sum (their terms are exact
  * negatives, their ends being the same projected vertices); on one of the
@@ -57,6 +60,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -327,6 +331,97 @@ static int neighbours(occ_space *sp)
     return 0;
 }
 
+/* A hash of an unordered pair of points of the plane, a and b in
+ * lexicographic order (-0 and +0 alike). */
+static uint64_t edge_hash(const double *a, const double *b)
+{
+    const double w[4] = {a[0] + 0.0, a[1] + 0.0, b[0] + 0.0, b[1] + 0.0};
+    uint64_t h = 0x9e3779b97f4a7c15u;
+    for (int k = 0; k < 4; k++) {
+        uint64_t u;
+        memcpy(&u, w + k, sizeof u);
+        h = (h ^ u) * 0xff51afd7ed558ccdu;
+        h ^= h >> 32;
+    }
+    return h;
+}
+
+static inline int point_less(const double *a, const double *b)
+{
+    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+}
+
+static inline int point_same(const double *a, const double *b)
+{
+    return a[0] == b[0] && a[1] == b[1];
+}
+
+/* The shadows' edges that are interior to their union, into
+ * sp->inner[0 .. E) (E = sp->sh.nv, the edges numbered like their first
+ * vertices): an edge that exactly one other shadow has too, run the other
+ * way.  Both shadows run counter-clockwise, so one lies left of the edge
+ * and the other right of it: every point of the edge but its ends is
+ * inside the union, and the edge is no part of its boundary.  This is
+ * what two triangles of one mesh that share an edge and are seen from the
+ * same side make (their shared vertices project to the same numbers), and
+ * it leaves to the edge tests only the outline of what a mesh hides: its
+ * silhouette and free edges.  Their terms of eq. 6 were exact negatives
+ * before; now neither is computed.  An edge found more than twice (faces
+ * over each other, three faces on one edge) keeps the rule of the header.
+ * Returns 0, -1. */
+static int inner_edges(occ_space *sp)
+{
+    const int ne = sp->sh.nv;
+    int size = 16;
+    while (size < 2 * ne)
+        size *= 2;
+    /* inner: [0, E) the answer, [E, 2E) how often each edge's first copy
+     * was found, [2E, 3E) its second copy, [3E, 4E) each edge's shadow */
+    if (occ_grow_i(&sp->inner, &sp->capinner, 4 * ne) ||
+        occ_grow_i(&sp->ehash, &sp->capehash, size))
+        return -1;
+    int *inner = sp->inner, *count = inner + ne, *mate = inner + 2 * ne, *owner = inner + 3 * ne;
+    for (int i = 0; i < size; i++)
+        sp->ehash[i] = -1;
+    for (int a = 0; a < sp->sh.np; a++)
+        for (int k = sp->sh.first[a]; k < sp->sh.first[a + 1]; k++)
+            owner[k] = a;
+    for (int e = 0; e < ne; e++) {
+        const int a = owner[e], nx = e + 1 < sp->sh.first[a + 1] ? e + 1 : sp->sh.first[a];
+        const double *p = sp->uv + 2 * e, *q = sp->uv + 2 * nx;
+        inner[e] = 0;
+        count[e] = 0;
+        if (point_same(p, q))
+            continue;
+        const double *lo = point_less(p, q) ? p : q, *hi = lo == p ? q : p;
+        uint64_t h = edge_hash(lo, hi);
+        for (;; h++) {
+            const int f = sp->ehash[h & (uint64_t)(size - 1)];
+            if (f < 0) {
+                sp->ehash[h & (uint64_t)(size - 1)] = e;
+                count[e] = 1;
+                break;
+            }
+            const int fa = owner[f], fn = f + 1 < sp->sh.first[fa + 1] ? f + 1 : sp->sh.first[fa];
+            const double *fp = sp->uv + 2 * f, *fq = sp->uv + 2 * fn;
+            if ((point_same(fp, p) && point_same(fq, q)) ||
+                (point_same(fp, q) && point_same(fq, p))) {
+                if (++count[f] == 2)
+                    mate[f] = e;
+                break;
+            }
+        }
+    }
+    for (int f = 0; f < ne; f++) {
+        if (count[f] != 2 || owner[f] == owner[mate[f]])
+            continue;
+        const int fa = owner[f], fn = f + 1 < sp->sh.first[fa + 1] ? f + 1 : sp->sh.first[fa];
+        if (point_same(sp->uv + 2 * fn, sp->uv + 2 * mate[f]))
+            inner[f] = inner[mate[f]] = 1; /* run the other way */
+    }
+    return 0;
+}
+
 /* Add segment p + t0 (q - p) -> p + t1 (q - p) to sp->seg; 0, -1. */
 static int add_seg(occ_space *sp, rad_vec3 p, rad_vec3 q, double t0, double t1)
 {
@@ -457,12 +552,14 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     if ((r = shadows(sp, c, x, h, sense, e)) <= 0)
         return r;
     sp->nseg = 0;
-    if (neighbours(sp))
+    if (neighbours(sp) || inner_edges(sp))
         return -1;
     for (int a = 0; a < sp->sh.np; a++) {
         const int f = sp->sh.first[a], n = sp->sh.first[a + 1] - f;
         for (int k = 0; k < n; k++) {
             const int k0 = f + k, k1 = f + (k + 1) % n;
+            if (sp->inner[k0])
+                continue;
             if (edge_boundary(sp, c, a, sp->sh.v[k0], sp->sh.v[k1], sp->uv + 2 * k0,
                               sp->uv + 2 * k1))
                 return -1;
