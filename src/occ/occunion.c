@@ -197,22 +197,28 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
  * edges, t = dp / (dp - dq), at one point from either side, so that the
  * union's boundary neither overlaps nor breaks there by more than 2^-40
  * of an edge. */
-static int orient(const double *a, const double *b, const double *c, double *det)
+static __attribute__((noinline, cold)) int orient_exact(const double *a, const double *b,
+                                                         const double *c, double *det)
 {
     if ((c[0] == a[0] && c[1] == a[1]) || (c[0] == b[0] && c[1] == b[1])) {
         *det = 0; /* a shared vertex (a mesh's neighbours): exactly 0 */
         return 0;
     }
-    const double l = (b[0] - a[0]) * (c[1] - a[1]), r = (b[1] - a[1]) * (c[0] - a[0]);
-    const double d = l - r, bound = (3.0 + 16.0 * DBL_EPSILON) * DBL_EPSILON * (fabs(l) + fabs(r));
-    if (fabs(d) > 0x1p40 * bound) {
-        *det = d;
-        return d > 0 ? 1 : -1;
-    }
     const __float128 q = ((__float128)b[0] - a[0]) * ((__float128)c[1] - a[1]) -
                          ((__float128)b[1] - a[1]) * ((__float128)c[0] - a[0]);
     *det = (double)q;
     return (q > 0) - (q < 0);
+}
+
+static inline int orient(const double *a, const double *b, const double *c, double *det)
+{
+    const double l = (b[0] - a[0]) * (c[1] - a[1]), r = (b[1] - a[1]) * (c[0] - a[0]);
+    const double d = l - r, bound = (3.0 + 16.0 * DBL_EPSILON) * DBL_EPSILON * (fabs(l) + fabs(r));
+    if (fabs(d) > 0x1p40 * bound) {
+        *det = d; /* c is no vertex of a -> b: that would make d 0 */
+        return d > 0 ? 1 : -1;
+    }
+    return orient_exact(a, b, c, det);
 }
 
 /* The interval [*t0, *t1] of edge pu -> qu strictly inside the convex
