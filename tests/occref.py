@@ -180,7 +180,26 @@ CASES = [
      (0.3, 0.7, 0.3, 0.7), 1, 0.5, 1, [(0, 0)], "fan"),
     ("small elements in a penumbra, the blocker as a fan", (0, 1, 0, 1), (0, 1, 0, 1),
      (0.375, 1.5, -0.5, 0.625), 1, 0.5, 4, [(0, 8), (9, 6)], "fan"),
+    # ... and as separate quadrilaterals, a grid beside a T junction:
+    # coplanar neighbours merged into patches (occflat.c)
+    ("off-centre blocker as tiles", (0, 1, 0, 1), (0, 1, 0, 1), (0.55, 1.15, 0.1, 0.45), 1, 0.4,
+     1, [(0, 0)], "tiles"),
+    ("small elements in a penumbra, the blocker as tiles", (0, 1, 0, 1), (0, 1, 0, 1),
+     (0.375, 1.5, -0.5, 0.625), 1, 0.5, 4, [(0, 8), (5, 4), (9, 6)], "tiles"),
 ]
+
+
+def tiles(z, r):
+    """rectangle r in plane z as separate quadrilaterals facing -z: its
+    left part whole, its right part a 3 x 2 grid (a T junction between)"""
+    x0, x1, y0, y1 = r
+    xs = [x0 + f * (x1 - x0) for f in (0.4, 0.6, 0.85)] + [x1]
+    ys = [y0, y0 + 0.3 * (y1 - y0), y1]
+    out = ["quad m %s" % quad(z, (x0, xs[0], y0, y1), False)]
+    for i in range(3):
+        for j in range(2):
+            out.append("quad m %s" % quad(z, (xs[i], xs[i + 1], ys[j], ys[j + 1]), False))
+    return "\n".join(out) + "\n"
 
 
 def fan(z, r):
@@ -202,7 +221,8 @@ def fan(z, r):
 def scene(c):
     name, E, R, B, H, zb, mesh = c[:7]
     m = " mesh %dx%d" % (mesh, mesh) if mesh > 1 else ""
-    blocker = fan(zb, B) if c[8:] == ("fan",) else "quad m %s\n" % quad(zb, B, False)
+    blocker = (fan(zb, B) if c[8:] == ("fan",) else tiles(zb, B) if c[8:] == ("tiles",)
+               else "quad m %s\n" % quad(zb, B, False))
     return ("material m reflect 0.5 emit 1\nquad m %s%s\nquad m %s%s\n%s"
             % (quad(0, E, True), m, quad(H, R, False), m, blocker))
 

@@ -6,6 +6,7 @@ src_libradcore_la_SOURCES += \
 	%reldir%/occdomain.c \
 	%reldir%/occeee.c \
 	%reldir%/occevent.c \
+	%reldir%/occflat.c \
 	%reldir%/occhidden.c \
 	%reldir%/occleaves.c \
 	%reldir%/occlusion.c %reldir%/occlusion.h \

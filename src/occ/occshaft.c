@@ -431,6 +431,10 @@ void radi_occ_free(rad_occ *o)
     free(o->hnrm);
     free(o->hpt);
     free(o->hopen);
+    free(o->patch);
+    free(o->pv);
+    free(o->pfirst);
+    free(o->prep);
     free(o->cand_off);
     free(o->cand);
     free(o);
@@ -472,6 +476,8 @@ rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_oc
         s = find_twins(o);
     if (s == RAD_OK && mode != RAD_OCC_ALL)
         s = occ_find_solids(o);
+    if (s == RAD_OK && mode != RAD_OCC_ALL)
+        s = occ_find_patches(o);
     if (s == RAD_OK)
         s = radi_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
     else
@@ -542,10 +548,14 @@ int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff
     return nb;
 }
 
-/* The same, culled by the solids (occsolid.c): the pair's blockers. */
+/* The same, culled by the solids (occsolid.c), coplanar neighbours taken
+ * as their patch (occflat.c): the pair's blockers. */
 int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
                       const rad_ff_poly *pj, rad_vec3 origin)
 {
-    const int nb = occ_pair_shaft(o, sp, sa, sb, pi, pj, origin);
-    return nb <= 0 || o->mode == RAD_OCC_ALL ? nb : occ_solid_cull(o, sp, nb, origin);
+    int nb = occ_pair_shaft(o, sp, sa, sb, pi, pj, origin);
+    if (nb <= 0 || o->mode == RAD_OCC_ALL)
+        return nb;
+    nb = occ_solid_cull(o, sp, nb, origin);
+    return nb <= 0 ? nb : occ_flat_blockers(o, sp, nb, sa, sb, origin);
 }

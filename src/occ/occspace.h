@@ -163,6 +163,11 @@ struct rad_occ {
     int *hfirst;                /* solid g's face planes: [hfirst[g], hfirst[g+1]) */
     rad_vec3 *hnrm, *hpt;       /* outward unit normal, a point */
     unsigned char *hopen;       /* the solid's surfaces do not cover the facet */
+    int *patch;                 /* each surface's coplanar patch (occflat.c), or -1 */
+    int npatch;
+    rad_vec3 *pv;               /* patch g's polygon: pv[pfirst[g] .. pfirst[g+1]) */
+    int *pfirst;
+    int *prep;                  /* one member of each patch */
 };
 
 /* Index of the unordered surface pair a < b among ns(ns-1)/2. */
@@ -355,6 +360,9 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
 
 /* occsolid.c: convex solids, and the faces a pair may leave out */
 rad_status occ_find_solids(rad_occ *o);
+/* occflat.c: coplanar neighbours as one blocker */
+rad_status occ_find_patches(rad_occ *o);
+int occ_flat_blockers(const rad_occ *o, occ_space *sp, int nb, int sa, int sb, rad_vec3 origin);
 int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
 /* occdomain.c: the domain of integration */
