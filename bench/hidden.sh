@@ -8,6 +8,9 @@
 # Usage: bench/hidden.sh RADIOSITY
 # BENCH_HIDDEN_SQUARES (default "4 6 10"): the N of the N x N squares;
 # BENCH_HIDDEN_TORUS (default "250"): torus triangle counts;
+# BENCH_HIDDEN_SPLIT (default "6"): the closed Cornell box with each quad
+# meshed N x N, and the same as N x N separate quads (as a View3D file
+# lists elements), and the time of the second over the first;
 # BENCH_HIDDEN_MODES (default "classic default reference");
 # BENCH_HIDDEN_TIMEOUT (default 300): seconds before a run is given up.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
@@ -45,6 +48,17 @@ for t in ${BENCH_HIDDEN_TORUS-250}; do
   nb=$(grep -c '^polygon' "$tmp/t.scene")
   run "torus-$nb" "$nb" "$tmp/t.scene"
 done
+for n in ${BENCH_HIDDEN_SPLIT-6}; do
+  for how in meshed split; do
+    python3 "$here/scenes.py" "$how" "$n" "$here/../data/cornell-box-closed.scene" > "$tmp/b.scene"
+    run "box$how-$n" "$(grep -c '^quad' "$tmp/b.scene")" "$tmp/b.scene"
+  done
+done
+# separate quads against meshed surfaces, per mode
+[ -f "$tmp/all" ] && awk -F '\t' '
+  $1 ~ /^boxmeshed-/ { n = substr($1, 11); m[n, $3] = $4 }
+  $1 ~ /^boxsplit-/ { n = substr($1, 10); if (m[n, $3] > 0)
+    printf "box as %s separate quads over meshed, %s: %.2f\n", $2, $3, $4 / m[n, $3] }' "$tmp/all"
 # growth: log(t2 / t1) / log(n2 / n1) for each mode between its two
 # largest finished scenes of one kind
 [ -f "$tmp/all" ] && awk -F '\t' '

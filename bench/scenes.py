@@ -4,6 +4,9 @@ section to standard output, in the native scene format.
 
 Usage: scenes.py squares N     N x N small squares at staggered heights
        scenes.py torus T       a torus of about T triangles in a room
+       scenes.py split N FILE  FILE's quads each written as N x N separate
+                               quads (its mesh options dropped)
+       scenes.py meshed N FILE FILE with every quad meshed N x N
 
 Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 
@@ -15,6 +18,11 @@ squares: a 6 x 6 floor (y = 0, facing up), a 2 x 2 lamp 3 above it (facing
 down) and N x N squares of side 0.15, square (i, j) with its corner at
 x = -1 + 2i/N + 0.05j, z = -1 + 2j/N + 0.05i, y = 1 + (iN + j)/N^2: no two
 at one height, each shifted against the grid so shadows never line up.
+
+split and meshed: one scene two ways, as a View3D file lists its
+elements (each a surface of its own) and as the program's own meshed
+surfaces: the same elements (bilinear, as mesh.c cuts a quad) and the same
+blockers, in many pieces or in few.
 
 torus: the same floor and lamp, and a torus (major radius 0.8, minor 0.3,
 its axis tilted 30 degrees from the vertical, its centre 0.9 above the
@@ -85,15 +93,43 @@ def torus(t, out):
             tri(p00, p11, p10)
 
 
+def split(n, path, out, meshed):
+    for line in open(path):
+        w = line.split()
+        if not w or w[0] != "quad":
+            out.write(line)
+            continue
+        mat = w[1]
+        c = [tuple(float(x) for x in w[2 + 3 * k:5 + 3 * k]) for k in range(4)]
+        if meshed:
+            out.write("quad %s  %s  mesh %dx%d\n" % (mat, "  ".join(
+                "%.17g %.17g %.17g" % p for p in c), n, n))
+            continue
+
+        def at(s, t):
+            return tuple((1 - s) * (1 - t) * c[0][d] + s * (1 - t) * c[1][d] +
+                         s * t * c[2][d] + (1 - s) * t * c[3][d] for d in range(3))
+        for i in range(n):
+            for j in range(n):
+                q = [at(i / n, j / n), at((i + 1) / n, j / n), at((i + 1) / n, (j + 1) / n),
+                     at(i / n, (j + 1) / n)]
+                out.write("quad %s  %s\n" % (mat, "  ".join("%.17g %.17g %.17g" % p for p in q)))
+
+
 def main(argv):
-    if len(argv) != 3 or argv[1] not in ("squares", "torus") or not argv[2].isdigit():
-        sys.stderr.write("usage: scenes.py squares N | torus T\n")
+    kinds = ("squares", "torus", "split", "meshed")
+    if (len(argv) not in (3, 4) or argv[1] not in kinds or not argv[2].isdigit() or
+            (len(argv) == 4) != (argv[1] in ("split", "meshed"))):
+        sys.stderr.write("usage: scenes.py squares N | torus T | split N FILE | meshed N FILE\n")
         return 2
     n = int(argv[2])
     if n < 1:
         sys.stderr.write("scenes.py: N must be at least 1\n")
         return 2
-    (squares if argv[1] == "squares" else torus)(n, sys.stdout)
+    if argv[1] in ("split", "meshed"):
+        split(n, argv[3], sys.stdout, argv[1] == "meshed")
+    else:
+        (squares if argv[1] == "squares" else torus)(n, sys.stdout)
     return 0
 
 

@@ -16,5 +16,6 @@ src_libradcore_la_SOURCES += \
 	%reldir%/occsolid.c \
 	%reldir%/occspace.c %reldir%/occspace.h \
 	%reldir%/occsplit.c \
+	%reldir%/occtree.c \
 	%reldir%/occunion.c \
 	%reldir%/visibility.cc %reldir%/visibility.h

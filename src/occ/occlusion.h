@@ -32,7 +32,6 @@ typedef struct rad_occ_stats {
     int needed;                 /* 0: no pair of surfaces can be blocked, and
                                    no visibility work was done at all */
     double surfaces;            /* surfaces (blocker polygons) in the scene */
-    double triangles;           /* their triangles in the CGAL AABB tree */
     double pairs_tested;        /* element pairs with S != 0 looked at */
     double pairs_blockable;     /* ... whose shaft meets another surface */
     double pairs_blocked;       /* ... found fully hidden: F = 0 */

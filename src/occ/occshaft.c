@@ -25,8 +25,8 @@
  * Blockers are the scene's surfaces, not elements: a planar surface
  * cannot block a segment that starts on it, so the surfaces of i and j
  * are left out, and the rest is tested whole.  The test runs twice: once
- * per pair of surfaces at setup (a CGAL AABB tree, visibility.cc, gives
- * the surfaces that meet the bounding box of the surfaces' shaft), and
+ * per pair of surfaces at setup (a walk of a tree of the surfaces' boxes
+ * by the shaft, occtree.c, gives the surfaces that may meet it), and
  * per pair of elements only against that short list.  When no pair of
  * surfaces has a candidate (a convex room seen from inside), the scene
  * needs no visibility work and radi_occ_create says so.  Last, a pair's
@@ -54,7 +54,6 @@
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
-#include "occ/visibility.h"
 
 
 /* Planes through an edge of p and a vertex of q with all of p and q on one
@@ -270,10 +269,16 @@ static rad_status find_twins(rad_occ *o)
     return RAD_OK;
 }
 
+static int int_cmp(const void *pa, const void *pb)
+{
+    const int a = *(const int *)pa, b = *(const int *)pb;
+    return (a > b) - (a < b);
+}
+
 /* Append to the candidate list the surfaces that may block surfaces a and
  * b.  Returns the number appended, or -1. */
-static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp, int a, int b,
-                                   int *owners, int **cand, int *ncand, int *capcand)
+static int surface_pair_candidates(rad_occ *o, const occ_tree *tree, occ_space *sp, int a,
+                                   int b, int *owners, int **cand, int *ncand, int *capcand)
 {
     const rad_vec3 *pa = o->sv + o->sfirst[a], *pb = o->sv + o->sfirst[b];
     int na = o->sfirst[a + 1] - o->sfirst[a], nb = o->sfirst[b + 1] - o->sfirst[b];
@@ -285,6 +290,11 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
         return r; /* they see nothing of each other */
     const rad_vec3 *all = sp->elem.v;
     int nca = sp->elem.first[1], nall = sp->elem.nv;
+    int nh = o->mode == RAD_OCC_ALL
+                 ? 0
+                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], snap);
+    if (nh < 0)
+        return -1;
     int nc;
     if (o->mode == RAD_OCC_ALL) {
         nc = 0;
@@ -293,15 +303,10 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
     } else {
         rad_vec3 lo, hi, pad = v3(snap, snap, snap);
         v3_bounds(all, nall, &lo, &hi);
-        nc = radi_vis_box_polygons(vis, v3_sub(lo, pad), v3_add(hi, pad), owners);
-        if (nc < 0)
-            return -1;
+        nc = occ_tree_shaft(tree, v3_sub(lo, pad), v3_add(hi, pad), sp->hn, sp->ha, nh, snap,
+                            owners);
+        qsort(owners, (size_t)nc, sizeof *owners, int_cmp); /* in order, as listed before */
     }
-    int nh = o->mode == RAD_OCC_ALL
-                 ? 0
-                 : hull_planes(sp, all, nca, o->snormal[a], nall - nca, o->snormal[b], snap);
-    if (nh < 0)
-        return -1;
     int added = 0;
     for (int k = 0; k < nc; k++) {
         int c = owners[k], n = o->sfirst[c + 1] - o->sfirst[c];
@@ -330,7 +335,7 @@ static int surface_pair_candidates(rad_occ *o, const rad_vis *vis, occ_space *sp
  * when the progress callback asked to stop.  The listing is
  * a query of the AABB tree and a shaft test per pair, O(S^2) for S
  * surfaces: on a 3,732-triangle model it took 80 s on one thread. */
-static rad_status candidates(rad_occ *o, const rad_vis *vis, const rad_ff_options *opt,
+static rad_status candidates(rad_occ *o, const occ_tree *tree, const rad_ff_options *opt,
                              double *blockable_pairs)
 {
     const int threads = opt->threads;
@@ -362,7 +367,7 @@ static rad_status candidates(rad_occ *o, const rad_vis *vis, const rad_ff_option
             for (int b = a + 1; b < ns && !failed && !halt; b++) {
                 const int before = n;
                 const int r =
-                    surface_pair_candidates(o, vis, &sp, a, b, owners, &rows[a], &n, &cap);
+                    surface_pair_candidates(o, tree, &sp, a, b, owners, &rows[a], &n, &cap);
                 if (r < 0)
                     failed = 1;
                 o->cand_off[pair_index(a, b, ns)] = (size_t)(n - before);
@@ -457,7 +462,7 @@ rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_oc
 {
     double t0 = radi_seconds(), blockable = 0;
     rad_occ_stats st;
-    rad_vis *vis = NULL;
+    occ_tree *tree = NULL;
     memset(&st, 0, sizeof st);
     *out = NULL;
     if (mode == RAD_OCC_OFF || m->nelements < 2 || m->nsurfaces < 3) {
@@ -478,21 +483,19 @@ rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_oc
         s = occ_find_solids(o);
     if (s == RAD_OK && mode != RAD_OCC_ALL)
         s = occ_find_patches(o);
-    if (s == RAD_OK)
-        s = radi_vis_create(&vis, o->sv, o->sfirst, o->nsurf, err);
-    else
+    if (s == RAD_OK && !(tree = occ_tree_create(o)))
+        s = RAD_ERR_NOMEM;
+    if (s != RAD_OK)
         radi_fail(err, s, "out of memory for the visibility data");
     if (s == RAD_OK) {
         st.surfaces = o->nsurf;
-        st.triangles = radi_vis_triangles(vis);
-        s = candidates(o, vis, opt, &blockable);
+        s = candidates(o, tree, opt, &blockable);
         if (s == RAD_ERR_INVALID)
             radi_fail(err, s, "interrupted");
         else if (s != RAD_OK)
-            radi_fail(err, s, "visibility setup failed (out of memory, or CGAL raised an "
-                             "exception)");
+            radi_fail(err, s, "out of memory for the visibility data");
     }
-    radi_vis_free(vis);
+    occ_tree_free(tree);
     if (s != RAD_OK || blockable == 0) {
         radi_occ_free(o);
         o = NULL;

@@ -360,6 +360,12 @@ int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad
 
 /* occsolid.c: convex solids, and the faces a pair may leave out */
 rad_status occ_find_solids(rad_occ *o);
+/* occtree.c: the surfaces' boxes in a tree, walked by a shaft */
+typedef struct occ_tree occ_tree;
+occ_tree *occ_tree_create(const rad_occ *o);
+void occ_tree_free(occ_tree *t);
+int occ_tree_shaft(const occ_tree *t, rad_vec3 lo, rad_vec3 hi, const rad_vec3 *hn,
+                   const rad_vec3 *ha, int nh, double tol, int *out);
 /* occflat.c: coplanar neighbours as one blocker */
 rad_status occ_find_patches(rad_occ *o);
 int occ_flat_blockers(const rad_occ *o, occ_space *sp, int nb, int sa, int sb, rad_vec3 origin);
