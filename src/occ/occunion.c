@@ -192,7 +192,9 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
  * magnitudes, and that value is used where that bound is below 2^-41 of
  * it (checked against binary128 on 2e7 random orientations of points
  * within 2^-60 of collinear: 99.95% decided there, every sign right, the
- * worst value 4.4e-14 off).  Else it is done again in binary128, where the differences
+ * worst value 4.4e-14 off); exact differences with equal exact products
+ * are a point on the line (the axis-aligned corners of a box's faces),
+ * exactly 0.  Else it is done again in binary128, where the differences
  * of coordinates are exact (their exponents differ by less than 60: true
  * of points inside one element unless one is within 2^-60 of its size of
  * the origin, the element's first vertex) and so are the two products of
@@ -225,6 +227,10 @@ static __attribute__((noinline, cold)) int orient_exact(const double *a, const d
     two_diff(b[1], a[1], &s3, &t3);
     two_diff(c[0], a[0], &s4, &t4);
     const double P = s1 * s2, p = fma(s1, s2, -P), Q = s3 * s4, q0 = fma(s3, s4, -Q);
+    if (t1 == 0 && t2 == 0 && t3 == 0 && t4 == 0 && P == Q && p == q0) {
+        *det = 0; /* exact differences, equal exact products: on the line */
+        return 0;
+    }
     const double d = (P - Q) + ((p - q0) + ((s1 * t2 + t1 * s2) - (s3 * t4 + t3 * s4)));
     if (fabs(d) > 0x1p41 * 4.0 * DBL_EPSILON * DBL_EPSILON * (fabs(P) + fabs(Q))) {
         *det = d;
