@@ -17,6 +17,11 @@ pc=$(find "$stage" -name radiosity.pc | head -n 1)
 [ -n "$pc" ]; ok $? "radiosity.pc is installed"
 export PKG_CONFIG_PATH="$(dirname "$pc")"
 flags=$(pkg-config --cflags --libs radiosity); ok $? "pkg-config --cflags --libs radiosity: $flags"
+# the version configure was given, as PKG_CHECK_MODULES([R], [radiosity >= X]) asks
+want=$("$RADIOSITY" --version | sed -n '1s/^radiosity //p')
+have=$(pkg-config --modversion radiosity)
+[ -n "$want" ] && [ "$have" = "$want" ] && pkg-config --atleast-version="$want" radiosity
+ok $? "pkg-config --modversion radiosity is the program's version ($have, $want)"
 # an instrumented library (make check-sanitize) needs its sanitizer runtime
 # linked into the program too, as any user of such a build must
 ${CC:-cc} ${RADIOSITY_SANITIZE-} -o "$work/solve_cube" "$top_srcdir/examples/solve_cube.c" $flags 2> "$work/cc.err"
