@@ -253,7 +253,7 @@ typedef struct cli_solve {
     "      --matrix MODE       progressive: dense (fill F first), none (each\n" \
     "                          shot computes its shooter's form factors and\n" \
     "                          forgets them: O(N) memory) or auto (default:\n" \
-    "                          dense when 16 N^2 bytes fit in half the memory\n"\
+    "                          dense when 8 N^2 bytes fit in half the memory\n"\
     "                          allowed, else none)\n"                           \
     "      --adaptive          progressive: adaptive subdivision (Cohen et al.\n"\
     "                          1988 sec. 4): the mesh's elements shoot as fixed\n"\

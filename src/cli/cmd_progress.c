@@ -128,7 +128,7 @@ static void help(void)
            "                          column it needs and forgets it: O(N) memory; the\n"
            "                          reference is progressive refinement converged to\n"
            "                          1e-12 without a matrix) or auto (default: dense\n"
-           "                          when 16 N^2 bytes fit in half the memory allowed)\n"
+           "                          when 8 N^2 bytes fit in half the memory allowed)\n"
            "      --snapshots K       render every K steps of every method (the\n"
            "                          scene's camera, 512 x 512, the automatic exposure\n"
            "                          of the converged solution, see --exposure-from)\n"
