@@ -6,7 +6,9 @@
  * A command lists its outputs (path, writer, context) and calls
  *   cli_outputs_check  before any work: every path is one the program could
  *                      write (atomicfile.h, radi_afile_check), so a missing
- *                      directory is reported before an hour of solving;
+ *                      directory is reported before an hour of solving,
+ *                      and no two name one file (one would replace the
+ *                      other);
  *   cli_outputs_write  after it: every temporary is opened and written
  *                      first, then all are renamed over their targets with
  *                      SIGINT, SIGTERM and SIGHUP held back, so the outputs
@@ -32,6 +34,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli/atomicfile.h"
@@ -97,9 +100,31 @@ static void hold_signals(int hold, sigset_t *old)
     }
 }
 
+/* Do paths a and b name one file: the same string, or (both existing)
+ * the same device and inode (./x and x, a link)? */
+static int same_file(const char *a, const char *b)
+{
+    if (!strcmp(a, b))
+        return 1;
+    struct stat sa, sb;
+    return strcmp(a, "-") && strcmp(b, "-") && stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
+           sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
 int cli_outputs_check(const cli_output *o, int n)
 {
     rad_error err;
+    for (int k = 0; k < n; k++)
+        for (int l = k + 1; l < n && o[k].path; l++)
+            if (o[l].path && same_file(o[k].path, o[l].path)) {
+                /* one would silently replace the other */
+                if (!strcmp(o[k].path, o[l].path))
+                    cli_error("two outputs name the same file '%s'", o[k].path);
+                else
+                    cli_error("two outputs name the same file ('%s' and '%s')", o[k].path,
+                              o[l].path);
+                return 1;
+            }
     for (int k = 0; k < n; k++) {
         if (o[k].path && radi_afile_check(o[k].path, &err) != RAD_OK) {
             cli_error_rec(&err);
