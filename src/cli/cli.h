@@ -145,6 +145,9 @@ typedef struct cli_output {
 void cli_signals_install(void);
 /* Before any work: could every path be written?  0, or 1 (printed). */
 int cli_outputs_check(const cli_output *o, int n);
+/* A picture's path whose extension names another image format (out.jpg):
+ * 1 (printed, naming `option`), else 0. */
+int cli_png_name_check(const char *path, const char *option);
 /* Write every output to its temporary, then rename them all together
  * (atomicfile.h): 0, or 1 with the error printed and nothing replaced. */
 int cli_outputs_write(const cli_output *o, int n);

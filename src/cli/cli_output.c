@@ -34,6 +34,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -109,6 +110,23 @@ static int same_file(const char *a, const char *b)
     struct stat sa, sb;
     return strcmp(a, "-") && strcmp(b, "-") && stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
            sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+int cli_png_name_check(const char *path, const char *option)
+{
+    static const char *const other[] = {".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff",
+                                        ".webp", ".ppm", ".pgm", ".svg", ".pdf", ".eps",
+                                        ".exr", ".hdr", ".tga"};
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && slash > dot))
+        return 0;
+    for (size_t k = 0; k < sizeof other / sizeof *other; k++)
+        if (!strcasecmp(dot, other[k])) {
+            cli_error("%s '%s': the picture is written as PNG only, not %s (name it .png)",
+                      option, path, dot + 1);
+            return 1;
+        }
+    return 0;
 }
 
 int cli_outputs_check(const cli_output *o, int n)

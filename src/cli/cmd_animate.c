@@ -190,6 +190,8 @@ static int parse_option(anim_args *a, int opt, const char *arg)
                       "not '%s'", opt == OPT_FRAMES ? "frames" : "elements", arg);
             return 2;
         }
+        if (opt == OPT_FRAMES && cli_png_name_check(arg, "--frames"))
+            return 2;
         *(opt == OPT_FRAMES ? &a->frames : &a->elements) = arg;
         return 0;
     case OPT_AN_TOLERANCE:

@@ -211,7 +211,7 @@ static int parse_option(progress_args *a, int opt, const char *arg)
         return 0;
     case OPT_PLOT:
         a->plot = arg;
-        return 0;
+        return cli_png_name_check(arg, "--plot") ? 2 : 0;
     case OPT_REACH:
         if (cli_parse_double(arg, &a->race.reach) || !(a->race.reach > 0) || a->race.reach >= 1) {
             cli_error("--reach takes a number between 0 and 1, not '%s'", arg);

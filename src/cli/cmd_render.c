@@ -185,6 +185,8 @@ static int check_args(const render_args *a)
         cli_error("render needs -o IMAGE.png");
         return 2;
     }
+    if (cli_png_name_check(a->output, "-o") || (a->plot && cli_png_name_check(a->plot, "--plot")))
+        return 2;
     if ((double)o->width * o->height > RAD_RENDER_MAX_PIXELS) {
         cli_error("a %d x %d picture is more than %d pixels", o->width, o->height,
                   RAD_RENDER_MAX_PIXELS);

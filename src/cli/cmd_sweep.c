@@ -209,6 +209,8 @@ static int parse_args(sweep_args *a, int argc, char **argv)
             break;
         case OPT_PLOT:
             a->plot = optarg;
+            if (cli_png_name_check(optarg, "--plot"))
+                return 2;
             break;
         case OPT_RESOLUTIONS:
             if ((a->nres = parse_list(optarg, NULL, 0, 2, RAD_HEMICUBE_MAX, 1, a->res,

@@ -194,4 +194,11 @@ for v in big:1e-9 far:1e-3; do
     END { exit bad > 2 }' "$work/unit.tsv" "$work/$v.tsv"
   ok $? "$v: the row's radiosity as at unit scale (all but at most 2 edge pixels within $tol)"
 done
+# pictures are PNG: a path naming another format is a usage error, nothing written
+"$RADIOSITY" render -q "$top_srcdir/data/goral1984-cube.scene" -o "$work/cube.jpg" 2> "$work/err"; rc=$?
+[ $rc -eq 2 ] && grep -q 'PNG only' "$work/err" && [ ! -e "$work/cube.jpg" ]
+ok $? "render -o cube.jpg: exit 2, said, nothing written"
+"$RADIOSITY" sweep -q --plot "$work/s.GIF" "$top_srcdir/data/goral1984-cube.scene" 2> "$work/err"; rc=$?
+[ $rc -eq 2 ] && grep -q 'PNG only' "$work/err" && [ ! -e "$work/s.GIF" ]
+ok $? "sweep --plot s.GIF: exit 2 too"
 done_testing
