@@ -113,7 +113,16 @@ static rad_status check_size(const rad_scene *scene, const rad_pipeline_options 
         r->memory_bytes += RAD_HEMICUBE_PIXEL_BYTES * R * R;
         snprintf(what + len, sizeof what - len, " and a hemicube picture of %.0f x %.0f", R, R);
     }
-    return rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
+    rad_status st = rad_memory_check(r->memory_bytes, what, &r->memory_available, err);
+    if (st == RAD_ERR_TOOBIG && r->matrix == RAD_MATRIX_DENSE && !opt->keep_form_factors &&
+        opt->solve.bounces < 0 && !opt->solve.patches && opt->solve.patch_p <= 0) {
+        /* the way round the matrix, where nothing asks for it */
+        const size_t len = strlen(err->message);
+        snprintf(err->message + len, sizeof err->message - len,
+                 ", or `solver` progressive with `matrix` none (no stored matrix: %.0f MiB)",
+                 radi_matrix_free_bytes(n, (double)nv, 0) / 1048576.0);
+    }
+    return st;
 }
 
 static rad_status allocate(rad_result *r, rad_error *err)

@@ -51,6 +51,8 @@ ok $? "render --up along the view direction: exit 1 before solving"
 timeout 20 "$RADIOSITY" solve --mesh 4000x4000 "$cube" 2> "$work/err"; rc=$?
 [ $rc -eq 1 ] && grep -q '96000000 elements.* need [0-9]* MiB, but only [0-9]* MiB are available' "$work/err"
 ok $? "--mesh 4000x4000: refused with both numbers ($(head -c 200 "$work/err"))"
+grep -q 'use a coarser --mesh, or --solver progressive with --matrix none (no stored matrix: [0-9]* MiB)' "$work/err"
+ok $? "and offers the way without a stored matrix, with its need"
 # the need follows the solver: LU and Cholesky hold F and a working
 # matrix, the iterative solvers F alone (8 N^2 bytes each, N = 96e6)
 need() { sed -n 's/.* need \([0-9]*\) MiB.*/\1/p' "$1"; }
