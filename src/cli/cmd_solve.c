@@ -400,9 +400,31 @@ static void summary(const cli_run *r)
             s->row_sum_min, s->row_sum_max);
     if (s->fallbacks)
         fprintf(stderr, "radiosity: %s\n", s->fallback);
-    fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted: "
-                    "%.3g %.3g %.3g\n",
-            s->balance[0], s->balance[1], s->balance[2]);
+    if (s->emitted[0] > 0 || s->emitted[1] > 0 || s->emitted[2] > 0) {
+        /* a band that emits nothing has no ratio: '-' (radi_solve_balance
+         * keeps the difference there) */
+        fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted:");
+        for (int b = 0; b < RAD_BANDS; b++)
+            if (s->emitted[b] > 0)
+                fprintf(stderr, " %.3g", s->balance[b]);
+            else
+                fprintf(stderr, " -");
+        fprintf(stderr, "\n");
+    }
+    else
+        fprintf(stderr, "radiosity: energy balance: nothing is emitted\n");
+}
+
+/* Is every element's radiosity exactly 0 (nothing emits)? */
+static int no_light(const rad_result *r)
+{
+    const size_t n = (size_t)r->mesh.nelements * RAD_BANDS;
+    if (!r->B || n == 0)
+        return 0;
+    for (size_t k = 0; k < n; k++)
+        if (r->B[k] != 0)
+            return 0;
+    return 1;
 }
 
 int cli_run_solve(cli_run *run)
@@ -441,6 +463,9 @@ int cli_run_solve(cli_run *run)
                       ? " (the classic rule's form factors are wrong here; try --accuracy "
                         "default)"
                       : "");
+    if (no_light(&run->res))
+        cli_error("warning: every radiosity is 0: no surface of the scene emits (a material "
+                  "with emit above 0)");
     if (!s->common.quiet)
         summary(run);
     return 0;

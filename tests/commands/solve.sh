@@ -115,4 +115,14 @@ lines=$(wc -l < "$work/big.mtx")
 [ "$(cat "$work/big.mtx")" = precious ] ||
   [ "$lines" -eq $(($(grep -c '^%' "$work/big.mtx") + 1 + 864 * 864)) ]
 ok $? "killed mid-write: the target is the old file or the whole new one ($lines lines)"
+# a scene where nothing emits: said, not a balance of 0 / 0
+printf 'material w reflect 0.5\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\nquad w 0 0 1  0 1 1  1 1 1  1 0 1\n' > "$work/dark.scene"
+"$RADIOSITY" solve -o "$work/dark.ply" "$work/dark.scene" 2> "$work/err"; rc=$?
+[ $rc -eq 0 ] && grep -q 'warning: every radiosity is 0: no surface of the scene emits' "$work/err" &&
+  grep -q 'energy balance: nothing is emitted' "$work/err" && ! grep -q 'emitted: 0 0 0' "$work/err"
+ok $? "nothing emits: a warning, and no balance of 0 / 0"
+printf 'material w reflect 0.5 emit 1 0 0\nquad w 0 0 0  1 0 0  1 1 0  0 1 0\nquad w 0 0 1  0 1 1  1 1 1  1 0 1\n' > "$work/red.scene"
+"$RADIOSITY" solve -o "$work/red.ply" "$work/red.scene" 2> "$work/err"
+grep -q 'emitted: [-0-9.e]* - -$' "$work/err" && ! grep -q 'every radiosity is 0' "$work/err"
+ok $? "a band that emits nothing has no ratio: '-'"
 done_testing
