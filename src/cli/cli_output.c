@@ -101,15 +101,21 @@ static void hold_signals(int hold, sigset_t *old)
     }
 }
 
-/* Do paths a and b name one file: the same string, or (both existing)
- * the same device and inode (./x and x, a link)? */
+/* Do paths a and b name one file that each output would replace (a
+ * regular file, or a name not there yet): the same string, or (both
+ * existing) the same device and inode (./x and x, a link)?  Standard
+ * output, devices and FIFOs are written in place, and several outputs
+ * may share one (all of them to /dev/null). */
 static int same_file(const char *a, const char *b)
 {
-    if (!strcmp(a, b))
-        return 1;
+    if (!strcmp(a, "-") || !strcmp(b, "-"))
+        return 0;
     struct stat sa, sb;
-    return strcmp(a, "-") && strcmp(b, "-") && stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
-           sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    const int ea = stat(a, &sa) == 0, eb = stat(b, &sb) == 0;
+    if ((ea && !S_ISREG(sa.st_mode)) || (eb && !S_ISREG(sb.st_mode)))
+        return 0;
+    return !strcmp(a, b) ||
+           (ea && eb && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino);
 }
 
 int cli_png_name_check(const char *path, const char *option)
@@ -137,10 +143,10 @@ int cli_outputs_check(const cli_output *o, int n)
             if (o[l].path && same_file(o[k].path, o[l].path)) {
                 /* one would silently replace the other */
                 if (!strcmp(o[k].path, o[l].path))
-                    cli_error("two outputs name the same file '%s'", o[k].path);
+                    cli_error("%s: named by two outputs of the run", o[k].path);
                 else
-                    cli_error("two outputs name the same file ('%s' and '%s')", o[k].path,
-                              o[l].path);
+                    cli_error("%s and %s: one file named by two outputs of the run",
+                              o[k].path, o[l].path);
                 return 1;
             }
     for (int k = 0; k < n; k++) {

@@ -88,10 +88,10 @@ echo keep > "$work/keep.tsv"
 # two outputs naming one file: refused before any work, the file untouched
 echo keep > "$work/same.tsv"
 "$RADIOSITY" solve -q --elements "$work/same.tsv" --report "$work/same.tsv" "$scene" 2> "$work/err"; rc=$?
-[ $rc -eq 1 ] && grep -q 'two outputs name the same file' "$work/err" && [ "$(cat "$work/same.tsv")" = keep ]
+[ $rc -eq 1 ] && grep -q 'named by two outputs' "$work/err" && [ "$(cat "$work/same.tsv")" = keep ]
 ok $? "--elements and --report on one path: exit 1, said, the file kept"
 "$RADIOSITY" solve -q --elements "$work/same.tsv" --report "$work/../$(basename "$work")/same.tsv" "$scene" 2> "$work/err"; rc=$?
-[ $rc -eq 1 ] && grep -q 'two outputs name the same file' "$work/err" && [ "$(cat "$work/same.tsv")" = keep ]
+[ $rc -eq 1 ] && grep -q 'named by two outputs' "$work/err" && [ "$(cat "$work/same.tsv")" = keep ]
 ok $? "the same file by two spellings: exit 1 too"
 
 # the machine's own devices are still devices (checked last)
