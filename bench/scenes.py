@@ -4,6 +4,7 @@ section to standard output, in the native scene format.
 
 Usage: scenes.py squares N     N x N small squares at staggered heights
        scenes.py torus T       a torus of about T triangles in a room
+       scenes.py torusbox T    the torus in a closed box (walls facing in)
        scenes.py split N FILE  FILE's quads each written as N x N separate
                                quads (its mesh options dropped)
        scenes.py meshed N FILE FILE with every quad meshed N x N
@@ -23,6 +24,9 @@ split and meshed: one scene two ways, as a View3D file lists its
 elements (each a surface of its own) and as the program's own meshed
 surfaces: the same elements (bilinear, as mesh.c cuts a quad) and the same
 blockers, in many pieces or in few.
+
+torusbox: the same torus in a closed box, the lamp a square of its
+ceiling: every row of F sums to 1 (tests/accuracy/closure.sh).
 
 torus: the same floor and lamp, and a torus (major radius 0.8, minor 0.3,
 its axis tilted 30 degrees from the vertical, its centre 0.9 above the
@@ -59,14 +63,32 @@ def squares(n, out):
                       % (x, y, z, x, y, z + s, x + s, y, z + s, x + s, y, z))
 
 
-def torus(t, out):
+def closed_room(out):
+    out.write("material wall reflect 0.6\n")
+    out.write("material lamp reflect 0 emit 10\n")
+    out.write("material model reflect 0.5\n")
+    # [-3, 3] x [0, 3] x [-3, 3], every wall facing in
+    out.write("quad wall  -3 0 -3  -3 0 3  3 0 3  3 0 -3  mesh 2x2\n")
+    out.write("quad lamp  -1 3 -1  1 3 -1  1 3 1  -1 3 1\n")
+    out.write("quad wall  -3 3 -3  -1 3 -3  -1 3 3  -3 3 3\n")
+    out.write("quad wall  1 3 -3  3 3 -3  3 3 3  1 3 3\n")
+    out.write("quad wall  -1 3 -3  1 3 -3  1 3 -1  -1 3 -1\n")
+    out.write("quad wall  -1 3 1  1 3 1  1 3 3  -1 3 3\n")
+    out.write("quad wall  -3 0 -3  3 0 -3  3 3 -3  -3 3 -3  mesh 2x1\n")
+    out.write("quad wall  -3 0 3  -3 3 3  3 3 3  3 0 3  mesh 2x1\n")
+    out.write("quad wall  -3 0 -3  -3 3 -3  -3 3 3  -3 0 3  mesh 1x2\n")
+    out.write("quad wall  3 0 -3  3 0 3  3 3 3  3 3 -3  mesh 1x2\n")
+    out.write("camera eye 0 2 2.9 at 0 0.8 0 up 0 1 0 fov 90\n")
+
+
+def torus(t, out, closed=False):
     v = 1
     while 2 * 5 * v * v < t:
         v += 1
     u = 5 * v
     out.write("# a torus of %d triangles (%d x %d) under a lamp (bench/scenes.py)\n"
               % (2 * u * v, u, v))
-    room(out)
+    (closed_room if closed else room)(out)
     big, small, tilt = 0.8, 0.3, math.radians(30)
     ct, st = math.cos(tilt), math.sin(tilt)
 
@@ -117,10 +139,11 @@ def split(n, path, out, meshed):
 
 
 def main(argv):
-    kinds = ("squares", "torus", "split", "meshed")
+    kinds = ("squares", "torus", "torusbox", "split", "meshed")
     if (len(argv) not in (3, 4) or argv[1] not in kinds or not argv[2].isdigit() or
             (len(argv) == 4) != (argv[1] in ("split", "meshed"))):
-        sys.stderr.write("usage: scenes.py squares N | torus T | split N FILE | meshed N FILE\n")
+        sys.stderr.write("usage: scenes.py squares N | torus T | torusbox T | split N FILE | "
+                         "meshed N FILE\n")
         return 2
     n = int(argv[2])
     if n < 1:
@@ -128,8 +151,10 @@ def main(argv):
         return 2
     if argv[1] in ("split", "meshed"):
         split(n, argv[3], sys.stdout, argv[1] == "meshed")
+    elif argv[1] == "squares":
+        squares(n, sys.stdout)
     else:
-        (squares if argv[1] == "squares" else torus)(n, sys.stdout)
+        torus(n, sys.stdout, argv[1] == "torusbox")
     return 0
 
 

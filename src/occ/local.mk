@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/occclosed.c \
 	%reldir%/occdomain.c \
 	%reldir%/occeee.c \
 	%reldir%/occevent.c \

@@ -25,14 +25,15 @@
  * turns by less than that tolerance are dropped (a band of 1e-12 of the
  * patch's size, far below any promise).
  *
- * The rule (occ_flat_blockers).  A pair's blockers (after the shaft and
- * the solids) that belong to one patch are replaced by the whole patch,
- * where two or more of them do and the patch holds neither of the pair's
- * surfaces.  The patch hides at least what they hide, and nothing more
- * that matters: its other members were left out of the pair's list
- * because the shaft cleared them (they meet no segment between the two
- * elements) or because a solid made them redundant (what they hide,
- * other blockers hide); both kinds hide nothing a kept blocker does not.
+ * The rule (occ_flat_blockers).  A pair's blockers (after the shaft,
+ * before the solids, occsolid.c, which then see one blocker a face) that
+ * belong to one patch are replaced by the whole patch, where two or more
+ * of them do and the patch holds neither of the pair's surfaces.  The
+ * patch hides at least what they hide, and nothing more: its other
+ * members were left out of the pair's list because the shaft cleared
+ * them, and they meet no segment between the two elements.  A solid whose
+ * faces are cut into pieces finds its corners among the patches' too
+ * (occsolid.c, group_vertices).
  * A patch holding one of the pair's surfaces is left alone: that surface
  * is in the plane of an element, and the elements' own surfaces are no
  * blockers.

@@ -8,9 +8,12 @@
  * alone when nothing can stand between the two elements and otherwise
  * subtracts what is hidden.  The work is in four files, one job each:
  *   occshaft.c   which pairs can be blocked at all (shaft culling): the
- *                scene's setup and each pair's short list of blockers,
- *                less the faces of a convex block that its other faces
- *                make redundant for the pair (occsolid.c);
+ *                scene's setup (a walk of a tree of the surfaces' boxes,
+ *                occtree.c) and each pair's short list of blockers, its
+ *                coplanar neighbours taken as one patch (occflat.c), less
+ *                the faces of a convex block or a closed mesh that its
+ *                other faces make redundant for the pair (occsolid.c,
+ *                occclosed.c);
  *   occhidden.c  how much of a pair is hidden: fully by one blocker, or the
  *                integral of the hidden part over the outer element;
  *   occdomain.c  where on the outer element anything can be hidden (the

@@ -32,6 +32,7 @@ typedef struct rad_occ_stats {
     int needed;                 /* 0: no pair of surfaces can be blocked, and
                                    no visibility work was done at all */
     double surfaces;            /* surfaces (blocker polygons) in the scene */
+    double closed_meshes;       /* closed meshes found among them (occclosed.c) */
     double pairs_tested;        /* element pairs with S != 0 looked at */
     double pairs_blockable;     /* ... whose shaft meets another surface */
     double pairs_blocked;       /* ... found fully hidden: F = 0 */

@@ -440,6 +440,9 @@ void radi_occ_free(rad_occ *o)
     free(o->pv);
     free(o->pfirst);
     free(o->prep);
+    free(o->closed);
+    free(o->clo);
+    free(o->chi);
     free(o->cand_off);
     free(o->cand);
     free(o);
@@ -480,15 +483,18 @@ rad_status radi_occ_create(rad_occ **out, const rad_mesh *m, double snap, rad_oc
     if (s == RAD_OK)
         s = find_twins(o);
     if (s == RAD_OK && mode != RAD_OCC_ALL)
+        s = occ_find_patches(o);
+    if (s == RAD_OK && mode != RAD_OCC_ALL)
         s = occ_find_solids(o);
     if (s == RAD_OK && mode != RAD_OCC_ALL)
-        s = occ_find_patches(o);
+        s = occ_find_closed(o);
     if (s == RAD_OK && !(tree = occ_tree_create(o)))
         s = RAD_ERR_NOMEM;
     if (s != RAD_OK)
         radi_fail(err, s, "out of memory for the visibility data");
     if (s == RAD_OK) {
         st.surfaces = o->nsurf;
+        st.closed_meshes = o->nclosed;
         s = candidates(o, tree, opt, &blockable);
         if (s == RAD_ERR_INVALID)
             radi_fail(err, s, "interrupted");
@@ -551,14 +557,17 @@ int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff
     return nb;
 }
 
-/* The same, culled by the solids (occsolid.c), coplanar neighbours taken
- * as their patch (occflat.c): the pair's blockers. */
+/* The same, coplanar neighbours taken as their patch (occflat.c), culled
+ * by the convex solids (occsolid.c) and the closed meshes (occclosed.c):
+ * the pair's blockers. */
 int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
                       const rad_ff_poly *pj, rad_vec3 origin)
 {
     int nb = occ_pair_shaft(o, sp, sa, sb, pi, pj, origin);
     if (nb <= 0 || o->mode == RAD_OCC_ALL)
         return nb;
-    nb = occ_solid_cull(o, sp, nb, origin);
-    return nb <= 0 ? nb : occ_flat_blockers(o, sp, nb, sa, sb, origin);
+    nb = occ_flat_blockers(o, sp, nb, sa, sb, origin);
+    if (nb > 0)
+        nb = occ_solid_cull(o, sp, nb, origin);
+    return nb <= 0 ? nb : occ_closed_cull(o, sp, nb, sa, sb, pi, pj, origin);
 }

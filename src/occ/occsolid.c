@@ -193,13 +193,25 @@ static rad_status join_folds(const rad_occ *o, const unsigned char *ok, int *par
 }
 
 /* One group's distinct vertices (at most SOLID_MAX_V) into v; their count,
- * or 0 when there are more. */
+ * or 0 when there are more.  A face cut into coplanar pieces counts its
+ * patch's corners alone (occflat.c runs first). */
 static int group_vertices(const rad_occ *o, const int *member, int nm, rad_vec3 *v)
 {
     int nv = 0;
     for (int k = 0; k < nm; k++) {
-        const rad_vec3 *p = o->sv + o->sfirst[member[k]];
-        for (int l = 0; l < o->sfirst[member[k] + 1] - o->sfirst[member[k]]; l++) {
+        /* a member of a coplanar patch (occflat.c) brings the patch's
+         * corners, once: its other vertices lie inside the patch or on a
+         * straight run of its edges, and are no corners of the solid */
+        const int g = o->patch ? o->patch[member[k]] : -1;
+        int seen_patch = 0;
+        for (int l = 0; l < k && g >= 0 && !seen_patch; l++)
+            seen_patch = o->patch[member[l]] == g;
+        if (seen_patch)
+            continue;
+        const rad_vec3 *p = g >= 0 ? o->pv + o->pfirst[g] : o->sv + o->sfirst[member[k]];
+        const int np = g >= 0 ? o->pfirst[g + 1] - o->pfirst[g]
+                              : o->sfirst[member[k] + 1] - o->sfirst[member[k]];
+        for (int l = 0; l < np; l++) {
             int seen = 0;
             for (int u = 0; u < nv && !seen; u++)
                 seen = !vec_cmp(v[u], p[l]);

@@ -146,6 +146,7 @@ void occ_space_free(occ_space *sp)
     free(sp->iv);
     free(sp->inner);
     free(sp->ehash);
+    free(sp->ccut);
     free(sp->seg);
     memset(sp, 0, sizeof *sp);
 }

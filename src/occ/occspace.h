@@ -168,6 +168,9 @@ struct rad_occ {
     rad_vec3 *pv;               /* patch g's polygon: pv[pfirst[g] .. pfirst[g+1]) */
     int *pfirst;
     int *prep;                  /* one member of each patch */
+    int *closed;                /* each surface's closed mesh (occclosed.c), or -1 */
+    int nclosed;
+    rad_vec3 *clo, *chi;        /* each closed mesh's box */
 };
 
 /* Index of the unordered surface pair a < b among ns(ns-1)/2. */
@@ -287,6 +290,9 @@ typedef struct occ_space {
     int capinner;
     int *ehash;                 /* the shadow edges hashed by their ends */
     int capehash;
+    int *ccut;                  /* blockers a closed mesh makes redundant,
+                                   per side (occclosed.c) */
+    int capccut;
     rad_vec3 *seg;              /* the union's boundary: pairs of ends */
     int capseg, nseg;
 } occ_space;
@@ -366,6 +372,10 @@ occ_tree *occ_tree_create(const rad_occ *o);
 void occ_tree_free(occ_tree *t);
 int occ_tree_shaft(const occ_tree *t, rad_vec3 lo, rad_vec3 hi, const rad_vec3 *hn,
                    const rad_vec3 *ha, int nh, double tol, int *out);
+/* occclosed.c: closed meshes, and their faces a pair need not take */
+rad_status occ_find_closed(rad_occ *o);
+int occ_closed_cull(const rad_occ *o, occ_space *sp, int nb, int sa, int sb,
+                    const rad_ff_poly *pi, const rad_ff_poly *pj, rad_vec3 origin);
 /* occflat.c: coplanar neighbours as one blocker */
 rad_status occ_find_patches(rad_occ *o);
 int occ_flat_blockers(const rad_occ *o, occ_space *sp, int nb, int sa, int sb, rad_vec3 origin);

@@ -159,4 +159,13 @@ rows_but "$work/fuzz1231.scene" reference 1e-9 13 "fuzzed room 62:1231"
 closed="${top_srcdir}/data/cornell-box-closed.scene"
 rows "$closed" default 3x3 1e-6 "closed Cornell box"
 rows "$closed" reference 2x2 1e-9 "closed Cornell box"
+# The same box written as 144 separate quadrilaterals (each quad's 2 x 2
+# elements a surface of its own, as View3D files list them): the coplanar
+# pieces are merged into patches and the blocks found as solids again
+# (src/occ/occflat.c, occsolid.c); a patch or a cull that let light
+# through a block, or hid an element from its own face, moves a row.
+if command -v python3 > /dev/null 2>&1; then
+  python3 "$top_srcdir/bench/scenes.py" split 2 "$closed" > "$work/split.scene"
+  rows "$work/split.scene" default 1x1 1e-6 "closed Cornell box as 144 quads"
+fi
 done_testing
