@@ -19,7 +19,10 @@
  * panel's face (occshaft.c, twins) or twisted beyond the snap, and the
  * volume it bounds, (1/6) sum over its fan triangles of v0 . (v1 x v2)
  * (the divergence theorem), is positive: the fronts face out.  A room's
- * walls, facing in, are no such mesh.
+ * walls, facing in, are no such mesh, and neither is a convex solid of
+ * occsolid.c (its rule takes one element as O for the object, this one
+ * might take the other, and together they would leave out both the
+ * faces a segment enters by and those it leaves by).
  *
  * The rule.  Let O be one element of the pair (x a point of O) and B a
  * member of the closed mesh M with all of O on the back (closed) side of
@@ -155,7 +158,10 @@ rad_status occ_find_closed(rad_occ *o)
         o->closed[s] = -1;
         ok[s] = o->sfirst[s + 1] - o->sfirst[s] >= 3 && o->twin[s] < 0 && !twinned[s] &&
                 o->stwist[s] <= o->snap;
-        bad[s] = !ok[s];
+        /* a face of a convex solid is the solids' (occsolid.c): the two
+         * rules could take different elements as O for one object and
+         * leave out both its entry and its exit */
+        bad[s] = !ok[s] || (o->solid && o->solid[s] >= 0);
     }
     if (st == RAD_OK)
         st = join(o, ok, parent, bad);
