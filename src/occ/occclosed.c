@@ -65,31 +65,13 @@ typedef struct closed_edge {
     int s, up;
 } closed_edge;
 
-static int vcmp(rad_vec3 a, rad_vec3 b)
-{
-    if (a.x != b.x)
-        return a.x < b.x ? -1 : 1;
-    if (a.y != b.y)
-        return a.y < b.y ? -1 : 1;
-    if (a.z != b.z)
-        return a.z < b.z ? -1 : 1;
-    return 0;
-}
-
 static int edge_cmp(const void *pa, const void *pb)
 {
     const closed_edge *a = pa, *b = pb;
-    int c = vcmp(a->lo, b->lo);
+    int c = occ_vec_cmp(a->lo, b->lo);
     if (!c)
-        c = vcmp(a->hi, b->hi);
+        c = occ_vec_cmp(a->hi, b->hi);
     return c ? c : (a->s > b->s) - (a->s < b->s);
-}
-
-static int find(int *parent, int a)
-{
-    while (parent[a] != a)
-        a = parent[a] = parent[parent[a]];
-    return a;
 }
 
 /* Join the surfaces across shared edges (parent); bad[s]: an edge of s
@@ -108,7 +90,7 @@ static rad_status join(const rad_occ *o, const unsigned char *ok, int *parent, u
         const int n = o->sfirst[s + 1] - o->sfirst[s];
         for (int k = 0; ok[s] && k < n; k++) {
             const rad_vec3 a = p[k], b = p[(k + 1) % n];
-            const int c = vcmp(a, b);
+            const int c = occ_vec_cmp(a, b);
             if (c == 0) {
                 bad[s] = 1; /* a repeated vertex */
                 continue;
@@ -122,10 +104,10 @@ static rad_status join(const rad_occ *o, const unsigned char *ok, int *parent, u
     qsort(e, (size_t)ne, sizeof *e, edge_cmp);
     for (int k = 0; k < ne;) {
         int l = k + 1;
-        while (l < ne && !vcmp(e[l].lo, e[k].lo) && !vcmp(e[l].hi, e[k].hi))
+        while (l < ne && !occ_vec_cmp(e[l].lo, e[k].lo) && !occ_vec_cmp(e[l].hi, e[k].hi))
             l++;
         if (l - k == 2 && e[k].s != e[k + 1].s && e[k].up != e[k + 1].up) {
-            const int rs = find(parent, e[k].s), rt = find(parent, e[k + 1].s);
+            const int rs = occ_uf_find(parent, e[k].s), rt = occ_uf_find(parent, e[k + 1].s);
             parent[rs < rt ? rt : rs] = rs < rt ? rs : rt;
         } else {
             for (int m = k; m < l; m++)
@@ -169,16 +151,16 @@ rad_status occ_find_closed(rad_occ *o)
         /* a root is closed when none of its members is bad; its volume */
         for (int s = 0; s < ns; s++)
             if (bad[s])
-                bad[find(parent, s)] = 1;
+                bad[occ_uf_find(parent, s)] = 1;
         for (int s = 0; s < ns; s++) {
-            const int r = find(parent, s);
+            const int r = occ_uf_find(parent, s);
             if (bad[r] || r == s)
                 continue; /* a lone surface is no closed mesh either */
             bad[r] |= 2; /* marks: has a member besides itself */
         }
         for (int s = 0; s < ns; s++) {
             const rad_vec3 *p = o->sv + o->sfirst[s];
-            const int r = find(parent, s), n = o->sfirst[s + 1] - o->sfirst[s];
+            const int r = occ_uf_find(parent, s), n = o->sfirst[s + 1] - o->sfirst[s];
             if (bad[r] != 2)
                 continue;
             /* about the root's first vertex: the sum does not depend on
@@ -190,7 +172,7 @@ rad_status occ_find_closed(rad_occ *o)
         for (int s = 0; s < ns; s++)
             id[s] = -1;
         for (int s = 0; s < ns; s++) {
-            const int r = find(parent, s);
+            const int r = occ_uf_find(parent, s);
             if (bad[r] != 2 || !(vol[r] > 0))
                 continue;
             if (id[r] < 0)

@@ -60,31 +60,13 @@ typedef struct flat_edge {
     int s, up;
 } flat_edge;
 
-static int vcmp(rad_vec3 a, rad_vec3 b)
-{
-    if (a.x != b.x)
-        return a.x < b.x ? -1 : 1;
-    if (a.y != b.y)
-        return a.y < b.y ? -1 : 1;
-    if (a.z != b.z)
-        return a.z < b.z ? -1 : 1;
-    return 0;
-}
-
 static int edge_cmp(const void *pa, const void *pb)
 {
     const flat_edge *a = pa, *b = pb;
-    int c = vcmp(a->lo, b->lo);
+    int c = occ_vec_cmp(a->lo, b->lo);
     if (!c)
-        c = vcmp(a->hi, b->hi);
+        c = occ_vec_cmp(a->hi, b->hi);
     return c ? c : (a->s > b->s) - (a->s < b->s);
-}
-
-static int find(int *parent, int a)
-{
-    while (parent[a] != a)
-        a = parent[a] = parent[parent[a]];
-    return a;
 }
 
 /* May surface s join a patch? */
@@ -119,7 +101,7 @@ static rad_status join(const rad_occ *o, const unsigned char *twinned, int *pare
         const int n = o->sfirst[s + 1] - o->sfirst[s];
         for (int k = 0; k < n && eligible(o, twinned, s); k++) {
             const rad_vec3 a = p[k], b = p[(k + 1) % n];
-            const int up = vcmp(a, b) < 0;
+            const int up = occ_vec_cmp(a, b) < 0;
             e[ne].lo = up ? a : b;
             e[ne].hi = up ? b : a;
             e[ne].s = s;
@@ -129,17 +111,17 @@ static rad_status join(const rad_occ *o, const unsigned char *twinned, int *pare
     qsort(e, (size_t)ne, sizeof *e, edge_cmp);
     for (int k = 0; k + 1 < ne; k++) {
         /* exactly two copies of the edge, run opposite ways */
-        if (vcmp(e[k].lo, e[k + 1].lo) || vcmp(e[k].hi, e[k + 1].hi))
+        if (occ_vec_cmp(e[k].lo, e[k + 1].lo) || occ_vec_cmp(e[k].hi, e[k + 1].hi))
             continue;
-        if ((k + 2 < ne && !vcmp(e[k].lo, e[k + 2].lo) && !vcmp(e[k].hi, e[k + 2].hi)) ||
-            (k > 0 && !vcmp(e[k].lo, e[k - 1].lo) && !vcmp(e[k].hi, e[k - 1].hi)))
+        if ((k + 2 < ne && !occ_vec_cmp(e[k].lo, e[k + 2].lo) && !occ_vec_cmp(e[k].hi, e[k + 2].hi)) ||
+            (k > 0 && !occ_vec_cmp(e[k].lo, e[k - 1].lo) && !occ_vec_cmp(e[k].hi, e[k - 1].hi)))
             continue;
         const int s = e[k].s, t = e[k + 1].s;
         if (s == t || e[k].up == e[k + 1].up ||
             v3_dot(o->snormal[s], o->snormal[t]) < 1 - FLAT_NORMAL || !on_plane(o, s, t) ||
             !on_plane(o, t, s))
             continue;
-        const int rs = find(parent, s), rt = find(parent, t);
+        const int rs = occ_uf_find(parent, s), rt = occ_uf_find(parent, t);
         parent[rs < rt ? rt : rs] = rs < rt ? rs : rt;
     }
     free(e);
@@ -297,7 +279,7 @@ static int merge_group(flat_poly *poly, int np, const rad_vec3 *pt, rad_vec3 nrm
 
 static int vid_cmp(const void *pa, const void *pb)
 {
-    return vcmp(*(const rad_vec3 *)pa, *(const rad_vec3 *)pb);
+    return occ_vec_cmp(*(const rad_vec3 *)pa, *(const rad_vec3 *)pb);
 }
 
 /* Store p (of the group's points pt) as patch o->npatch, its straight
@@ -349,7 +331,7 @@ static rad_status patch_group(rad_occ *o, const int *members, int nm, int *capv)
         qsort(pt, (size_t)npt, sizeof *pt, vid_cmp);
         int w = 0;
         for (int i = 0; i < npt; i++)
-            if (w == 0 || vcmp(pt[w - 1], pt[i]))
+            if (w == 0 || occ_vec_cmp(pt[w - 1], pt[i]))
                 pt[w++] = pt[i];
         npt = w;
     }
@@ -423,15 +405,15 @@ rad_status occ_find_patches(rad_occ *o)
         if (!count)
             st = RAD_ERR_NOMEM;
         for (int s = 0; s < ns && count; s++)
-            count[find(parent, s) + 1]++;
+            count[occ_uf_find(parent, s) + 1]++;
         for (int s = 0; s < ns && count; s++)
             count[s + 1] += count[s];
         for (int s = 0; s < ns && count; s++)
-            order[count[find(parent, s)]++] = s;
+            order[count[occ_uf_find(parent, s)]++] = s;
         free(count);
         for (int a = 0; a < ns && st == RAD_OK;) {
             int b = a + 1;
-            while (b < ns && find(parent, order[b]) == find(parent, order[a]))
+            while (b < ns && occ_uf_find(parent, order[b]) == occ_uf_find(parent, order[a]))
                 b++;
             if (b - a >= 2)
                 st = patch_group(o, order + a, b - a, &capv);

@@ -101,31 +101,13 @@ typedef struct solid_edge {
     int s;
 } solid_edge;
 
-static int vec_cmp(rad_vec3 a, rad_vec3 b)
-{
-    if (a.x != b.x)
-        return a.x < b.x ? -1 : 1;
-    if (a.y != b.y)
-        return a.y < b.y ? -1 : 1;
-    if (a.z != b.z)
-        return a.z < b.z ? -1 : 1;
-    return 0;
-}
-
 static int edge_cmp(const void *pa, const void *pb)
 {
     const solid_edge *a = pa, *b = pb;
-    int c = vec_cmp(a->lo, b->lo);
+    int c = occ_vec_cmp(a->lo, b->lo);
     if (!c)
-        c = vec_cmp(a->hi, b->hi);
+        c = occ_vec_cmp(a->hi, b->hi);
     return c ? c : (a->s > b->s) - (a->s < b->s);
-}
-
-static int uf_find(int *parent, int a)
-{
-    while (parent[a] != a)
-        a = parent[a] = parent[parent[a]];
-    return a;
 }
 
 /* Is every vertex of surface t on the back (closed) side of s's plane? */
@@ -169,7 +151,7 @@ static rad_status join_folds(const rad_occ *o, const unsigned char *ok, int *par
         int n = o->sfirst[s + 1] - o->sfirst[s];
         for (int k = 0; ok[s] && k < n; k++) {
             rad_vec3 a = p[k], b = p[(k + 1) % n];
-            int ab = vec_cmp(a, b) < 0;
+            int ab = occ_vec_cmp(a, b) < 0;
             e[ne].lo = ab ? a : b;
             e[ne].hi = ab ? b : a;
             e[ne++].s = s;
@@ -177,13 +159,13 @@ static rad_status join_folds(const rad_occ *o, const unsigned char *ok, int *par
     }
     qsort(e, (size_t)ne, sizeof *e, edge_cmp);
     for (int k = 0; k + 1 < ne; k++) {
-        for (int l = k + 1; l < ne && !vec_cmp(e[l].lo, e[k].lo) && !vec_cmp(e[l].hi, e[k].hi);
+        for (int l = k + 1; l < ne && !occ_vec_cmp(e[l].lo, e[k].lo) && !occ_vec_cmp(e[l].hi, e[k].hi);
              l++) {
             int s = e[k].s, t = e[l].s;
             double tol = o->snap + o->stwist[s] + o->stwist[t];
             if (s != t && v3_dot(o->snormal[s], o->snormal[t]) > -1 + 1e-9 &&
                 behind(o, s, t, tol) && behind(o, t, s, tol)) {
-                int rs = uf_find(parent, s), rt = uf_find(parent, t);
+                int rs = occ_uf_find(parent, s), rt = occ_uf_find(parent, t);
                 parent[rs < rt ? rt : rs] = rs < rt ? rs : rt;
             }
         }
@@ -214,7 +196,7 @@ static int group_vertices(const rad_occ *o, const int *member, int nm, rad_vec3 
         for (int l = 0; l < np; l++) {
             int seen = 0;
             for (int u = 0; u < nv && !seen; u++)
-                seen = !vec_cmp(v[u], p[l]);
+                seen = !occ_vec_cmp(v[u], p[l]);
             if (seen)
                 continue;
             if (nv == SOLID_MAX_V)
@@ -393,12 +375,12 @@ rad_status occ_find_solids(rad_occ *o)
      * per root was quadratic in the surfaces), each in surface order */
     for (int s = 0; s < ns; s++)
         if (ok[s])
-            start[uf_find(parent, s) + 2]++;
+            start[occ_uf_find(parent, s) + 2]++;
     for (int r = 0; r < ns; r++)
         start[r + 2] += start[r + 1];
     for (int s = 0; s < ns; s++)
         if (ok[s])
-            member[start[uf_find(parent, s) + 1]++] = s;
+            member[start[occ_uf_find(parent, s) + 1]++] = s;
     int caph = 0;
     for (int r = 0; r < ns && st == RAD_OK; r++)
         if (start[r + 1] - start[r] >= 2)

@@ -453,6 +453,28 @@ OCC_GROW(occ_grow_d, double)
 OCC_GROW(occ_grow_node, tri_node)
 OCC_GROW(occ_grow_i, int)
 
+/* Points in lexicographic order (x, then y, then z): -1, 0 (the same
+ * numbers), 1.  The setup files match shared vertices with it, bit for
+ * bit (occsolid.c, occflat.c, occclosed.c). */
+static inline int occ_vec_cmp(rad_vec3 a, rad_vec3 b)
+{
+    if (a.x != b.x)
+        return a.x < b.x ? -1 : 1;
+    if (a.y != b.y)
+        return a.y < b.y ? -1 : 1;
+    if (a.z != b.z)
+        return a.z < b.z ? -1 : 1;
+    return 0;
+}
+
+/* The root of a in a union-find forest (parent), halving the path. */
+static inline int occ_uf_find(int *parent, int a)
+{
+    while (parent[a] != a)
+        a = parent[a] = parent[parent[a]];
+    return a;
+}
+
 /* Exchange two growable arrays (a cut's input and output). */
 static inline void occ_swap_v3(rad_vec3 **a, int *capa, rad_vec3 **b, int *capb)
 {
