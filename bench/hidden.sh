@@ -12,7 +12,11 @@
 # meshed N x N, and the same as N x N separate quads (as a View3D file
 # lists elements), and the time of the second over the first;
 # BENCH_HIDDEN_MODES (default "classic default reference");
-# BENCH_HIDDEN_TIMEOUT (default 300): seconds before a run is given up.
+# BENCH_HIDDEN_TIMEOUT (default 300): seconds before a run is given up;
+# BENCH_VIEW3D: a View3D 3.2 program, built by the user from its public
+# source (never part of this project), timed on the same elements written
+# as a .vs3 file (scenes.py vs3; eps=1e-6), for the squares and the torus,
+# with each mode's time over View3D's.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 set -e
 rad=$1
@@ -39,15 +43,34 @@ run() { # NAME BLOCKERS SCENE
     fi
   done
 }
+view3d() { # NAME BLOCKERS SCENE: View3D's time on the same elements
+  [ -n "${BENCH_VIEW3D-}" ] || return 0
+  python3 "$here/scenes.py" vs3 "$3" > "$tmp/v.vs3"
+  t0=$(date +%s.%N)
+  if (cd "$tmp" && timeout "$limit" "$BENCH_VIEW3D" v.vs3 v.out > /dev/null 2>&1); then
+    t1=$(date +%s.%N)
+    awk -v a="$t0" -v b="$t1" -v n="$1" -v k="$2" 'BEGIN { printf "%s\t%s\tview3d\t%.3f\n", n, k, b - a }' \
+      | tee -a "$tmp/v3d"
+  else
+    printf '%s\t%s\tview3d\tfailed or over %s s\n' "$1" "$2" "$limit"
+  fi
+}
 for n in ${BENCH_HIDDEN_SQUARES-4 6 10}; do
   python3 "$here/scenes.py" squares "$n" > "$tmp/s.scene"
   run "squares-$n" $((n * n)) "$tmp/s.scene"
+  view3d "squares-$n" $((n * n)) "$tmp/s.scene"
 done
 for t in ${BENCH_HIDDEN_TORUS-250}; do
   python3 "$here/scenes.py" torus "$t" > "$tmp/t.scene"
   nb=$(grep -c '^polygon' "$tmp/t.scene")
   run "torus-$nb" "$nb" "$tmp/t.scene"
+  view3d "torus-$nb" "$nb" "$tmp/t.scene"
 done
+# each mode's time over View3D's on the same scene
+[ -f "$tmp/v3d" ] && [ -f "$tmp/all" ] && awk -F '\t' '
+  FNR == NR { v[$1] = $4; next }
+  ($1 in v) && v[$1] > 0 { printf "%s, %s over View3D: %.1f\n", $1, $3, $4 / v[$1] }' \
+  "$tmp/v3d" "$tmp/all"
 for n in ${BENCH_HIDDEN_SPLIT-6}; do
   for how in meshed split; do
     python3 "$here/scenes.py" "$how" "$n" "$here/../data/cornell-box-closed.scene" > "$tmp/b.scene"

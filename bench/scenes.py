@@ -8,6 +8,7 @@ Usage: scenes.py squares N     N x N small squares at staggered heights
        scenes.py split N FILE  FILE's quads each written as N x N separate
                                quads (its mesh options dropped)
        scenes.py meshed N FILE FILE with every quad meshed N x N
+       scenes.py vs3 FILE      FILE's elements as a View3D 3.2 input file
 
 Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 
@@ -27,6 +28,12 @@ blockers, in many pieces or in few.
 
 torusbox: the same torus in a closed box, the lamp a square of its
 ceiling: every row of F sums to 1 (tests/accuracy/closure.sh).
+
+vs3: the elements of a scene written by this script (its quads cut as
+their mesh option says, its polygons of 3 or 4 corners) as the surfaces
+of a View3D input file (F 3), so that a peer program can be timed on the
+same faces.  View3D's emissivity is 1 - reflectance; its control line
+asks for eps = 1e-6, every factor, no enclosure adjustment.
 
 torus: the same floor and lamp, and a torus (major radius 0.8, minor 0.3,
 its axis tilted 30 degrees from the vertical, its centre 0.9 above the
@@ -129,8 +136,7 @@ def split(n, path, out, meshed):
             continue
 
         def at(s, t):
-            return tuple((1 - s) * (1 - t) * c[0][d] + s * (1 - t) * c[1][d] +
-                         s * t * c[2][d] + (1 - s) * t * c[3][d] for d in range(3))
+            return bilinear(c, s, t)
         for i in range(n):
             for j in range(n):
                 q = [at(i / n, j / n), at((i + 1) / n, j / n), at((i + 1) / n, (j + 1) / n),
@@ -138,12 +144,64 @@ def split(n, path, out, meshed):
                 out.write("quad %s  %s\n" % (mat, "  ".join("%.17g %.17g %.17g" % p for p in q)))
 
 
+def bilinear(c, s, t):
+    """The point (s, t) of the quad c, as mesh.c cuts a quad."""
+    return tuple((1 - s) * (1 - t) * c[0][d] + s * (1 - t) * c[1][d] +
+                 s * t * c[2][d] + (1 - s) * t * c[3][d] for d in range(3))
+
+
+def vs3(path, out):
+    reflect, faces = {}, []
+    for line in open(path):
+        w = line.split()
+        if not w or w[0].startswith("#"):
+            continue
+        if w[0] == "material":
+            reflect[w[1]] = float(w[w.index("reflect") + 1])
+        elif w[0] == "quad":
+            c = [tuple(float(x) for x in w[2 + 3 * k:5 + 3 * k]) for k in range(4)]
+            nu, nv = 1, 1
+            if "mesh" in w:
+                nu, nv = (int(x) for x in w[w.index("mesh") + 1].split("x"))
+            for i in range(nu):
+                for j in range(nv):
+                    faces.append((w[1], [bilinear(c, i / nu, j / nv),
+                                         bilinear(c, (i + 1) / nu, j / nv),
+                                         bilinear(c, (i + 1) / nu, (j + 1) / nv),
+                                         bilinear(c, i / nu, (j + 1) / nv)]))
+        elif w[0] == "polygon" and w[2] in ("3", "4"):
+            k = int(w[2])
+            faces.append((w[1], [tuple(float(x) for x in w[3 + 3 * i:6 + 3 * i])
+                                 for i in range(k)]))
+        elif w[0] not in ("camera",):
+            sys.stderr.write("scenes.py: vs3: cannot write '%s'\n" % w[0])
+            sys.exit(1)
+    out.write("T %s (bench/scenes.py vs3)\n" % path)
+    out.write("C eps=1e-6 maxU=8 maxO=8 minO=0 row=0 col=0 encl=0 emit=0 out=0 list=0\n")
+    out.write("F 3\n")
+    nv = 0
+    for _, pts in faces:
+        for p in pts:
+            nv += 1
+            out.write("V %d %.17g %.17g %.17g\n" % ((nv,) + p))
+    nv = 0
+    for k, (mat, pts) in enumerate(faces):
+        ids = list(range(nv + 1, nv + 1 + len(pts))) + [0] * (4 - len(pts))
+        nv += len(pts)
+        out.write("S %d %d %d %d %d 0 0 %.17g %s\n" % ((k + 1,) + tuple(ids) + (
+            1 - reflect[mat], mat)))
+    out.write("End of data\n")
+
+
 def main(argv):
-    kinds = ("squares", "torus", "torusbox", "split", "meshed")
+    kinds = ("squares", "torus", "torusbox", "split", "meshed", "vs3")
+    if len(argv) == 3 and argv[1] == "vs3":
+        vs3(argv[2], sys.stdout)
+        return 0
     if (len(argv) not in (3, 4) or argv[1] not in kinds or not argv[2].isdigit() or
             (len(argv) == 4) != (argv[1] in ("split", "meshed"))):
         sys.stderr.write("usage: scenes.py squares N | torus T | torusbox T | split N FILE | "
-                         "meshed N FILE\n")
+                         "meshed N FILE | vs3 FILE\n")
         return 2
     n = int(argv[2])
     if n < 1:
