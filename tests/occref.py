@@ -180,6 +180,12 @@ CASES = [
      (0.3, 0.7, 0.3, 0.7), 1, 0.5, 1, [(0, 0)], "fan"),
     ("small elements in a penumbra, the blocker as a fan", (0, 1, 0, 1), (0, 1, 0, 1),
      (0.375, 1.5, -0.5, 0.625), 1, 0.5, 4, [(0, 8), (9, 6)], "fan"),
+    # ... and as a tent of triangles turned one way, its apex raised: its
+    # spokes and apex inside the union of the shadows (occmesh.c)
+    ("centred blocker as a tent of triangles", (0, 1, 0, 1), (0, 1, 0, 1),
+     (0.3, 0.7, 0.3, 0.7), 1, 0.5, 1, [(0, 0)], "tent"),
+    ("small elements in a penumbra, the blocker as a tent", (0, 1, 0, 1), (0, 1, 0, 1),
+     (0.375, 1.5, -0.5, 0.625), 1, 0.5, 4, [(0, 8), (9, 6)], "tent"),
     # ... and as separate quadrilaterals, a grid beside a T junction:
     # coplanar neighbours merged into patches (occflat.c)
     ("off-centre blocker as tiles", (0, 1, 0, 1), (0, 1, 0, 1), (0.55, 1.15, 0.1, 0.45), 1, 0.4,
@@ -218,11 +224,34 @@ def fan(z, r):
     return "\n".join(out) + "\n"
 
 
+def tent(z, r):
+    """rectangle r in plane z as eight triangles about an inner point
+    raised towards +z by h, all turned one way (facing +z).  It hides
+    exactly what the flat rectangle hides: a segment from E (z = 0) to R
+    (z = H = 1) rises at least 1/sqrt(2) per unit across (both are unit
+    squares over one another), the tent's faces at most h over the
+    apex's distance to the rim, 0.37 of the width: with h = 0.05 of the
+    width, 0.135.  A segment crossing z = zb outside r is then above the
+    tent's height wherever it is over r, and one crossing inside r is
+    below the tent there and above it at R: it crosses the tent."""
+    x0, x1, y0, y1 = r
+    xm, ym = (x0 + x1) / 2, (y0 + y1) / 2
+    ring = [(x0, y0), (xm, y0), (x1, y0), (x1, ym), (x1, y1), (xm, y1), (x0, y1), (x0, ym)]
+    w = min(x1 - x0, y1 - y0)
+    apex = (x0 + 0.37 * (x1 - x0), y0 + 0.61 * (y1 - y0), z + 0.05 * w)
+    out = []
+    for k in range(8):
+        t = [apex, ring[k] + (z,), ring[(k + 1) % 8] + (z,)]
+        out.append("polygon m 3  " + "  ".join("%.17g %.17g %.17g" % p for p in t))
+    return "\n".join(out) + "\n"
+
+
 def scene(c):
     name, E, R, B, H, zb, mesh = c[:7]
     m = " mesh %dx%d" % (mesh, mesh) if mesh > 1 else ""
-    blocker = (fan(zb, B) if c[8:] == ("fan",) else tiles(zb, B) if c[8:] == ("tiles",)
-               else "quad m %s\n" % quad(zb, B, False))
+    kind = c[8] if len(c) > 8 else None
+    blocker = (fan(zb, B) if kind == "fan" else tent(zb, B) if kind == "tent"
+               else tiles(zb, B) if kind == "tiles" else "quad m %s\n" % quad(zb, B, False))
     return ("material m reflect 0.5 emit 1\nquad m %s%s\nquad m %s%s\n%s"
             % (quad(0, E, True), m, quad(H, R, False), m, blocker))
 

@@ -11,6 +11,7 @@ src_libradcore_la_SOURCES += \
 	%reldir%/occhidden.c \
 	%reldir%/occleaves.c \
 	%reldir%/occlusion.c %reldir%/occlusion.h \
+	%reldir%/occmesh.c \
 	%reldir%/occpoint.c \
 	%reldir%/occrule.c \
 	%reldir%/occshaft.c \

@@ -189,13 +189,18 @@ static int cut_set(occ_space *sp, const pair_ctx *c, int e, int slivers, polyset
 
 /* Split sp->dom along the planes through an edge of e and a vertex of f
  * (kind OCC_EVENT_EV when e is the blocker, OCC_EVENT_VE when e is the
- * inner element: their wedges, occevent.c). */
+ * inner element: their wedges, occevent.c), but for the blocker's edges
+ * or vertices that `flag` (its sp->mflag) puts inside the union of the
+ * shadows. */
 static int split_edge_vertex(occ_space *sp, const pair_ctx *c, const rad_vec3 *e, int ne,
-                             const rad_vec3 *f, int nf, int kind, int whole)
+                             const rad_vec3 *f, int nf, int kind, int whole, const int *flag)
 {
     for (int k = 0; k < ne; k++)
         for (int l = 0; l < nf && sp->dom.np > 0; l++) {
             rad_vec3 nrm;
+            if (flag && (kind == OCC_EVENT_EV ? flag[k] & OCC_MESH_EDGE
+                                              : flag[l] & OCC_MESH_VERTEX))
+                continue; /* inside the union of the shadows (occmesh.c) */
             occ_wedge w;
             if (!poly_edge_plane(e, ne, k, f[l], &nrm))
                 continue;
@@ -246,21 +251,30 @@ static int near_outer(const pair_ctx *c, const rad_vec3 *p, int n, rad_vec3 o0, 
  * through three edges form a ruled quadric, not a plane) trace conics on
  * the outer element; occeee.c cuts them by chords. */
 /* The planes through an edge of blocker a and a vertex of blocker b that
- * cross the inner element (sp->d holds c->nt distances). */
+ * cross the inner element (sp->d holds c->nt distances), but where the
+ * edge or the vertex is inside the union of the shadows (occmesh.c): the
+ * other's shadow passing it changes nothing of the union's boundary.
+ * With c->pair_wedges a piece is cut only where the event happens (the
+ * BB wedges of occevent.c). */
 static int split_blocker_pair(occ_space *sp, const pair_ctx *c, int a, int b)
 {
     const rad_vec3 *pa = sp->blkc.v + sp->blkc.first[a];
     const rad_vec3 *pb = sp->blkc.v + sp->blkc.first[b];
     const int na = sp->blkc.first[a + 1] - sp->blkc.first[a];
     const int nb = sp->blkc.first[b + 1] - sp->blkc.first[b];
+    const int *fa = sp->mflag + sp->blkc.first[a], *fb = sp->mflag + sp->blkc.first[b];
     for (int k = 0; k < na; k++)
         for (int l = 0; l < nb && sp->dom.np > 0; l++) {
             rad_vec3 nrm;
             double lo, hi;
-            if (!poly_edge_plane(pa, na, k, pb[l], &nrm))
+            if ((fa[k] & OCC_MESH_EDGE) || (fb[l] & OCC_MESH_VERTEX) ||
+                !poly_edge_plane(pa, na, k, pb[l], &nrm))
                 continue;
             poly_distances(c->t, c->nt, nrm, pa[k], c->snap, sp->d, &lo, &hi);
-            if (lo < 0 && hi > 0 && occ_split_dom(sp, c, nrm, pa[k], NULL, c->sliver))
+            occ_wedge w;
+            occ_event_wedge(&w, OCC_EVENT_BB, nrm, pa[k], pa[(k + 1) % na], pb[l]);
+            w.always = c->pair_wedges;
+            if (lo < 0 && hi > 0 && occ_split_dom(sp, c, nrm, pa[k], &w, c->sliver))
                 return -1;
         }
     return 0;
@@ -293,8 +307,12 @@ static int split_two_blockers(occ_space *sp, const pair_ctx *c)
  * trusted; a penumbra narrower than the spacing of the points no longer
  * hides between them.  With
  * c->events OCC_SPLIT_WEDGES a piece is cut only where the plane's event
- * of a blocker and the inner element happens (occevent.c); the blocker's
- * own plane and the two-blocker planes are always cut. */
+ * of a blocker and the inner element happens (occevent.c); with
+ * c->pair_wedges the two-blocker planes are cut only where theirs does;
+ * the blocker's own plane is always cut.  The events of
+ * blocker edges and vertices inside the union of the shadows from the
+ * whole outer element (the inside of a triangulated model: occmesh.c)
+ * never happen, and are not cut. */
 static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no)
 {
     if (occ_dom_spheres(sp))
@@ -302,14 +320,17 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
     double size = 0; /* of the outer element, from its first vertex */
     for (int k = 1; k < no; k++)
         size = fmax(size, v3_norm(v3_sub(o[k], o[0])));
+    if (occ_mesh_interior(sp, c, o, no))
+        return -1;
     for (int b = 0; b < c->nb && sp->dom.np > 0; b++) {
         const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
         int np = sp->blkc.first[b + 1] - sp->blkc.first[b];
+        const int *flag = sp->mflag + sp->blkc.first[b];
         const int whole = c->events == OCC_SPLIT_WEDGES &&
                           near_outer(c, p, np, o[0], OCC_NEAR_OUTER * size);
         if (occ_split_dom(sp, c, sp->bn[b], p[0], NULL, c->sliver) ||
-            split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV, whole) ||
-            split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE, whole))
+            split_edge_vertex(sp, c, p, np, c->t, c->nt, OCC_EVENT_EV, whole, flag) ||
+            split_edge_vertex(sp, c, c->t, c->nt, p, np, OCC_EVENT_VE, whole, flag))
             return -1;
     }
     if (split_two_blockers(sp, c))

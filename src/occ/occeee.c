@@ -776,13 +776,15 @@ int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, i
             const rad_vec3 *pb = sp->blkc.v + sp->blkc.first[b];
             const int na = sp->blkc.first[a + 1] - sp->blkc.first[a];
             const int nb = sp->blkc.first[b + 1] - sp->blkc.first[b];
+            const int *fa = sp->mflag + sp->blkc.first[a], *fb = sp->mflag + sp->blkc.first[b];
             for (int i = 0; i < na; i++) {
                 const rad_vec3 a0 = pa[i], a1 = pa[(i + 1) % na];
-                if (!edge_in_shaft(sp, c, a0, a1))
+                if ((fa[i] & OCC_MESH_EDGE) || !edge_in_shaft(sp, c, a0, a1))
                     continue;
                 for (int j = 0; j < nb; j++) {
                     const rad_vec3 b0 = pb[j], b1 = pb[(j + 1) % nb];
-                    if (share_end(a0, a1, b0, b1, c->snap) || !edge_in_shaft(sp, c, b0, b1))
+                    if ((fb[j] & OCC_MESH_EDGE) || share_end(a0, a1, b0, b1, c->snap) ||
+                        !edge_in_shaft(sp, c, b0, b1))
                         continue;
                     for (int k = 0; k < c->nt && sp->dom.np > 0; k++)
                         if (cut_triple(sp, c, o, no, a0, a1, b0, b1, c->t[k],

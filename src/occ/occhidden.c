@@ -567,9 +567,13 @@ static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_
  * blockers, or where the first try struggled, every plane is cut.
  * Reference mode always cuts every plane: before occeee.c cut the events
  * of three edges, 38 entries of the 6x6 closed Cornell box moved by more
- * than both runs' estimates with the wedges only.  A pair whose chords
- * of occeee.c left lenses wider than its value needs (narrower_arcs) is
- * done once more with narrower ones. */
+ * than both runs' estimates with the wedges only.  Default mode cuts the
+ * planes of two blockers' events only where they happen (c.pair_wedges,
+ * occevent.c's BB wedges) on its first try, whatever the number of
+ * blockers: those planes are most of a triangulated model's pieces.  A
+ * pair that misses its target so is done again with every plane cut.  A
+ * pair whose chords of occeee.c left lenses wider than its value needs
+ * (narrower_arcs) is done once more with narrower ones. */
 static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
                            const rad_ff_poly *pj, int outer_i, double s, double rel,
                            orient_result *res)
@@ -596,6 +600,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
                : o->accuracy == RAD_ACCURACY_DEFAULT && kept <= OCC_WEDGE_BLOCKERS
                    ? OCC_SPLIT_WEDGES
                    : OCC_SPLIT_ALL;
+    c.pair_wedges = o->accuracy == RAD_ACCURACY_DEFAULT;
     c.order = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ORDER_REFERENCE
               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
                                                     : 0;
@@ -607,8 +612,9 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     sp->arc_left = 0;
     if (domain_integral(o, sp, &c, co, no, s, rel, budget, res, &met))
         return -1;
-    if (!met && c.events == OCC_SPLIT_WEDGES) {
+    if (!met && (c.events == OCC_SPLIT_WEDGES || c.pair_wedges)) {
         c.events = OCC_SPLIT_ALL;
+        c.pair_wedges = 0;
         sp->arc_left = 0; /* the lenses of the domain kept */
         if (try_again(o, sp, &c, co, no, s, rel, before, 1, res, &met))
             return -1;

@@ -35,8 +35,10 @@
  * 3-point rule on each fan triangle) and stops.  Default and reference
  * cut the pieces along the event planes of each blocker (occdomain.c,
  * split_events; in default mode only where the events happen
- * (occevent.c) for a pair with few blockers that meets its target so;
- * occhidden.c, orient_integral), integrate with Gauss product rules of
+ * (occevent.c) for a pair with few blockers, and the events of two
+ * blockers only where they happen for every pair, when the pair meets
+ * its target so; occhidden.c, orient_integral; never along the events
+ * of a triangulated model's inside, occmesh.c), integrate with Gauss product rules of
  * rising order on quadrilateral and triangular cells (occrule.c; up to
  * OCC_ORDER_DEFAULT / OCC_ORDER_REFERENCE) and split cells where the
  * order does not help, until the estimated error is

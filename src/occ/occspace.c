@@ -148,6 +148,10 @@ void occ_space_free(occ_space *sp)
     free(sp->ehash);
     free(sp->ccut);
     free(sp->seg);
+    free(sp->mflag);
+    free(sp->mside);
+    free(sp->medge);
+    free(sp->mends);
     memset(sp, 0, sizeof *sp);
 }
 

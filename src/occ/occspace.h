@@ -295,6 +295,18 @@ typedef struct occ_space {
     int capccut;
     rad_vec3 *seg;              /* the union's boundary: pairs of ends */
     int capseg, nseg;
+    int *mflag;                 /* each vertex of blkc: OCC_MESH_EDGE when the
+                                   edge from it is inside the union of the
+                                   shadows for the whole outer element,
+                                   OCC_MESH_VERTEX when it is (occmesh.c) */
+    int capmflag;
+    int *mside;                 /* each clipped blocker: the side of it the
+                                   outer element lies on, or 0 */
+    int capmside;
+    struct mesh_edge *medge;    /* blkc's edges by their ends (occmesh.c) */
+    int capmedge;
+    rad_vec3 *mends;            /* the ends of its boundary edges */
+    int capmends;
 } occ_space;
 
 /* What an evaluation needs: the outer element's normal, the inner element
@@ -314,6 +326,8 @@ typedef struct pair_ctx {
                                    0 not at all (classic), OCC_SPLIT_ALL along
                                    each plane, OCC_SPLIT_WEDGES only where its
                                    event happens (occevent.c) */
+    int pair_wedges;            /* cut the planes of two blockers' events
+                                   only where they happen (occevent.c) */
     int direct;                 /* evaluate visible(x), not hidden(x) (occpoint.c) */
     int order;                  /* the rule on a cell (occrule.c): 0 the
                                    3-point rule, k >= 2 the k x k Gauss
@@ -333,12 +347,17 @@ enum { OCC_SPLIT_ALL = 1, OCC_SPLIT_WEDGES = 2 };
  * plane's part inside n half-spaces, each with inward unit normal m[h]
  * through a[h]. */
 typedef struct occ_wedge {
-    rad_vec3 m[3], a[3];
+    rad_vec3 m[4], a[4];
     int n;
+    int split;                  /* two wedges: half-spaces [0, split) and
+                                   [split, n) (OCC_EVENT_BB); else n */
+    int always;                 /* in force with c->events OCC_SPLIT_ALL too */
 } occ_wedge;
 
-enum { OCC_EVENT_EV, OCC_EVENT_VE };  /* blocker edge and inner vertex, or
-                                          inner edge and blocker vertex */
+enum { OCC_EVENT_EV, OCC_EVENT_VE, OCC_EVENT_BB };  /* blocker edge and inner vertex,
+                                          inner edge and blocker vertex, or
+                                          an edge of one blocker and a
+                                          vertex of another */
 
 /* ---- across the files (each described where it is defined) ------------ */
 
@@ -401,8 +420,15 @@ void occ_event_wedge(occ_wedge *w, int kind, rad_vec3 nrm, rad_vec3 e0, rad_vec3
                      rad_vec3 f);
 int occ_event_misses(const occ_wedge *w, const rad_vec3 *p, const double *d, int n, double tol);
 
-/* occeee.c: the events of three edges, cut by chords */
+/* occeee.c: the events of three edges, cut by chords (but for the
+ * blocker edges sp->mflag marks inside the union: occmesh.c first) */
 int occ_split_three_edges(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+
+/* occmesh.c: sp->mflag for the pair's clipped blockers (sp->blkc) seen
+ * from the outer element o (no vertices): the edges and vertices that
+ * take part in no event.  0 or -1 (out of memory). */
+enum { OCC_MESH_EDGE = 1, OCC_MESH_VERTEX = 2 };
+int occ_mesh_interior(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
 
 /* occpoint.c: hidden(x) */
 int occ_hidden_at(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);

@@ -101,7 +101,7 @@ int occ_split_dom(occ_space *sp, const pair_ctx *c, rad_vec3 nrm, rad_vec3 a,
         poly_distances(p, n, nrm, a, c->snap, sp->d, &lo, &hi);
         poly_settle_signs(sp->d, n, &lo, &hi);
         if (lo >= 0 || hi <= 0 ||
-            (w && c->events == OCC_SPLIT_WEDGES && occ_event_misses(w, p, sp->d, n, c->snap))) {
+            (w && (c->events == OCC_SPLIT_WEDGES || w->always) && occ_event_misses(w, p, sp->d, n, c->snap))) {
             if (push_db(sp, p, n, sp->pcen[k], sp->prad[k]))
                 return -1;
             continue;
