@@ -1,7 +1,7 @@
 /* solve_cube.c -- the library in thirty lines: load the 1984 cube, solve
  * it, print the radiosity of the element at the centre of each wall.
  * Build: cc solve_cube.c $(pkg-config --cflags --libs radiosity)
- * Run:   ./a.out [SCENE]   (default: the cube as installed)
+ * Run:   ./a.out [SCENE]   (default: the cube as installed, from any folder)
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING. */
 #include <stdio.h>
 
@@ -10,7 +10,9 @@
 
 int main(int argc, char **argv)
 {
-    const char *path = argc > 1 ? argv[1] : "goral1984-cube.scene";
+    char cube[4096];
+    snprintf(cube, sizeof cube, "%s/goral1984-cube.scene", rad_scene_dir());
+    const char *path = argc > 1 ? argv[1] : cube;
     rad_scene scene;
     rad_pipeline_options opt;
     rad_result res;

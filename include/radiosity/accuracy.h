@@ -40,8 +40,8 @@ RAD_API rad_status rad_scene_closed(const rad_scene *scene, double tol, int *clo
  * area-weighted over the truth's elements,
  *     rms = sqrt( sum_f A_f sum_b (B_c(f) - B_f)^2 / (3 sum_f A_f) ),
  * the band-averaged mean square (Cohen et al. 1988, eq. 14, per band and
- * pooled; rmserror.h's radi_rms_eq14 averages the bands' radiosity first,
- * as `progress` reports it: the two agree on grey scenes), and *max is
+ * pooled; `radiosity progress` averages the bands' radiosity first and
+ * then takes eq. 14: the two agree on grey scenes), and *max is
  * the largest |B_c(f) - B_f| over elements and bands. */
 RAD_API void rad_solution_error(const rad_mesh *c, const double *Bc, const rad_mesh *t,
                                 const double *Bt, const double truth[RAD_BANDS], double *rms,

@@ -1,4 +1,4 @@
-/* animate.h -- scenes that change: radiosity redistribution (animate.c).
+/* animate.h -- scenes that change: radiosity redistribution.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -11,7 +11,7 @@
  * can alter, in place, and redistributes the energy that earlier shots
  * sent along them (positive toward what became visible, negative toward
  * what became hidden), then propagates by shooting, both signs, until the
- * unshot power is below the tolerance.  animate.c says how.
+ * unshot power is below the tolerance.  radiosity(3) says how.
  *
  * Units and conventions are those of radiosity.h.  Element indices are
  * those of the mesh of every surface, absent objects' included
@@ -80,7 +80,7 @@ typedef struct rad_anim_options {
                                    objects (section 4), shooters only */
     int converge_last;          /* 1: with steps, the last frame of the change
                                    file is converged all the same (the log's
-                                   final pass, animlog.c) */
+                                   final pass) */
     long max_shots;             /* per frame before RAD_ERR_NOCONV (default
                                    1000 n + 100000) */
     rad_anim_shot_fn on_shot;   /* may be NULL */
@@ -131,7 +131,7 @@ RAD_API rad_status rad_anim_next(rad_anim *anim, const rad_changes *changes,
                                  rad_anim_report *rep, rad_error *err);
 RAD_API void rad_anim_free(rad_anim *anim);
 
-/* The change log (animlog.c, George et al. 1990, Fig. 5): the state the
+/* The change log (George et al. 1990, Fig. 5): the state the
  * next frame needs, written as text to `out` (RAD_ERR_IO on a write
  * error).  rad_anim_resume reads it back from `log` (`logname` for
  * messages, RAD_ERR_PARSE naming its line) for the same scene and change
@@ -161,7 +161,7 @@ RAD_API const double *rad_anim_radiosity(const rad_anim *anim);
 RAD_API rad_status rad_anim_present_result(const rad_anim *anim, rad_mesh *mesh, double **B,
                                            rad_error *err);
 
-/* The error of George et al. 1990, eq. 7 (animerror.c): sum_i A_i |Y_i -
+/* The error of George et al. 1990, eq. 7: sum_i A_i |Y_i -
  * Yref_i| / sum_i A_i Yref_i over the elements i with mask[i] (NULL: all
  * n), Y = 0.2126 R + 0.7152 G + 0.0722 B (ITU-R BT.709 luminance of linear
  * RGB).  B and Bref are n x RAD_BANDS. */

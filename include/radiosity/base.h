@@ -44,7 +44,7 @@ extern "C" {
 
 #define RAD_BANDS 3
 
-/* ---- status and errors ------------------------------------------------ */
+/* ---- status and errors -------------------------------------------------- */
 
 typedef enum rad_status {
     RAD_OK = 0,
@@ -67,13 +67,22 @@ typedef struct rad_error {
 /* A short English name of a status ("singular system", ...). */
 RAD_API const char *rad_strstatus(rad_status status);
 
+/* ---- the library -------------------------------------------------------- */
+
+/* The library's version, as configure was given it ("0.1.0"): the same
+ * as `radiosity --version` and `pkg-config --modversion radiosity`. */
+RAD_API const char *rad_version(void);
+/* The folder where `make install` put the shipped scenes (the 1984 cube
+ * is goral1984-cube.scene there), without a trailing slash. */
+RAD_API const char *rad_scene_dir(void);
+
 /* ---- geometry ----------------------------------------------------------- */
 
 typedef struct rad_vec3 {
     double x, y, z;
 } rad_vec3;
 
-/* ---- memory (sysmem.c) ------------------------------------------------- */
+/* ---- memory ------------------------------------------------------------- */
 
 /* Bytes of memory available now (Linux MemAvailable), 0 if unknown. */
 RAD_API double rad_memory_available(void);

@@ -1,4 +1,4 @@
-/* changes.h -- the change file of `radiosity animate` (changeread.c).
+/* changes.h -- the change file of `radiosity animate`.
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -72,9 +72,9 @@ RAD_API rad_status rad_changes_parse(rad_changes *changes, const rad_scene *scen
                                      rad_error *err);
 RAD_API void rad_changes_free(rad_changes *changes);
 
-/* Apply the changes of frame `frame` to `scene` in place, in file order
- * (changeapply.c): vertices moved or turned, objects' absent flags set,
- * materials replaced.  dirty (nobjects entries, may be NULL) gets 1 for
+/* Apply the changes of frame `frame` to `scene` in place, in file order:
+ * vertices moved or turned, objects' absent flags set, materials
+ * replaced.  dirty (nobjects entries, may be NULL) gets 1 for
  * each object moved, turned, added or removed. */
 RAD_API void rad_changes_apply(rad_scene *scene, const rad_changes *changes, int frame,
                                unsigned char *dirty);

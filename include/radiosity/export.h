@@ -2,9 +2,10 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * Every writer prints to an open stream (the caller makes it atomic with
- * atomicfile.h) and returns 0, or -1 on a write error.  Numbers that a
- * validator may read back are printed with %.17g (round-trip exact).
+ * Every writer prints to an open stream (the caller makes the file whole
+ * or absent, by writing a temporary file and renaming it) and returns 0,
+ * or -1 on a write error.  Numbers that a validator may read back are
+ * printed with %.17g (round-trip exact).
  */
 #ifndef RAD_EXPORT_H
 #define RAD_EXPORT_H
@@ -53,14 +54,14 @@ RAD_API int rad_export_matrix_market(FILE *out, const double *F, int n, const ch
  * format in parallel (OpenMP) and write the bytes the serial printf loop
  * wrote. */
 RAD_API int rad_export_ff_table(FILE *out, const double *F, const double *E, int n);
-/* Surface-to-surface form factors (persurface.h), every ordered pair S, K
+/* Surface-to-surface form factors, every ordered pair S, K
  * including S = K: header "S K F error S_line K_line S_area"; S and K are
  * 0-based surface indices in file order, S_line and K_line the scene-file
  * lines that define them, error the area-weighted sum of the elements'
  * error estimates (ES may be NULL: "nan"), S_area = A_S. */
 RAD_API int rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *mesh,
                              const double *FS, const double *ES, const double *AS);
-/* NumPy .npy, version 1.0 (npy.c): a rows x cols column-major matrix as
+/* NumPy .npy, version 1.0: a rows x cols column-major matrix as
  * float64 '<f8' with 'fortran_order': True and the shape in the header,
  * the data 64-byte aligned; numpy.load(path)[i, j] = A[i + j*rows]. */
 RAD_API int rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols);

@@ -16,7 +16,7 @@
 extern "C" {
 #endif
 
-/* ---- form factors (the pair: src/ff/; polygons and matrices: src/fill/) - */
+/* ---- form factors ------------------------------------------------------ */
 
 typedef enum rad_accuracy {
     RAD_ACCURACY_CLASSIC = 0,   /* Goral et al. 1984: K Gauss points per edge,
@@ -95,9 +95,9 @@ typedef struct rad_ff_stats {
                                    impossible (energy from nowhere) */
     int vis_needed;             /* 0: nothing can be blocked, no visibility work */
     double vis_pairs_tested, vis_pairs_blockable, vis_pairs_blocked, vis_pairs_partial;
-    double vis_seconds;         /* visibility setup + thread time (occlusion.h) */
+    double vis_seconds;         /* visibility setup + thread time */
     double clamped_to_one;      /* pairs whose value exceeded 1 one way by no more
-                                   than its error bound, set to 1 (formfactor.c) */
+                                   than its error bound, set to 1 */
 } rad_ff_stats;
 
 /* All form factors of a mesh: F is n x n column-major, F[i + j*n] = F_ij,
@@ -119,7 +119,7 @@ RAD_API const double *rad_gauss_weights(int k);
  * the same unit direction (d = 0: colinear). */
 RAD_API double rad_ln_parallel(double a1, double a2, double b1, double b2, double d);
 
-/* ---- closed forms (analytic.c) ------------------------------------------ */
+/* ---- closed forms ------------------------------------------------------- */
 
 /* Differential area to a coaxial parallel disk of radius r at distance h. */
 RAD_API double rad_analytic_point_disk(double r, double h);

@@ -16,7 +16,7 @@
 extern "C" {
 #endif
 
-/* ---- mesh (mesh.c) ------------------------------------------------------ */
+/* ---- mesh --------------------------------------------------------------- */
 
 typedef struct rad_element {
     int surface;                /* index of the scene surface it came from */
@@ -53,14 +53,14 @@ RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
  * any int), without meshing. */
 RAD_API double rad_scene_element_count(const rad_scene *scene);
 
-/* ---- vertex radiosity (smooth.c) ---------------------------------------- */
+/* ---- vertex radiosity --------------------------------------------------- */
 
 /* Vertex radiosity from element radiosity (Goral et al. 1984, section 3;
  * Gouraud 1971), never across surfaces.  B is nelements x RAD_BANDS and Bv
  * nvertices x RAD_BANDS, both column-major. */
 RAD_API void rad_smooth_vertices(const rad_mesh *mesh, const double *B, double *Bv);
 
-/* How a vertex on a surface's boundary gets its value (smooth.c):
+/* How a vertex on a surface's boundary gets its value:
  * EXTRAPOLATE is the 1984 paper's linear extrapolation (the default, what
  * rad_smooth_vertices does); CORNER is the course notes' rule, where the
  * mean of a boundary vertex and its nearest interior vertex equals the

@@ -39,7 +39,7 @@ typedef struct rad_pipeline_options {
                                    needs the dense matrix) */
     rad_matrix_mode matrix;     /* stored F or not (default auto) */
     rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
-                                     (smooth.c; default: extrapolate) */
+                                     (default: extrapolate) */
 } rad_pipeline_options;
 
 RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);
@@ -65,7 +65,7 @@ typedef struct rad_result {
     int *level;                 /* --adaptive: each element's level of
                                    subdivision (0: a starting element), else
                                    NULL; the mesh is then the conforming mesh
-                                   of the leaves (adaptmesh.h) */
+                                   of the leaves */
     int splits;                 /* --adaptive: elements split */
 } rad_result;
 

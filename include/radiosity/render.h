@@ -32,7 +32,7 @@ extern "C" {
  * Faces are convex planar polygons whose vertices run counter-clockwise
  * about their front (the side drawn).  A 4-vertex face is a quad element:
  * its corners 0 1 2 3 are (u,v) = (0,0) (1,0) (1,1) (0,1) of its bilinear
- * parameterisation, as in mesh.c. */
+ * parameterisation, as the mesh cuts a quadrilateral. */
 typedef struct rad_render_model {
     int nvertices;
     rad_vec3 *pos;              /* vertex positions */

@@ -1,4 +1,4 @@
-/* radiosity/scene.h -- the scene: surfaces, materials, objects, camera (scene.c).
+/* radiosity/scene.h -- the scene: surfaces, materials, objects, camera.
  *
  * Copyright (C) 2026 The radiosity authors.
  * This program is free software: you can redistribute it and/or modify it
@@ -16,7 +16,7 @@
 extern "C" {
 #endif
 
-/* ---- scene (scene.c) ---------------------------------------------------- */
+/* ---- scene -------------------------------------------------------------- */
 
 #define RAD_NAME_MAX 64
 
@@ -82,7 +82,7 @@ RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t le
 RAD_API void rad_scene_free(rad_scene *scene);
 /* Override the mesh of every quad (the --mesh option). */
 RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
-/* 1 if some surface belongs to an absent object (scenepresent.c). */
+/* 1 if some surface belongs to an absent object. */
 RAD_API int rad_scene_has_absent(const rad_scene *scene);
 /* A copy of the scene with only the present surfaces, in file order:
  * present[o] (nobjects entries) says which objects are in, or, when

@@ -16,7 +16,7 @@
 extern "C" {
 #endif
 
-/* ---- the radiosity system (solve.c) ------------------------------------- */
+/* ---- the radiosity system ----------------------------------------------- */
 
 /* For each band b: (I - diag(rho_b) F) B_b = E_b (Goral et al. 1984,
  * eq. 6-7).  B and E are n x RAD_BANDS column-major: B[e + b*n]. */
@@ -25,10 +25,10 @@ typedef enum rad_solver {
     RAD_SOLVER_GAUSS = 0,       /* LU with partial pivoting (LAPACK dgesv) */
     RAD_SOLVER_JACOBI,
     RAD_SOLVER_GAUSS_SEIDEL,
-    RAD_SOLVER_PROGRESSIVE,     /* shooting, Cohen et al. 1988 (progressive.c) */
-    RAD_SOLVER_CHOLESKY,        /* the symmetric form, LAPACK dpotrf (cholesky.c);
+    RAD_SOLVER_PROGRESSIVE,     /* shooting, Cohen et al. 1988 */
+    RAD_SOLVER_CHOLESKY,        /* the symmetric form, LAPACK dpotrf;
                                    LU where it is not positive definite */
-    RAD_SOLVER_CG               /* conjugate gradients on the symmetric form (cg.c) */
+    RAD_SOLVER_CG               /* conjugate gradients on the symmetric form */
 } rad_solver;
 
 /* One step of progressive refinement, for a trace (rad_solve_options.on_shot). */

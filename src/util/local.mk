@@ -1,4 +1,4 @@
-## src/util/local.mk -- the util module: errors, vectors, polygons, line and number readers, memory limits, exact printing.
+## src/util/local.mk -- the util module: errors, vectors, polygons, line and number readers, memory limits, exact printing, the version.
 ## Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 ## Included by Makefile.am; %reldir% is this folder.
 
@@ -15,4 +15,5 @@ src_libradcore_la_SOURCES += \
 	%reldir%/status.c %reldir%/status.h \
 	%reldir%/sysmem.c \
 	%reldir%/vec.h \
-	%reldir%/vecmath.h
+	%reldir%/vecmath.h \
+	%reldir%/version.c

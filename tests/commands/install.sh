@@ -29,6 +29,20 @@ ok $? "the example builds with pkg-config's flags alone $(head -c 300 "$work/cc.
 libdir=$(pkg-config --variable=libdir radiosity)
 LD_LIBRARY_PATH="$libdir" "$work/solve_cube" "$top_srcdir/data/goral1984-cube.scene" > "$work/out"
 [ $? -eq 0 ] && [ "$(wc -l < "$work/out")" -eq 7 ]; ok $? "and runs against the installed library"
+# rad_version() is configure's version, as the .pc file says it (two
+# substitutions of one value, made apart); rad_scene_dir() is where the
+# scenes went, and the installed example builds and runs from elsewhere
+printf '#include <stdio.h>\n#include <radiosity.h>\nint main(void) { printf("%%s\\n%%s\\n", rad_version(), rad_scene_dir()); return 0; }\n' > "$work/ver.c"
+${CC:-cc} ${RADIOSITY_SANITIZE-} -o "$work/ver" "$work/ver.c" $flags 2> "$work/cc.err" &&
+  LD_LIBRARY_PATH="$libdir" "$work/ver" > "$work/ver.out"
+ok $? "a program calling rad_version() and rad_scene_dir() builds and runs $(head -c 300 "$work/cc.err")"
+[ "$(sed -n 1p "$work/ver.out")" = "$have" ]
+ok $? "rad_version() is pkg-config's version ($(sed -n 1p "$work/ver.out"), $have)"
+[ -f "$stage$(sed -n 2p "$work/ver.out")/goral1984-cube.scene" ]
+ok $? "rad_scene_dir() names where make install put the scenes ($(sed -n 2p "$work/ver.out"))"
+example=$(find "$stage" -path '*/examples/solve_cube.c' | head -n 1)
+[ -n "$example" ] && ${CC:-cc} ${RADIOSITY_SANITIZE-} -o "$work/installed_example" "$example" $flags 2> "$work/cc.err"
+ok $? "the example is installed (${example#"$stage"}) and builds $(head -c 300 "$work/cc.err")"
 so=$(ls "$libdir"/libradiosity.so.* | head -n 1)
 nm -D --defined-only "$so" | awk '$2 != "A" { print $3 }' | sort -u > "$work/exported"
 incdir=$(pkg-config --variable=includedir radiosity)
@@ -68,4 +82,10 @@ for h in "$incdir/radiosity.h" "$incdir"/radiosity/*.h; do
   fi
 done
 [ -z "$bad" ]; ok $? "every installed header compiles alone in C and C++:${bad:- yes}"
+# the installed headers speak of the API, not of the sources behind it:
+# no .c file, no header but the public ones and the C library's
+cat "$incdir/radiosity.h" "$incdir"/radiosity/*.h | grep -o '[A-Za-z0-9_]*\.[ch]\b' |
+  grep -v -x -e 'radiosity\.h' -e 'std[a-z]*\.h' $(for h in "$incdir"/radiosity/*.h; do
+    printf -- '-e %s ' "$(basename "$h" | sed 's/\./\\./')"; done) | sort -u > "$work/named"
+[ ! -s "$work/named" ]; ok $? "the installed headers name no internal file:$(tr '\n' ' ' < "$work/named")"
 done_testing
