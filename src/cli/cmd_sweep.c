@@ -6,7 +6,8 @@
  * The truth B is, when the scene has one, the closed form: a closed scene
  * whose elements all share one reflectance and emission (the furnace) has
  * B = E / (1 - rho) on every element.  Otherwise it is the reference-mode
- * gauss solution on the finest mesh listed (or --truth-mesh).  A coarse
+ * gauss solution on a mesh twice as fine as the finest listed (or
+ * --truth-mesh, raised to the finest listed): never one of the rows.  A coarse
  * solution is compared with a fine truth element by element of the truth:
  * fine element (gi, gj) of an N x M surface lies in coarse element
  * (floor((gi + 1/2) n / N), floor((gj + 1/2) m / M)), so the error measures
@@ -86,12 +87,12 @@ static void help(void)
            "Measure the speed-accuracy trade: for each mesh, accuracy mode and solver,\n"
            "time the form factors and the solve, and measure the error of B against\n"
            "the best available truth (the closed form B = E/(1 - rho) for a closed\n"
-           "scene of one material; otherwise the reference-mode gauss solution on the\n"
-           "finest mesh).  The error is the area-weighted RMS of Cohen et al. 1988,\n"
-           "eq. 14, its squares averaged over the bands (progress's rms averages the\n"
-           "bands' radiosity first: the same on grey scenes), and the maximum, in\n"
-           "units of B.  Each time is the median of up to 9 runs, repeated while\n"
-           "they took less than 0.1 s in all.\n"
+           "scene of one material; otherwise the reference-mode gauss solution on a\n"
+           "mesh twice as fine as the finest swept).  The error is the area-weighted\n"
+           "RMS of Cohen et al. 1988, eq. 14, its squares averaged over the bands\n"
+           "(progress's rms averages the bands' radiosity first: the same on grey\n"
+           "scenes), and the maximum, in units of B.  Each time is the median of up\n"
+           "to 9 runs, repeated while they took less than 0.1 s in all.\n"
            "\n"
            "Options:\n"
            "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
@@ -102,7 +103,8 @@ static void help(void)
            "                          factors at these resolutions (even, 2-4096, e.g.\n"
            "                          16,32,64,128,256), and give every row the error of\n"
            "                          its F against the reference contour integral\n"
-           "      --truth-mesh N      mesh of the reference truth (default: finest)\n"
+           "      --truth-mesh N      mesh of the reference truth, at least the finest\n"
+           "                          swept (default: twice the finest swept)\n"
            "  -o, --output FILE       the table (TSV; default standard output)\n"
            "      --plot FILE.png     error against time, log-log, a curve per mode\n"
            "                          (accuracy or resolution) and solver, at most 24\n"
@@ -514,9 +516,15 @@ int cmd_sweep(int argc, char **argv)
     }
     rad_result truth;
     memset(&truth, 0, sizeof truth);
-    int finest = a.truth_mesh;
+    /* the truth's mesh: --truth-mesh, or twice the finest swept, so that
+     * no row is compared with itself (a truth on the finest mesh gave that
+     * row an error of 0 and bent every curve down to round-off at its end,
+     * as if that mesh were exact) */
+    int finest = 0;
     for (int k = 0; k < a.nmeshes; k++)
         finest = a.meshes[k] > finest ? a.meshes[k] : finest;
+    finest = a.truth_mesh ? (a.truth_mesh > finest ? a.truth_mesh : finest)
+                          : (2 * finest <= 1000 ? 2 * finest : 1000);
     int status = 1, nr = 0;
     row *rows = malloc(sizeof *rows * (size_t)a.nmeshes * (size_t)(a.nacc + a.nres) *
                        (size_t)a.nsolvers);

@@ -38,6 +38,19 @@ awk -F '\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
   END { exit bad || n != 4 }' "$work/c.tsv"
 ok $? "the closed cube's rows sum to 1 within each mode's promise (row_sum_min, row_sum_max)"
 
+# the truth is finer than every row: on the 1984 cube (no closed form),
+# meshes 1 and 2 are held against reference mode on 4 x 4, so the finest
+# row keeps its discretisation error (a piecewise-constant 2 x 2 solution
+# is no 4 x 4 one: percents, not the round-off a truth of its own mesh
+# gave it)
+"$RADIOSITY" sweep -q --meshes 1,2 --accuracies reference -o "$work/t.tsv" \
+  "$top_srcdir/data/goral1984-cube.scene"
+awk -F '\t' 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+  { n++; if ($c["truth"] != "reference-4x4") bad = 1
+    if ($c["mesh"] == "2x2" && !($c["rms_error"] > 1e-4)) bad = 1 }
+  END { exit bad || n != 2 }' "$work/t.tsv"
+ok $? "the truth is twice the finest mesh (reference-4x4), and the 2x2 row keeps its error ($(awk -F '\t' 'NR > 1 { printf "%s %s; ", $1, $8 }' "$work/t.tsv"))"
+
 "$RADIOSITY" sweep -q --meshes 1 --solvers gauss,lu "$scene" > "$work/o" 2> "$work/err"
 [ $? -eq 2 ] && grep -q 'cholesky' "$work/err"
 ok $? "an unknown solver is a usage error that lists the six"
