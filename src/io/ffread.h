@@ -8,7 +8,7 @@
  * (row i = from element i; doc/design.md, "Conventions").  The format is
  * told by the content, never by the name alone:
  *
- *   "\x93NUMPY"                 NumPy .npy, float64, 2-D, C or Fortran order
+ *   "\x93NUMPY"                 NumPy .npy, float64 or float32, 2-D, C or Fortran order
  *                               (npyread.c)
  *   "%%MatrixMarket matrix"     Matrix Market, `array real general` (what
  *                               --form-factors writes) or `coordinate real
@@ -39,8 +39,9 @@
 rad_status radi_ff_read(const char *path, int n, double *F, const char **format,
                        rad_error *err);
 
-/* NumPy .npy (npyread.c): a 2-D n x n float64 array. */
-rad_status radi_npy_read_square(const char *path, int n, double *F, rad_error *err);
+/* NumPy .npy (npyread.c): a 2-D n x n float64 or float32 array; *bits
+ * receives 64 or 32. */
+rad_status radi_npy_read_square(const char *path, int n, double *F, int *bits, rad_error *err);
 
 /* View3D's view-factor file (vfread.c): text (format 0) or binary
  * (format 1), as View3D 3.x's SaveVF writes them. */

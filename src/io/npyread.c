@@ -1,4 +1,4 @@
-/* npyread.c -- a square float64 matrix from NumPy's .npy format (ffread.h).
+/* npyread.c -- a square matrix from NumPy's .npy format (ffread.h).
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
@@ -7,15 +7,17 @@
  * 2-byte header length; 2.0 and 3.0 with a 4-byte one; all little-endian),
  * the header, a Python dict literal with the keys 'descr', 'fortran_order'
  * and 'shape', then the data.  Read here: descr '<f8' (float64
- * little-endian, what numpy.save writes on every common machine), both
- * orders, shape (N, N) with N the scene's element
- * count.  Anything else is refused with what the file holds (another
- * dtype, a big-endian '>f8', a 1-D or 3-D array, a non-square one), so
- * the user knows which numpy call to fix (`F.astype('<f8')`, ...).
+ * little-endian, what numpy.save writes on every common machine) or
+ * '<f4' (float32, what GPU solvers usually write; each value is then
+ * widened exactly, and the caller says the precision), both orders,
+ * shape (N, N) with N the scene's element count.  Anything else is
+ * refused with what the file holds (another dtype, a big-endian '>f8', a
+ * 1-D or 3-D array, a non-square one), so the user knows which numpy call
+ * to fix (`F.astype('<f8')`, ...).
  *
  * The dict is parsed by looking for each key, not by a Python parser: the
  * values this reader accepts have one spelling each.  The data must be
- * exactly N * N * 8 bytes; the file is read in one pass with fread, its
+ * exactly N * N * 8 (or 4) bytes; the file is read in one pass with fread, its
  * length checked before the allocation is trusted (the caller allocated
  * n * n for the scene's n, so a lying shape cannot make us allocate).
  */
@@ -72,9 +74,9 @@ static int shape(const char *s, long long dim[3])
     }
 }
 
-/* Check the dict h: descr '<f8', an order, shape (n, n).  *fortran
- * receives the order. */
-static rad_status check_dict(const char *path, const char *h, int n, int *fortran,
+/* Check the dict h: descr '<f8' or '<f4', an order, shape (n, n).
+ * *fortran receives the order, *bits 64 or 32. */
+static rad_status check_dict(const char *path, const char *h, int n, int *fortran, int *bits,
                              rad_error *err)
 {
     const char *d = dict_value(h, "'descr'"), *o = dict_value(h, "'fortran_order'");
@@ -82,12 +84,13 @@ static rad_status check_dict(const char *path, const char *h, int n, int *fortra
     if (!d || !o || !s)
         return radi_fail(err, RAD_ERR_PARSE, "%s: .npy header lacks descr, fortran_order or "
                                             "shape", path);
-    if (strncmp(d, "'<f8'", 5) != 0) {
+    *bits = strncmp(d, "'<f8'", 5) == 0 ? 64 : strncmp(d, "'<f4'", 5) == 0 ? 32 : 0;
+    if (!*bits) {
         int k = 0;
         while (d[k] && d[k] != ',' && k < 20)
             k++;
         return radi_fail(err, RAD_ERR_PARSE, "%s: .npy dtype %.*s; form factors must be "
-                        "float64 little-endian ('<f8')", path, k, d);
+                        "float64 or float32, little-endian ('<f8', '<f4')", path, k, d);
     }
     if (strncmp(o, "True", 4) != 0 && strncmp(o, "False", 5) != 0)
         return radi_fail(err, RAD_ERR_PARSE, "%s: .npy fortran_order is neither True nor "
@@ -134,6 +137,26 @@ static void from_le(double *x, size_t m)
 #endif
 }
 
+/* float32 little-endian, read into the upper half of F's bytes, widened
+ * in place to the m doubles of F (exactly: every float is a double).
+ * Value k is read before F[k] is written, and F[k]'s bytes cover only
+ * floats already read (those before 2k - m + 2 <= k + 1). */
+static void widen(double *F, size_t m)
+{
+    const unsigned char *src = (const unsigned char *)F + 4 * m;
+    for (size_t k = 0; k < m; k++) {
+        unsigned char b[4];
+        memcpy(b, src + 4 * k, 4);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+        unsigned char t = b[0];
+        b[0] = b[3], b[3] = t, t = b[1], b[1] = b[2], b[2] = t;
+#endif
+        float v;
+        memcpy(&v, b, 4);
+        F[k] = v;
+    }
+}
+
 /* Row-major (C order) to column-major, in place: the transpose. */
 static void transpose(double *F, size_t n)
 {
@@ -170,25 +193,32 @@ static rad_status read_header(FILE *f, const char *path, char **h, rad_error *er
     return RAD_OK;
 }
 
-rad_status radi_npy_read_square(const char *path, int n, double *F, rad_error *err)
+rad_status radi_npy_read_square(const char *path, int n, double *F, int *bits, rad_error *err)
 {
     FILE *f = fopen(path, "rb");
     if (!f)
         return radi_fail(err, RAD_ERR_IO, "%s: %s", path, strerror(errno));
     char *h = NULL;
     int fortran = 1;
+    *bits = 64;
     rad_status st = read_header(f, path, &h, err);
     if (st == RAD_OK)
-        st = check_dict(path, h, n, &fortran, err);
+        st = check_dict(path, h, n, &fortran, bits, err);
     const size_t nn = (size_t)n * (size_t)n;
-    if (st == RAD_OK && fread(F, sizeof *F, nn, f) != nn)
-        st = radi_fail(err, RAD_ERR_PARSE, "%s: .npy data shorter than %d x %d float64", path,
-                      n, n);
+    const size_t size = *bits == 32 ? 4 : 8;
+    void *to = *bits == 32 ? (void *)((unsigned char *)F + 4 * nn) : (void *)F;
+    const char *type = *bits == 32 ? "float32" : "float64";
+    if (st == RAD_OK && fread(to, size, nn, f) != nn)
+        st = radi_fail(err, RAD_ERR_PARSE, "%s: .npy data shorter than %d x %d %s", path, n, n,
+                       type);
     if (st == RAD_OK && fgetc(f) != EOF)
-        st = radi_fail(err, RAD_ERR_PARSE, "%s: .npy data longer than %d x %d float64", path,
-                      n, n);
+        st = radi_fail(err, RAD_ERR_PARSE, "%s: .npy data longer than %d x %d %s", path, n, n,
+                       type);
     if (st == RAD_OK) {
-        from_le(F, nn);
+        if (*bits == 32)
+            widen(F, nn);
+        else
+            from_le(F, nn);
         /* as the text readers: a NaN or infinity is no form factor */
         for (size_t k = 0; k < nn && st == RAD_OK; k++)
             if (!isfinite(F[k]))

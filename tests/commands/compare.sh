@@ -59,6 +59,42 @@ cmp_ --report "$work/r.json" "$cube" "$work/F.npy"
 c=$(json closure_ours "$work/r.json")
 awk -v c="$c" 'BEGIN { exit !(c + 0 < 2e-9) }'; ok $? "closure of ours below 2e-9 ($c)"
 
+# ---- float32 .npy, as GPU solvers write it ------------------------------
+# Each entry rounded to the nearest float32 by the test itself (python3's
+# struct, no NumPy), row-major: the largest error compare reports is the
+# largest rounding, |f32(F) - F| / max(F, 1e-6), computed here the same
+# way from the exact table, give or take reference's 1e-9 between fills.
+if command -v python3 > /dev/null 2>&1; then
+  python3 - "$work/F.tsv" "$work/F32.npy" "$n" > "$work/f32.max" <<'PY'
+import struct, sys
+n = int(sys.argv[3])
+F = [[0.0] * n for _ in range(n)]
+for line in open(sys.argv[1]).read().splitlines()[1:]:
+    i, j, f = line.split("\t")[:3]
+    F[int(i)][int(j)] = float(f)
+h = "{'descr': '<f4', 'fortran_order': False, 'shape': (%d, %d), }" % (n, n)
+h += " " * (63 - (10 + len(h)) % 64) + "\n"
+with open(sys.argv[2], "wb") as out:
+    out.write(b"\x93NUMPY\x01\x00" + struct.pack("<H", len(h)) + h.encode())
+    worst = 0.0
+    for i in range(n):
+        for j in range(n):
+            r = struct.unpack("<f", struct.pack("<f", F[i][j]))[0]
+            worst = max(worst, abs(r - F[i][j]) / max(abs(F[i][j]), 1e-6))
+            out.write(struct.pack("<f", F[i][j]))
+print("%.17g" % worst)
+PY
+  cmp_ --report "$work/f32.json" "$cube" "$work/F32.npy"
+  ok $? "a float32 .npy is read"
+  grep -q 'float32' "$work/out" && grep -q '"format": "NumPy .npy float32' "$work/f32.json"
+  ok $? "the report names its precision: $(grep -o 'NumPy .npy float32[^"]*' "$work/f32.json" | head -n 1)"
+  e=$(json max_error "$work/f32.json"); w=$(cat "$work/f32.max")
+  awk -v e="$e" -v w="$w" 'BEGIN { d = e - w; if (d < 0) d = -d; exit !(w > 0 && d <= 2e-9) }'
+  ok $? "its largest error is the float32 rounding ($e against $w)"
+else
+  skip "python3 not found: no float32 .npy written"
+fi
+
 # ---- one entry perturbed by a relative 1e-6 ------------------------------
 # F_38 (wall x = 0 to the opposite wall x = 1, far above the 1e-6 floor)
 # times 1 + 1e-6: its error is 1e-6, every other entry's 0.
@@ -183,7 +219,7 @@ def npy(path, descr, order, shape, payload):
         f.write(b"\x93NUMPY\x01\x00" + struct.pack("<H", len(h)) + h.encode() + payload)
 npy(w + "/P.npy", "<f8", "False", "(18, 18)", struct.pack("<%dd" % (n * n), *C))
 npy(w + "/rect.npy", "<f8", "False", "(3, 4)", struct.pack("<12d", *([0.0] * 12)))
-npy(w + "/f4.npy", "<f4", "False", "(18, 18)", struct.pack("<%df" % (n * n), *C))
+npy(w + "/be4.npy", ">f4", "False", "(18, 18)", struct.pack(">%df" % (n * n), *C))
 npy(w + "/cube.npy", "<f8", "False", "(18, 18, 1)", struct.pack("<%dd" % (n * n), *C))
 npy(w + "/short.npy", "<f8", "False", "(18, 18)", struct.pack("<%dd" % (n * n - 1), *C[1:]))
 N = list(C); N[5] = float("nan")
@@ -195,7 +231,7 @@ PY
   cmp_ --tolerance 1e-7 "$cube" "$work/P.npy"; ok $(($? != 1)) "C-order .npy perturbed: exit 1"
   [ "$(largest)" = "3 8" ]; ok $? "C-order .npy: the worst pair is i = 3, j = 8 ($(largest))"
   cmp_ --tolerance 1e-5 "$cube" "$work/P.npy"; ok $? "C-order .npy perturbed: exit 0 with 1e-5"
-  for bad in rect f4 cube short nan inf stub; do
+  for bad in rect be4 cube short nan inf stub; do
     cmp_ "$cube" "$work/$bad.npy"; rc=$?
     [ $rc -eq 1 ] && grep -q "$bad.npy" "$work/err"
     ok $? "$bad.npy refused with the file named ($(cat "$work/err"))"
