@@ -284,7 +284,8 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
                  "element face %d\nproperty list %s int vertex_indices\n"
                  "property int surface\n"
                  "property double radiosity_r\nproperty double radiosity_g\n"
-                 "property double radiosity_b\nproperty uchar emitting\nend_header\n",
+                 "property double radiosity_b\nproperty uchar emitting\n"
+                 "property int element\nend_header\n",
             nv, n, maxv > 255 ? "int" : "uchar");
     for (int v = 0; v < nv; v++) {
         const rad_vec3 p = m->vertices[v];
@@ -292,14 +293,34 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
         fprintf(out, "%.17g %.17g %.17g %.17g %.17g %.17g %u %u %u\n", p.x, p.y, p.z, r, g, b,
                 rad_tone_byte(r, exposure), rad_tone_byte(g, exposure), rad_tone_byte(b, exposure));
     }
-    for (int e = 0; e < n; e++) {
+    /* faces grouped by vertex count, each group in element order: readers
+     * that keep one array per cell type (meshio) need each type's faces
+     * together; `element` keeps the element's index */
+    int *start = calloc((size_t)maxv + 2, sizeof *start);
+    int *order = malloc(sizeof *order * (size_t)(n ? n : 1));
+    if (!start || !order) {
+        free(start);
+        free(order);
+        return -1;
+    }
+    for (int e = 0; e < n; e++) /* a counting sort, stable */
+        start[m->elements[e].nverts + 1]++;
+    for (int c = 0; c <= maxv; c++)
+        start[c + 1] += start[c];
+    for (int e = 0; e < n; e++)
+        order[start[m->elements[e].nverts]++] = e;
+    for (int i = 0; i < n; i++) {
+        const int e = order[i];
         const rad_element *el = &m->elements[e];
         fprintf(out, "%d", el->nverts);
         for (int k = 0; k < el->nverts; k++)
             fprintf(out, " %d", m->vindex[el->first + k]);
-        fprintf(out, " %d %.17g %.17g %.17g %d\n", el->surface, B[e], B[(size_t)e + n],
-                B[(size_t)e + 2 * (size_t)n], el->emit[0] > 0 || el->emit[1] > 0 || el->emit[2] > 0);
+        fprintf(out, " %d %.17g %.17g %.17g %d %d\n", el->surface, B[e], B[(size_t)e + n],
+                B[(size_t)e + 2 * (size_t)n],
+                el->emit[0] > 0 || el->emit[1] > 0 || el->emit[2] > 0, e);
     }
+    free(start);
+    free(order);
     return ferror(out) ? -1 : 0;
 }
 

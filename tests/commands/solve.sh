@@ -33,6 +33,20 @@ ok $? "Matrix Market rows (from element i) sum to 1 within 1e-7 (default promise
 head -n 1 "$work/s.ply" | grep -qx ply; ok $? "PLY magic"
 grep -q '^element vertex 96$' "$work/s.ply" && grep -q '^element face 54$' "$work/s.ply"; ok $? "PLY: 96 vertices, 54 faces"
 grep -q '^property uchar red$' "$work/s.ply" && grep -q '^property double radiosity_r$' "$work/s.ply"; ok $? "PLY: linear radiosity and sRGB bytes"
+# an adaptive mesh mixes faces of 4 to 7 vertices: they come grouped by
+# count (meshio keeps one array per kind of cell), and each face's
+# `element` names its row of the element table, whose B it carries
+"$RADIOSITY" solve -q --solver progressive --adaptive -o "$work/a.ply" --elements "$work/a.tsv" \
+  "$top_srcdir/data/goral1984-cube.scene"
+awk -F '\t' 'FNR == NR { if (FNR > 1) b[$1] = $12 " " $13 " " $14; n = FNR - 1; next }
+  /^end_header/ { body = 1; next }
+  !body { if ($0 ~ /^element vertex /) { split($0, h, " "); nv = h[3] } next }
+  ++line > nv { split($0, w, " "); k = w[1]; if (k < last) order = 1; last = k
+    if (k > 4) mixed = 1
+    e = w[k + 7]; if ((e in seen) || !(e in b)) bad = 1; seen[e] = 1; faces++
+    if (sprintf("%.17g %.17g %.17g", w[k + 3], w[k + 4], w[k + 5]) != b[e]) bad = 1 }
+  END { exit bad || order || !mixed || faces != n }' "$work/a.tsv" "$work/a.ply"
+ok $? "adaptive PLY: faces grouped by vertex count, each element once, its B the table's"
 grep -q '"status": "ok"' "$work/r.json" && grep -q '"residual"' "$work/r.json" && grep -q '"energy_balance_relative"' "$work/r.json"
 ok $? "JSON report with status, residual and energy balance"
 if command -v python3 > /dev/null; then
