@@ -101,7 +101,13 @@ int cli_common_option(cli_common *c, int opt, const char *arg);
  * error (printed), else 0. */
 int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st);
 
-/* "radiosity: " + message on standard error. */
+/* The name that starts every message: the program's own (radiosity-mpi
+ * compiles these files with its name, Makefile.am). */
+#ifndef CLI_PROGRAM
+#define CLI_PROGRAM "radiosity"
+#endif
+
+/* CLI_PROGRAM ": " + message on standard error. */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void cli_error_rec(const rad_error *err);
 /* "Try 'radiosity CMD --help'." and return EXIT_USAGE. */
@@ -237,7 +243,12 @@ typedef struct cli_solve {
     {"subdivide-test", required_argument, NULL, OPT_SUBDIVIDE_TEST},      \
     CLI_COMMON_LONGOPTS
 
-#define CLI_SOLVE_HELP                                                             \
+#define CLI_SOLVE_HELP CLI_SOLVE_HELP_SOLVERS CLI_SOLVE_HELP_FILES CLI_METHOD_HELP CLI_COMMON_HELP
+
+/* ... in parts: the solvers and their options (radiosity-mpi has its own,
+ * the distributed ones), then the output files, which both programs write
+ * alike. */
+#define CLI_SOLVE_HELP_SOLVERS                                                     \
     "      --solver NAME       gauss (LU with partial pivoting, LAPACK; default),\n" \
     "                          cholesky (the symmetric form diag(A/rho)(I - rho F),\n"\
     "                          half LU's flops; LU where it is not positive\n"   \
@@ -290,7 +301,9 @@ typedef struct cli_solve {
     "                          after N sweeps or steps (default 100000)\n"     \
     "      --bounces K         exactly K reflections: B = sum_{m<=K} (rho F)^m E\n"\
     "                          (a solver of its own: no --solver, --tolerance)\n"\
-    "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"\
+    "      --error-bounds      gauss: forward and backward error bounds (dgesvx)\n"
+
+#define CLI_SOLVE_HELP_FILES                                                       \
     "      --report FILE       full diagnostics as JSON\n"                         \
     "      --elements FILE     per-element table (TSV; FILE.npy: B as an n x 3\n"  \
     "                          float64 NumPy array)\n"                           \
@@ -299,9 +312,7 @@ typedef struct cli_solve {
     "      --vertex-rule RULE  vertex radiosity on a surface's boundary:\n"     \
     "                          extrapolate (linear, Goral et al. 1984; default)\n"\
     "                          or corner ((vertex + nearest interior vertex)/2\n"\
-    "                          = mean of the elements at the vertex)\n"       \
-    CLI_METHOD_HELP                                                                \
-    CLI_COMMON_HELP
+    "                          = mean of the elements at the vertex)\n"
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */
 typedef struct cli_run {

@@ -67,7 +67,7 @@ void cli_error(const char *fmt, ...)
     va_start(ap, fmt);
     const int len = vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    fputs("radiosity: ", stderr);
+    fputs(CLI_PROGRAM ": ", stderr);
     if (len >= 0 && (size_t)len < sizeof msg) {
         put_option_names(msg, stderr);
     } else { /* longer than any message of ours: as it is */

@@ -388,11 +388,11 @@ static void summary(const rad_mesh *m, const rad_race_options *o, const double *
     const size_t rows = (size_t)o->steps + 1;
     const int lights = light_sources(m, o->patches);
     const int k = lights < 1 ? 1 : lights > o->steps ? o->steps : lights;
-    fprintf(stderr, "radiosity: %d elements, %d emitting %s, %d steps per method, matrix %s\n",
+    fprintf(stderr, CLI_PROGRAM ": %d elements, %d emitting %s, %d steps per method, matrix %s\n",
             m->nelements, lights,
             o->patches ? (lights == 1 ? "patch" : "patches") : (lights == 1 ? "element" : "elements"),
             o->steps, rad_matrix_name(matrix));
-    fprintf(stderr, "radiosity: RMS error after %d step%s:", k, k == 1 ? "" : "s");
+    fprintf(stderr, CLI_PROGRAM ": RMS error after %d step%s:", k, k == 1 ? "" : "s");
     for (int j = first; j < RAD_RACE_METHODS; j++)
         fprintf(stderr, "%s %s %.6g", j > first ? "," : "", label[j],
                 rms[(size_t)k + (size_t)j * rows]);
@@ -586,7 +586,7 @@ static int outputs(const progress_args *a, const pipeline *p)
         if (a->adaptive.solve.adaptive)
             progress_adaptive_summary(&p->ad, &p->res);
         if (pl.scale > 0)
-            fprintf(stderr, "radiosity: --plot-normalised divides by the RMS of the converged "
+            fprintf(stderr, CLI_PROGRAM ": --plot-normalised divides by the RMS of the converged "
                             "solution, %.17g\n", pl.scale);
     }
     return 0;

@@ -339,7 +339,7 @@ static void summary(const cli_run *r)
     }
     const rad_solve_report *s = in.solve;
     if (r->res.matrix == RAD_MATRIX_NONE)
-        fprintf(stderr, "radiosity: %d elements, matrix none (form factors per shot, %.1f MiB "
+        fprintf(stderr, CLI_PROGRAM ": %d elements, matrix none (form factors per shot, %.1f MiB "
                         "estimated); solve %.3g s with %.0f %s (%.3g pairs/s, %s)\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_solve, in.ff ? in.ff->pairs : 0,
                 /* the hemicube integrates nothing: it reads item buffers */
@@ -347,7 +347,7 @@ static void summary(const cli_run *r)
                                                           : "pair integrals",
                 in.ff_pairs_per_second, in.accuracy);
     else
-        fprintf(stderr, "radiosity: %d elements, matrix dense, %.1f MiB of matrices; form "
+        fprintf(stderr, CLI_PROGRAM ": %d elements, matrix dense, %.1f MiB of matrices; form "
                         "factors %.3g s (%.3g pairs/s, %s), solve %.3g s\n",
                 in.nelements, in.memory_bytes / 1048576.0, in.t_formfactor,
                 in.ff_pairs_per_second, in.accuracy, in.t_solve);
@@ -358,36 +358,36 @@ static void summary(const cli_run *r)
             count[l]++;
             top = l > top ? l : top;
         }
-        fprintf(stderr, "radiosity: adaptive subdivision: %d splits; elements by level",
+        fprintf(stderr, CLI_PROGRAM ": adaptive subdivision: %d splits; elements by level",
                 r->res.splits);
         for (int l = 0; l <= top; l++)
             fprintf(stderr, " %d", count[l]);
         fputc('\n', stderr);
     }
     if (in.ff && r->s->common.ff.method == RAD_FF_HEMICUBE)
-        fprintf(stderr, "radiosity: visibility: the hemicubes' z-buffers\n");
+        fprintf(stderr, CLI_PROGRAM ": visibility: the hemicubes' z-buffers\n");
     else if (in.ff && in.ff->vis_needed)
-        fprintf(stderr, "radiosity: visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
+        fprintf(stderr, CLI_PROGRAM ": visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
                         "%.0f partly; %.3g s\n",
                 in.ff->vis_pairs_blockable, in.ff->vis_pairs_tested, in.ff->vis_pairs_blocked,
                 in.ff->vis_pairs_partial, in.ff->vis_seconds);
     else if (in.ff)
-        fprintf(stderr, "radiosity: visibility: no pair can be blocked, none computed\n");
+        fprintf(stderr, CLI_PROGRAM ": visibility: no pair can be blocked, none computed\n");
     if (!s)
         return;
     if (s->bounces >= 0)
-        fprintf(stderr, "radiosity: %d bounces (Jacobi from B = E)", s->bounces);
+        fprintf(stderr, CLI_PROGRAM ": %d bounces (Jacobi from B = E)", s->bounces);
     else if (s->solver == RAD_SOLVER_GAUSS || s->solver == RAD_SOLVER_CHOLESKY ||
              (s->solver == RAD_SOLVER_CG && s->fallbacks)) {
-        fprintf(stderr, "radiosity: %s, %d factorisation%s, rcond %.3g", rad_solver_name(s->solver),
+        fprintf(stderr, CLI_PROGRAM ": %s, %d factorisation%s, rcond %.3g", rad_solver_name(s->solver),
                 s->systems, s->systems == 1 ? "" : "s", s->rcond);
         if (!isnan(s->ff_error_bound))
             fprintf(stderr, "; F's error moves B by %.3g relative at most", s->ff_error_bound);
     }
     else if (s->solver == RAD_SOLVER_PROGRESSIVE)
-        fprintf(stderr, "radiosity: progressive, %d shooting steps", s->sweeps);
+        fprintf(stderr, CLI_PROGRAM ": progressive, %d shooting steps", s->sweeps);
     else {
-        fprintf(stderr, "radiosity: %s, %d %s, ||diag(rho) F||inf %.6g, ", rad_solver_name(s->solver),
+        fprintf(stderr, CLI_PROGRAM ": %s, %d %s, ||diag(rho) F||inf %.6g, ", rad_solver_name(s->solver),
                 s->sweeps, s->solver == RAD_SOLVER_CG ? "iterations" : "sweeps", s->contraction);
         if (isnan(s->error_bound))
             fprintf(stderr, "no error bound");
@@ -399,11 +399,11 @@ static void summary(const cli_run *r)
     fprintf(stderr, "; residual %.3g; F row sums [%.15g, %.15g]\n", s->residual,
             s->row_sum_min, s->row_sum_max);
     if (s->fallbacks)
-        fprintf(stderr, "radiosity: %s\n", s->fallback);
+        fprintf(stderr, CLI_PROGRAM ": %s\n", s->fallback);
     if (s->emitted[0] > 0 || s->emitted[1] > 0 || s->emitted[2] > 0) {
         /* a band that emits nothing has no ratio: '-' (radi_solve_balance
          * keeps the difference there) */
-        fprintf(stderr, "radiosity: energy balance (emitted - absorbed - escaped)/emitted:");
+        fprintf(stderr, CLI_PROGRAM ": energy balance (emitted - absorbed - escaped)/emitted:");
         for (int b = 0; b < RAD_BANDS; b++)
             if (s->emitted[b] > 0)
                 fprintf(stderr, " %.3g", s->balance[b]);
@@ -412,7 +412,7 @@ static void summary(const cli_run *r)
         fprintf(stderr, "\n");
     }
     else
-        fprintf(stderr, "radiosity: energy balance: nothing is emitted\n");
+        fprintf(stderr, CLI_PROGRAM ": energy balance: nothing is emitted\n");
 }
 
 /* Warn when the energy balance of an emitting band is off by more than

@@ -458,7 +458,7 @@ static int sweep_row(const sweep_args *a, rad_scene *scene, int mesh, const rad_
     rad_solution_error(&sol.mesh, sol.B, t->have_closed ? NULL : &t->truth->mesh,
                        t->truth->B, t->closed, &w->rms, &w->max);
     if (!a->common.quiet)
-        fprintf(stderr, "radiosity: %dx%d %s %s: %.3g s, rms error %.3g\n", w->mesh, w->mesh,
+        fprintf(stderr, CLI_PROGRAM ": %dx%d %s %s: %.3g s, rms error %.3g\n", w->mesh, w->mesh,
                 w->res ? "hemicube" : rad_accuracy_name(w->acc), rad_solver_name(w->solver),
                 w->t_ff + w->t_solve, w->rms);
     rad_result_free(&sol);
@@ -540,7 +540,7 @@ int cmd_sweep(int argc, char **argv)
         double t1, t2;
         o.accuracy = RAD_ACCURACY_REFERENCE;
         if (!a.common.quiet)
-            fprintf(stderr, "radiosity: truth: reference gauss on %dx%d\n", finest, finest);
+            fprintf(stderr, CLI_PROGRAM ": truth: reference gauss on %dx%d\n", finest, finest);
         if (run_one(&scene, finest, &o, RAD_SOLVER_GAUSS, 0, &truth, &t1, &t2))
             goto done;
         snprintf(tname, sizeof tname, "reference-%dx%d", finest, finest);

@@ -149,7 +149,7 @@ int progress_adaptive_race(const progress_adaptive *o, const cli_common *c,
 void progress_adaptive_summary(const progress_adaptive_run *run, const rad_result *sorted)
 {
     fprintf(stderr,
-            "radiosity: --adaptive: %d patches shoot; converged with %d elements after %d "
+            CLI_PROGRAM ": --adaptive: %d patches shoot; converged with %d elements after %d "
             "steps sorted, %d elements after %d steps in file order; gathering left out (no "
             "shot to subdivide after)\n",
             run->start.nelements, sorted->mesh.nelements,

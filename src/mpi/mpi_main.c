@@ -35,10 +35,22 @@ static void help(void)
            "summary and writes every output; B is the same as a serial solve's to\n"
            "round-off (jacobi: within its tolerance).\n"
            "\n"
-           "Options (those of 'radiosity solve'; gauss-seidel, cg, progressive and\n"
-           "--bounces are refused):\n"
+           "Options (those of 'radiosity solve' that a distributed solve has):\n"
            "  -o, --output FILE       the solution as PLY; '-' is stdout\n"
-           CLI_SOLVE_HELP
+           "      --solver NAME       gauss (ScaLAPACK's LU; default), cholesky (the\n"
+           "                          symmetric form diag(A/rho)(I - rho F), ScaLAPACK's\n"
+           "                          Cholesky; LU where it is not positive definite)\n"
+           "                          or jacobi (sweeps on the distributed F)\n"
+           "      --tolerance T       jacobi: stop when a bound on the relative error\n"
+           "                          of B is below T (q/(1-q) times the last change,\n"
+           "                          q the contraction factor; default 1e-12)\n"
+           "      --max-iterations N  jacobi: give up after N sweeps (default 100000)\n"
+           CLI_SOLVE_HELP_FILES
+           CLI_COMMON_HELP
+           "\n"
+           "The contour integral fills F (no --form-factors-method hemicube); the\n"
+           "serial program's other solvers, --bounces, --error-bounds and the\n"
+           "progressive options are refused.\n"
            "\n"
            "Each process takes about 2 x 8 N^2 / P bytes for its blocks of F and of\n"
            "the system (N elements; jacobi 8 N^2 / P), plus the mesh; --form-factors\n"
@@ -64,7 +76,7 @@ static int check(const cli_solve *s)
     const rad_solver v = s->solve.solver;
     if (s->given_bounces ||
         (v != RAD_SOLVER_GAUSS && v != RAD_SOLVER_CHOLESKY && v != RAD_SOLVER_JACOBI)) {
-        cli_error("radiosity-mpi solves with --solver gauss, cholesky (ScaLAPACK) or jacobi, "
+        cli_error("the distributed solve takes --solver gauss, cholesky (ScaLAPACK) or jacobi, "
                   "not %s",
                   s->given_bounces ? "--bounces" : rad_solver_name(v));
         return 2;
@@ -74,8 +86,8 @@ static int check(const cli_solve *s)
         return 2;
     }
     if (s->common.ff.method != RAD_FF_CONTOUR) {
-        cli_error("radiosity-mpi fills its blocks of F by the contour integral; the hemicube "
-                  "gives whole rows (use radiosity solve)");
+        cli_error("the distributed fill takes its blocks of F from the contour integral; the "
+                  "hemicube gives whole rows (use radiosity solve)");
         return 2;
     }
     return 0;
@@ -104,7 +116,7 @@ static int run(int argc, char **argv)
         return 0;
     }
     if (strcmp(argv[1], "solve") != 0) {
-        cli_error("radiosity-mpi has one command, solve, not '%s'", argv[1]);
+        cli_error("one command, solve, not '%s'", argv[1]);
         return usage(stderr);
     }
     char name[] = "radiosity-mpi solve";

@@ -108,7 +108,7 @@ ok $r "closed Cornell box on 2 processes: energy balance ${bal:-missing} within 
 # Usage and input errors are rank 0's, with the serial program's statuses;
 # the other ranks leave quietly.
 mpi 2 solve --solver gauss-seidel "$top_srcdir/data/grey-cube.scene" 2>"$work/err"
-[ $? -eq 2 ] && grep -q 'radiosity-mpi solves with --solver gauss, cholesky (ScaLAPACK) or jacobi' "$work/err"
+[ $? -eq 2 ] && grep -q '^radiosity-mpi: the distributed solve takes --solver gauss, cholesky (ScaLAPACK) or jacobi' "$work/err"
 ok $? "gauss-seidel is a usage error (exit 2) naming the solvers"
 grep -q "Try 'radiosity-mpi solve --help'" "$work/err"
 ok $? "the usage hint names radiosity-mpi's own --help"
@@ -131,5 +131,16 @@ ok $r "and no temporary beside it"
 ok $? "--version names radiosity-mpi"
 "$RADIOSITY_MPI" --help | grep -q 'mpirun -np P radiosity-mpi solve'
 ok $? "--help shows how to run it"
+# the help lists only what the program takes: the options it refuses
+# (check() in mpi_main.c) are not offered as options
+"$RADIOSITY_MPI" --help > "$work/help"
+! grep -q -e '^ *--trace' -e '^ *--patches' -e '^ *--adaptive' -e '^ *--bounces' \
+  -e '^ *--matrix' -e '^ *--error-bounds' -e '^ *--form-factors-method' -e 'gauss-seidel, cg' \
+  "$work/help"
+ok $? "--help offers no option the distributed solve refuses"
+# every message starts with the program's own name
+mpi 2 solve --mesh 0x0 "$top_srcdir/data/grey-cube.scene" 2> "$work/err"
+[ $? -eq 2 ] && grep -q '^radiosity-mpi: ' "$work/err" && ! grep -q '^radiosity: ' "$work/err"
+ok $? "a usage error says radiosity-mpi: ($(head -n 1 "$work/err"))"
 
 done_testing
