@@ -308,8 +308,17 @@ int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
         cli_error_rec(&err);
         return 1;
     }
-    if (c->mesh_n > 0)
+    if (c->mesh_n > 0) {
         rad_scene_set_mesh(scene, c->mesh_n, c->mesh_m);
+        /* --mesh cuts quadrilaterals only: say so when it cuts nothing */
+        int quads = 0;
+        for (int k = 0; k < scene->nsurfaces; k++)
+            quads += scene->surfaces[k].kind == RAD_SURFACE_QUAD;
+        if (quads == 0 && scene->nsurfaces > 0)
+            cli_error("warning: --mesh %dx%d applies to quadrilaterals, and %s has none: its %d "
+                      "triangles and polygons stay one element each",
+                      c->mesh_n, c->mesh_m, path, scene->nsurfaces);
+    }
     return 0;
 }
 
