@@ -75,6 +75,19 @@ typedef struct rad_scene {
  * case-insensitive; radiosity-scene(5) says what they map to).  On
  * failure *scene is left empty and err says FILE:LINE: why. */
 RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
+/* The formats a scene may be read in; AUTO picks by the name's ending as
+ * rad_scene_load does ("-" and other names: the native format). */
+typedef enum rad_scene_format {
+    RAD_SCENE_FORMAT_AUTO = 0,
+    RAD_SCENE_FORMAT_SCENE,     /* radiosity-scene(5) */
+    RAD_SCENE_FORMAT_OBJ,       /* Wavefront OBJ + MTL (mtllib relative to the
+                                   file, to the current folder for "-") */
+    RAD_SCENE_FORMAT_VS3        /* View3D 3.x input */
+} rad_scene_format;
+/* rad_scene_load in a given format, whatever the name (standard input,
+ * a file with another ending). */
+RAD_API rad_status rad_scene_load_format(rad_scene *scene, const char *path,
+                                         rad_scene_format format, rad_error *err);
 /* Parse scene text held in memory; `name` is used in messages and picks
  * the format by its ending as rad_scene_load does. */
 RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,

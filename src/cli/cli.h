@@ -30,6 +30,7 @@ typedef struct cli_common {
     int strict;                 /* --strict: an unmet accuracy promise is an error */
     int given_resolution;       /* --resolution was given */
     int given_accuracy;         /* --accuracy or --quadrature was given */
+    rad_scene_format format;    /* --format: the scene's, or AUTO (by its name) */
 } cli_common;
 
 /* Long-option ids for the common options (above any short option). */
@@ -43,6 +44,7 @@ enum {
     OPT_FF_METHOD,
     OPT_RESOLUTION,
     OPT_HELP,
+    OPT_FORMAT,
     OPT_COMMON_END
 };
 
@@ -53,6 +55,7 @@ enum {
     {"threads", required_argument, NULL, OPT_THREADS},            \
     {"quiet", no_argument, NULL, OPT_QUIET},                      \
     {"strict", no_argument, NULL, OPT_STRICT},                    \
+    {"format", required_argument, NULL, OPT_FORMAT},              \
     {"help", no_argument, NULL, OPT_HELP}
 
 #define CLI_COMMON_HELP                                                          \
@@ -65,6 +68,9 @@ enum {
     "      --strict            an unmet accuracy promise (a form factor whose own\n" \
     "                          error estimate exceeds the mode's 1e-6 or 1e-9)\n"\
     "                          is an error (exit 1), not a warning\n"           \
+    "      --format F          the scene's format: scene, obj or vs3 (default: by\n"\
+    "                          its name, .obj or .vs3, else scene; for '-',\n" \
+    "                          standard input, and other names)\n"              \
     "  -q, --quiet             no progress bar or summary\n"                     \
     "  -h, --help              show this help and exit\n"
 

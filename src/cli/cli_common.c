@@ -190,6 +190,18 @@ void cli_common_init(cli_common *c)
 int cli_common_option(cli_common *c, int opt, const char *arg)
 {
     switch (opt) {
+    case OPT_FORMAT:
+        if (strcmp(arg, "scene") == 0)
+            c->format = RAD_SCENE_FORMAT_SCENE;
+        else if (strcmp(arg, "obj") == 0)
+            c->format = RAD_SCENE_FORMAT_OBJ;
+        else if (strcmp(arg, "vs3") == 0)
+            c->format = RAD_SCENE_FORMAT_VS3;
+        else {
+            cli_error("--format takes scene, obj or vs3, not '%s'", arg);
+            return 2;
+        }
+        return 0;
     case OPT_MESH:
         if (cli_parse_mesh(arg, &c->mesh_n, &c->mesh_m)) {
             cli_error("--mesh takes NxM with whole numbers from 1 to 100000, not '%s'", arg);
@@ -304,7 +316,7 @@ int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
 {
     rad_error err;
-    if (rad_scene_load(scene, path, &err) != RAD_OK) {
+    if (rad_scene_load_format(scene, path, c->format, &err) != RAD_OK) {
         cli_error_rec(&err);
         return 1;
     }

@@ -515,8 +515,17 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
 
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
+    return rad_scene_load_format(scene, path, RAD_SCENE_FORMAT_AUTO, err);
+}
+
+rad_status rad_scene_load_format(rad_scene *scene, const char *path, rad_scene_format format,
+                                 rad_error *err)
+{
     rad_lines r;
-    scene_format f = format_of(path);
+    scene_format f = format == RAD_SCENE_FORMAT_OBJ     ? FORMAT_OBJ
+                     : format == RAD_SCENE_FORMAT_VS3   ? FORMAT_VS3
+                     : format == RAD_SCENE_FORMAT_SCENE ? FORMAT_SCENE
+                                                        : format_of(path);
     memset(scene, 0, sizeof *scene);
     rad_status st = radi_lines_open(&r, path, comment_of(f), err);
     if (st == RAD_OK)

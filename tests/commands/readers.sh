@@ -154,4 +154,25 @@ f02=$(awk -F '\t' '$1 == 0 && $2 == 2 { print $3 }' "$work/ff.tsv")
 close_to "$f02" "$want" 1e-12; ok $? "the lower square sees the O surface as the closed form says ($f02 vs $want)"
 [ "$(($(wc -l < "$work/ff.tsv") - 1))" -eq 6 ]; ok $? "the O surface is an element of its own (reported: 3 elements)"
 
+# --format: standard input and other names in any of the three formats,
+# the same scene as read by its name (mtllib relative to the current
+# folder for standard input)
+(cd "$data" && "$RADIOSITY" solve -q --format obj --elements "$work/fo.tsv" -o /dev/null - \
+  < cornell-box.obj) && "$RADIOSITY" solve -q --elements "$work/fn.tsv" -o /dev/null "$data/cornell-box.obj" &&
+  cmp -s "$work/fo.tsv" "$work/fn.tsv"
+ok $? "--format obj: the OBJ on standard input gives the element table of the file"
+cp "$work/cube.vs3" "$work/cube.txt"
+"$RADIOSITY" formfactor --format vs3 "$work/cube.txt" > "$work/fv.tsv" &&
+  "$RADIOSITY" formfactor "$work/cube.vs3" > "$work/fw.tsv" && cmp -s "$work/fv.tsv" "$work/fw.tsv"
+ok $? "--format vs3: a View3D file named .txt reads as its .vs3 twin"
+"$RADIOSITY" formfactor --format scene - < "$data/grey-cube.scene" > "$work/fs.tsv" &&
+  "$RADIOSITY" formfactor "$data/grey-cube.scene" > "$work/ft.tsv" && cmp -s "$work/fs.tsv" "$work/ft.tsv"
+ok $? "--format scene: standard input as the native format"
+"$RADIOSITY" solve --format ply - < /dev/null > /dev/null 2> "$work/err"
+[ $? -eq 2 ] && grep -q "format takes scene, obj or vs3, not 'ply'" "$work/err"
+ok $? "--format ply: a usage error naming the three formats"
+"$RADIOSITY" solve -q --format vs3 -o /dev/null "$data/grey-cube.scene" 2> "$work/err"
+[ $? -eq 1 ] && grep -q 'grey-cube.scene:[0-9]*: ' "$work/err"
+ok $? "--format vs3 on a native file: refused with FILE:LINE ($(head -c 120 "$work/err"))"
+
 done_testing
