@@ -41,6 +41,9 @@ typedef struct rad_surface {
     int line;                   /* input line, for messages */
     int object;                 /* index into rad_scene.objects; -1: the static
                                    environment (outside every object) */
+    int obstruction;            /* 1: blocks the view but is left out of the
+                                   reported form factors (View3D's O lines,
+                                   which come after every other surface) */
 } rad_surface;
 
 /* A named group of surfaces that a change may move, add or remove (the

@@ -211,6 +211,27 @@ static int read_theirs(const compare_args *a, const char *path, const rad_mesh *
     return 0;
 }
 
+/* A scene with View3D's O surfaces (their elements the last, from `kept`
+ * on): their matrix may leave those rows and columns out, as View3D
+ * does.  Try that shape first, into S (kept x kept); *embedded 1 when it
+ * was read so, 0 when the whole matrix was (into G).  0, or 1 (printed). */
+static int read_kept(const compare_args *a, const char *path, const rad_mesh *mesh, int kept,
+                     double *G, double *S, const char **format, int *embedded)
+{
+    rad_error err, whole;
+    *embedded = 0;
+    if (radi_ff_read(path, kept, S, format, &err) == RAD_OK) {
+        *embedded = 1;
+        return 0;
+    }
+    if (radi_ff_read(path, mesh->nelements, G, format, &whole) == RAD_OK)
+        return 0;
+    (void)a;
+    cli_error("%s (the scene's %d O surfaces' elements left out, as View3D does, or not: "
+              "%d elements)", err.message, mesh->nelements - kept, mesh->nelements);
+    return 1;
+}
+
 /* Our matrix and its error estimates: 0, or 1 (printed). */
 static int ours(compare_args *a, const rad_mesh *mesh, double *F, double **E)
 {
@@ -229,28 +250,48 @@ static int ours(compare_args *a, const rad_mesh *mesh, double *F, double **E)
 }
 
 /* After the mesh: read, compute, compare, print; the exit status. */
-static int run(compare_args *a, char **paths, const rad_mesh *mesh, const cli_output *o,
-               int no)
+static int run(compare_args *a, char **paths, const rad_mesh *mesh, int kept,
+               const cli_output *o, int no)
 {
     const size_t n = (size_t)mesh->nelements, nn = n > 0 ? n * n : 1;
     double *G = malloc(sizeof *G * nn), *F = malloc(sizeof *F * nn);
-    double *E = malloc(sizeof *E * nn), *W = a->elements ? malloc(sizeof *W * nn) : NULL;
+    const int obstructed = kept < (int)n;
+    double *E = malloc(sizeof *E * nn);
+    double *W = a->elements || obstructed ? malloc(sizeof *W * nn) : NULL;
+    int embedded = 0;
     double *A = malloc(sizeof *A * (n + 1));
     rad_ffcmp cmp = {.floor = a->floor, .nworst = a->worst};
     compare_ctx ctx = {paths[0], paths[1], "", a->elements, mesh, &cmp, a->c.ff.accuracy,
                        a->has_tolerance, a->tolerance, a->worst, 0, 0};
     rad_error err;
     int status = 1;
-    if (!G || !F || !E || !A || (a->elements && !W)) {
+    if (!G || !F || !E || !A || ((a->elements || obstructed) && !W)) {
         cli_error("out of memory for %zu x %zu form factors", n, n);
         goto done;
     }
+    if (obstructed && a->elements) {
+        cli_error("--elements: a scene with View3D O surfaces keeps View3D's order");
+        status = EXIT_USAGE;
+        goto done;
+    }
     double t0 = cli_seconds();
-    if (read_theirs(a, paths[1], mesh, G, W, &ctx.format))
+    if (obstructed ? read_kept(a, paths[1], mesh, kept, G, W, &ctx.format, &embedded)
+                   : read_theirs(a, paths[1], mesh, G, W, &ctx.format))
         goto done;
     double t1 = cli_seconds();
     if (ours(a, mesh, F, &E))
         goto done;
+    if (embedded) {
+        /* the O surfaces' rows and columns are ours: they add no error */
+        memcpy(G, F, sizeof *G * nn);
+        for (int j = 0; j < kept; j++)
+            for (int i = 0; i < kept; i++)
+                G[i + (size_t)j * n] = W[i + (size_t)j * kept];
+        if (!a->c.quiet)
+            fprintf(stderr, CLI_PROGRAM ": their matrix leaves out the %zu elements of the O "
+                            "surfaces, as View3D does: compared on the other %d\n",
+                    n - (size_t)kept, kept);
+    }
     ctx.seconds_read = t1 - t0;
     ctx.seconds_ff = cli_seconds() - t1;
     for (size_t i = 0; i < n; i++)
@@ -291,7 +332,7 @@ int cmd_compare(int argc, char **argv)
     if (cli_outputs_check(o, 2) ||
         load_mesh(&a, argv[optind], &scene, &mesh, a.elements ? 4 : 3))
         return 1;
-    const int status = run(&a, argv + optind, &mesh, o, 2);
+    const int status = run(&a, argv + optind, &mesh, cli_reported_elements(&scene, &mesh), o, 2);
     rad_mesh_free(&mesh);
     rad_scene_free(&scene);
     return status;

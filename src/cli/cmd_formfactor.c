@@ -191,7 +191,19 @@ int cmd_formfactor(int argc, char **argv)
     }
     if (cli_ff_verdict(&c, &st))
         goto done;
-    table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, (int)n};
+    /* View3D's O surfaces block but have no rows or columns: the element
+     * outputs keep the leading block (column-major, compacted in place) */
+    const size_t kept = surfaces ? n : (size_t)cli_reported_elements(&scene, &mesh);
+    for (size_t j = 0; kept < n && j < kept; j++)
+        for (size_t i = 0; i < kept; i++) {
+            F[i + j * kept] = F[i + j * n];
+            if (E)
+                E[i + j * kept] = E[i + j * n];
+        }
+    if (kept < n && !c.quiet)
+        fprintf(stderr, CLI_PROGRAM ": %zu obstruction elements block but are left out of the "
+                        "factors (View3D's O surfaces): %zu x %zu\n", n - kept, kept, kept);
+    table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, (int)kept};
     const int npy = rad_export_is_npy(output);
     if (surfaces && per_surface(&t, &FS, &ES, &AS))
         goto done;

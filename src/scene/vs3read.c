@@ -24,10 +24,10 @@
  *       subsurfaces are refused.  CMB (combine with an earlier surface) is
  *       checked as View3D checks it and otherwise ignored: factors are
  *       reported per input surface.  NAME is not kept;
- *   O   N V1 V2 V3 V4 ...: an obstruction-only surface, after every S.  The
- *       scene model cannot leave a surface out of the reported factors, so
- *       it becomes an ordinary black surface (reflectance 0, no emission),
- *       which blocks like any other and has its own rows and columns;
+ *   O   N V1 V2 V3 V4 ...: an obstruction-only surface, after every S: a
+ *       black surface (reflectance 0, no emission) that blocks like any
+ *       other, flagged `obstruction`, so that `formfactor` and `compare`
+ *       leave its rows and columns out as View3D does;
  *   X   coordinate transformation: ignored, as View3D 3.3 ignores it in F 3;
  *   E, *  end of data: nothing after it is read;
  *   !   a comment to the end of the line; a line whose first word starts
@@ -285,8 +285,11 @@ static rad_status vs3_surface(vs3_state *s, int obstruction)
         return st;
     }
     s->nsurf = n;
-    return radi_build_add_surface(&s->b, r->line, nv == 4 ? RAD_SURFACE_QUAD : RAD_SURFACE_POLYGON,
-                                 mat, -1, v, nv, 1, 1);
+    st = radi_build_add_surface(&s->b, r->line, nv == 4 ? RAD_SURFACE_QUAD : RAD_SURFACE_POLYGON,
+                                mat, -1, v, nv, 1, 1);
+    if (st == RAD_OK)
+        s->b.s.surfaces[s->b.s.nsurfaces - 1].obstruction = obstruction;
+    return st;
 }
 
 /* ---- lines --------------------------------------------------------------------- */
