@@ -3,9 +3,10 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * Every writer prints to an open stream (the caller makes the file whole
- * or absent, by writing a temporary file and renaming it) and returns 0,
- * or -1 on a write error.  Numbers that a validator may read back are
- * printed with %.17g (round-trip exact).
+ * or absent, by writing a temporary file and renaming it) and returns
+ * RAD_OK, RAD_ERR_IO on a write error (errno says which) or RAD_ERR_NOMEM.
+ * Numbers that a validator may read back are printed with %.17g
+ * (round-trip exact).
  */
 #ifndef RAD_EXPORT_H
 #define RAD_EXPORT_H
@@ -41,46 +42,46 @@ typedef struct rad_run_info {
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */
-RAD_API int rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
+RAD_API rad_status rad_export_elements(FILE *out, const rad_mesh *mesh, const double *B);
 /* The same with a last column `level' (the element's level of adaptive
  * subdivision, 0 for a starting element) when level is not NULL. */
-RAD_API int rad_export_elements_level(FILE *out, const rad_mesh *mesh, const double *B,
-                                      const int *level);
+RAD_API rad_status rad_export_elements_level(FILE *out, const rad_mesh *mesh, const double *B,
+                                             const int *level);
 /* Matrix Market "array real general", column-major, %.17g. */
-RAD_API int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
+RAD_API rad_status rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment);
 /* The form-factor table (`radiosity formfactor`): header "i j F error",
  * one line per ordered pair i != j, row by row; F with %.17g, the error
  * estimate E[i + j*n] with %.3g (E may be NULL: "nan").  Both big writers
  * format in parallel (OpenMP) and write the bytes the serial printf loop
  * wrote. */
-RAD_API int rad_export_ff_table(FILE *out, const double *F, const double *E, int n);
+RAD_API rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int n);
 /* Surface-to-surface form factors, every ordered pair S, K
  * including S = K: header "S K F error S_line K_line S_area"; S and K are
  * 0-based surface indices in file order, S_line and K_line the scene-file
  * lines that define them, error the area-weighted sum of the elements'
  * error estimates (ES may be NULL: "nan"), S_area = A_S. */
-RAD_API int rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *mesh,
-                             const double *FS, const double *ES, const double *AS);
+RAD_API rad_status rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *mesh,
+                                            const double *FS, const double *ES, const double *AS);
 /* NumPy .npy, version 1.0: a rows x cols column-major matrix as
  * float64 '<f8' with 'fortran_order': True and the shape in the header,
  * the data 64-byte aligned; numpy.load(path)[i, j] = A[i + j*rows]. */
-RAD_API int rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols);
+RAD_API rad_status rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols);
 /* The n x n form-factor matrix: shape (n, n), [i, j] = F_ij (row i = from
  * element i, zero diagonal). */
-RAD_API int rad_export_matrix_npy(FILE *out, const double *F, int n);
+RAD_API rad_status rad_export_matrix_npy(FILE *out, const double *F, int n);
 /* The radiosity table B (nelements x RAD_BANDS, column-major): shape
  * (n, 3), [e, b] = B of element e in band b (r, g, b); the geometry columns
  * of the text table are not in it (element e is row e of that table). */
-RAD_API int rad_export_elements_npy(FILE *out, const rad_mesh *mesh, const double *B);
+RAD_API rad_status rad_export_elements_npy(FILE *out, const rad_mesh *mesh, const double *B);
 /* Whether an output path asks for .npy (its name ends in ".npy"). */
 RAD_API int rad_export_is_npy(const char *path);
 /* Solution PLY: vertices with smoothed radiosity (linear doubles and sRGB
  * bytes), faces with element radiosity and surface index; the camera, when
  * the scene has one, in a comment. */
-RAD_API int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *mesh, const double *B,
-                   const double *Bv);
+RAD_API rad_status rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *mesh,
+                                  const double *B, const double *Bv);
 /* The JSON report. */
-RAD_API int rad_export_report(FILE *out, const rad_run_info *info);
+RAD_API rad_status rad_export_report(FILE *out, const rad_run_info *info);
 
 #ifdef __cplusplus
 }

@@ -38,12 +38,13 @@
 #include "radiosity/export.h"
 #include "util/util.h"
 
-int rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
+rad_status rad_export_elements(FILE *out, const rad_mesh *m, const double *B)
 {
     return rad_export_elements_level(out, m, B, NULL);
 }
 
-int rad_export_elements_level(FILE *out, const rad_mesh *m, const double *B, const int *level)
+rad_status rad_export_elements_level(FILE *out, const rad_mesh *m, const double *B,
+                                     const int *level)
 {
     const int n = m->nelements;
     fprintf(out, "element\tsurface\tgi\tgj\tcx\tcy\tcz\tnx\tny\tnz\tarea\tr\tg\tb%s\n",
@@ -59,7 +60,7 @@ int rad_export_elements_level(FILE *out, const rad_mesh *m, const double *B, con
             fprintf(out, "\t%d", level[e]);
         fputc('\n', out);
     }
-    return ferror(out) ? -1 : 0;
+    return ferror(out) ? RAD_ERR_IO : RAD_OK;
 }
 
 /* ---- big tables: formatted in parallel, written in order ------------------
@@ -109,6 +110,13 @@ static void pass_turn(turn *t)
     pthread_mutex_unlock(&t->lock);
 }
 
+/* A writer's status from write_items' 0, -1 (a write error) or -2 (out of
+ * memory). */
+static rad_status as_status(int r)
+{
+    return r == 0 ? RAD_OK : r == -2 ? RAD_ERR_NOMEM : RAD_ERR_IO;
+}
+
 static int write_items(FILE *out, size_t nitems, size_t item_max, item_fmt fmt,
                        const void *ctx)
 {
@@ -122,7 +130,7 @@ static int write_items(FILE *out, size_t nitems, size_t item_max, item_fmt fmt,
         buf = malloc(item_max);
         if (!buf) {
             errno = ENOMEM;
-            return -1;
+            return -2;
         }
     }
     const size_t nblocks = (nitems + per_block - 1) / per_block;
@@ -194,15 +202,15 @@ static size_t ff_table_row(char *buf, const void *ctx, size_t i)
     return (size_t)(p - buf);
 }
 
-int rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
+rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
 {
     if (fputs("i\tj\tF\terror\n", out) == EOF)
-        return -1;
+        return RAD_ERR_IO;
     const size_t m = (size_t)(n > 0 ? n : 0);
     char *index = malloc(m * INDEX_W + 1);
     if (!index) {
         errno = ENOMEM;
-        return -1;
+        return RAD_ERR_NOMEM;
     }
     for (size_t j = 0; j < m; j++) {
         char *s = index + j * INDEX_W;
@@ -213,7 +221,7 @@ int rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
     const ff_table t = {F, E, m, index};
     const int status = write_items(out, m, m * FF_LINE_MAX + INDEX_W, ff_table_row, &t);
     free(index);
-    return status;
+    return as_status(status);
 }
 
 typedef struct mm_column {
@@ -232,20 +240,20 @@ static size_t mm_column_lines(char *buf, const void *ctx, size_t j)
     return (size_t)(p - buf);
 }
 
-int rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment)
+rad_status rad_export_matrix_market(FILE *out, const double *F, int n, const char *comment)
 {
     fprintf(out, "%%%%MatrixMarket matrix array real general\n");
     if (comment)
         fprintf(out, "%% %s\n", comment);
     fprintf(out, "%d %d\n", n, n);
     if (ferror(out))
-        return -1;
+        return RAD_ERR_IO;
     const mm_column c = {F, (size_t)(n > 0 ? n : 0)};
-    return write_items(out, c.n, c.n * RAD_FMT_G_MAX + 1, mm_column_lines, &c);
+    return as_status(write_items(out, c.n, c.n * RAD_FMT_G_MAX + 1, mm_column_lines, &c));
 }
 
-int rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *m,
-                             const double *FS, const double *ES, const double *AS)
+rad_status rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *m,
+                                    const double *FS, const double *ES, const double *AS)
 {
     const int ns = m->nsurfaces;
     fprintf(out, "S\tK\tF\terror\tS_line\tK_line\tS_area\n");
@@ -256,11 +264,11 @@ int rad_export_surface_table(FILE *out, const rad_scene *scene, const rad_mesh *
                     ES ? ES[k] : (double)NAN, scene->surfaces[S].line, scene->surfaces[K].line,
                     AS[S]);
         }
-    return ferror(out) ? -1 : 0;
+    return ferror(out) ? RAD_ERR_IO : RAD_OK;
 }
 
-int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const double *B,
-                   const double *Bv)
+rad_status rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const double *B,
+                          const double *Bv)
 {
     const int n = m->nelements, nv = m->nvertices;
     int maxv = 0;
@@ -301,7 +309,7 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
     if (!start || !order) {
         free(start);
         free(order);
-        return -1;
+        return RAD_ERR_NOMEM;
     }
     for (int e = 0; e < n; e++) /* a counting sort, stable */
         start[m->elements[e].nverts + 1]++;
@@ -321,7 +329,7 @@ int rad_export_ply(FILE *out, const rad_scene *scene, const rad_mesh *m, const d
     }
     free(start);
     free(order);
-    return ferror(out) ? -1 : 0;
+    return ferror(out) ? RAD_ERR_IO : RAD_OK;
 }
 
 /* JSON numbers: %.17g, and null for what is not a finite number. */
@@ -353,7 +361,7 @@ static void jstr(FILE *out, const char *key, const char *s)
     fputs(",\n", out);
 }
 
-int rad_export_report(FILE *out, const rad_run_info *in)
+rad_status rad_export_report(FILE *out, const rad_run_info *in)
 {
     const rad_solve_report *s = in->solve;
     const rad_ff_stats *f = in->ff;
@@ -422,5 +430,5 @@ int rad_export_report(FILE *out, const rad_run_info *in)
             fprintf(out, "  \"b_negative\": %ld,\n", in->b_negative);
     }
     fprintf(out, "  \"format\": 1\n}\n");
-    return ferror(out) ? -1 : 0;
+    return ferror(out) ? RAD_ERR_IO : RAD_OK;
 }

@@ -73,7 +73,7 @@ static int put_le_doubles(FILE *out, const double *x, size_t n)
 #endif
 }
 
-int rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols)
+rad_status rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols)
 {
     char h[NPY_HEADER_MAX];
     const size_t hlen = npy_header(h, rows, cols);
@@ -81,19 +81,19 @@ int rad_export_npy(FILE *out, const double *A, size_t rows, size_t cols)
                                              (unsigned char)(hlen & 0xff),
                                              (unsigned char)(hlen >> 8)};
     if (fwrite(pre, 1, sizeof pre, out) != sizeof pre || fwrite(h, 1, hlen, out) != hlen)
-        return -1;
+        return RAD_ERR_IO;
     if (put_le_doubles(out, A, rows * cols))
-        return -1;
-    return ferror(out) ? -1 : 0;
+        return RAD_ERR_IO;
+    return ferror(out) ? RAD_ERR_IO : RAD_OK;
 }
 
-int rad_export_matrix_npy(FILE *out, const double *F, int n)
+rad_status rad_export_matrix_npy(FILE *out, const double *F, int n)
 {
     const size_t m = n > 0 ? (size_t)n : 0;
     return rad_export_npy(out, F, m, m);
 }
 
-int rad_export_elements_npy(FILE *out, const rad_mesh *mesh, const double *B)
+rad_status rad_export_elements_npy(FILE *out, const rad_mesh *mesh, const double *B)
 {
     const size_t n = mesh->nelements > 0 ? (size_t)mesh->nelements : 0;
     return rad_export_npy(out, B, n, RAD_BANDS);

@@ -176,6 +176,30 @@ static void check_elements_npy(void)
     rad_scene_free(&scene);
 }
 
+/* A stream that cannot be written (a file opened for reading): every
+ * writer says RAD_ERR_IO, the status the whole library uses. */
+static void check_write_error(void)
+{
+    char path[] = "/tmp/test_export_XXXXXX";
+    const int fd = mkstemp(path);
+    FILE *r = fd >= 0 ? fdopen(fd, "r") : NULL;
+    if (!r) {
+        tap_ok(0, "a read-only stream for the write-error checks");
+        return;
+    }
+    double F[4] = {0, 0.5, 0.5, 0};
+    int bad = 0;
+    bad += rad_export_ff_table(r, F, NULL, 2) != RAD_ERR_IO;
+    clearerr(r);
+    bad += rad_export_matrix_market(r, F, 2, NULL) != RAD_ERR_IO;
+    clearerr(r);
+    bad += rad_export_matrix_npy(r, F, 2) != RAD_ERR_IO;
+    fclose(r);
+    remove(path);
+    tap_ok(bad == 0, "a stream that cannot be written: the table, Matrix Market and .npy "
+                     "writers return RAD_ERR_IO (%d did not)", bad);
+}
+
 int main(void)
 {
     /* one block; 34 blocks of up to 18 rows (table) and 14 of up to 43 columns
@@ -185,5 +209,6 @@ int main(void)
     check_writers(600, 1);
     check_writers(1370, 0);
     check_elements_npy();
+    check_write_error();
     return tap_done();
 }
