@@ -5,7 +5,7 @@
 set -e
 pkgs="build-essential autoconf automake libtool autoconf-archive pkg-config
   libcgal-dev libgmp-dev libmpfr-dev liblapack-dev libopenblas-dev
-  libcairo2-dev help2man python3 python3-mpmath valgrind
+  libcairo2-dev help2man python3 python3-mpmath valgrind assimp-testmodels
   libscalapack-openmpi-dev libopenmpi-dev openmpi-bin"
 missing=
 for p in $pkgs; do

@@ -61,6 +61,23 @@ typedef struct rad_camera {
     double fov;                 /* vertical, degrees */
 } rad_camera;
 
+/* What reading a foreign format (OBJ) repaired, so that the caller can say
+ * it: counts, and the input line of the first of each kind (0: none). */
+typedef struct rad_scene_repairs {
+    int undefined_materials;    /* faces whose usemtl named no material read
+                                   (or none): given RAD_DEFAULT_GREY */
+    int spaced_names;           /* names with spaces, with bytes beyond ASCII,
+                                   or empty, taken as written */
+    int degenerate_faces;       /* faces left out: fewer than 3 distinct
+                                   corners, or no area */
+    int split_faces;            /* faces not planar or not convex, cut into */
+    int split_triangles;        /* ... this many triangles (ear clipping) */
+    int first_line[4];          /* of each kind above, in that order */
+} rad_scene_repairs;
+
+/* The material given to faces whose material is undefined. */
+#define RAD_DEFAULT_GREY "(default grey 0.5)"
+
 typedef struct rad_scene {
     char *filename;
     rad_material *materials;
@@ -70,6 +87,7 @@ typedef struct rad_scene {
     rad_object *objects;
     int nobjects;
     rad_camera camera;
+    rad_scene_repairs repairs;  /* all 0 for the native format and View3D's */
 } rad_scene;
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
@@ -88,9 +106,14 @@ typedef enum rad_scene_format {
     RAD_SCENE_FORMAT_VS3        /* View3D 3.x input */
 } rad_scene_format;
 /* rad_scene_load in a given format, whatever the name (standard input,
- * a file with another ending). */
+ * a file with another ending).  An OBJ file is read as mainstream
+ * importers read it, its repairs counted in scene->repairs; with
+ * RAD_SCENE_STRICT in flags every such repair is the error it names
+ * instead (the native format and View3D's are always strict). */
+#define RAD_SCENE_STRICT 1u
 RAD_API rad_status rad_scene_load_format(rad_scene *scene, const char *path,
-                                         rad_scene_format format, rad_error *err);
+                                         rad_scene_format format, unsigned flags,
+                                         rad_error *err);
 /* Parse scene text held in memory; `name` is used in messages and picks
  * the format by its ending as rad_scene_load does. */
 RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,

@@ -67,7 +67,8 @@ enum {
     "      --threads N         OpenMP threads (default: all cores)\n"            \
     "      --strict            an unmet accuracy promise (a form factor whose own\n" \
     "                          error estimate exceeds the mode's 1e-6 or 1e-9)\n"\
-    "                          is an error (exit 1), not a warning\n"           \
+    "                          is an error (exit 1), not a warning; so is each\n"\
+    "                          repair of an OBJ file (radiosity-scene(5))\n"     \
     "      --format F          the scene's format: scene, obj or vs3 (default: by\n"\
     "                          its name, .obj or .vs3, else scene; for '-',\n" \
     "                          standard input, and other names)\n"              \

@@ -321,13 +321,41 @@ int cli_reported_elements(const rad_scene *scene, const rad_mesh *mesh)
     return n;
 }
 
+/* One line per kind of repair the reader made (OBJ), each with the input
+ * line of its first. */
+static void say_repairs(const char *path, const rad_scene_repairs *p)
+{
+    char at[64];
+    const int *l = p->first_line;
+#define AT(k) (l[k] ? (snprintf(at, sizeof at, ":%d", l[k]), at) : "")
+    if (p->undefined_materials)
+        cli_error("%s%s: repaired: %d face%s use a material that no mtllib defines: given "
+                  "the default grey (reflectance 0.5)",
+                  path, AT(0), p->undefined_materials, p->undefined_materials == 1 ? "" : "s");
+    if (p->spaced_names)
+        cli_error("%s: repaired: %d name%s with spaces, with bytes beyond ASCII, or empty, "
+                  "taken as written", path, p->spaced_names, p->spaced_names == 1 ? "" : "s");
+    if (p->degenerate_faces)
+        cli_error("%s%s: repaired: %d face%s without area (fewer than 3 distinct corners, or "
+                  "all on a line) left out",
+                  path, AT(2), p->degenerate_faces, p->degenerate_faces == 1 ? "" : "s");
+    if (p->split_faces)
+        cli_error("%s%s: repaired: %d face%s not planar, not convex or running round twice "
+                  "cut into %d triangles",
+                  path, AT(3), p->split_faces, p->split_faces == 1 ? "" : "s",
+                  p->split_triangles);
+#undef AT
+}
+
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
 {
     rad_error err;
-    if (rad_scene_load_format(scene, path, c->format, &err) != RAD_OK) {
+    if (rad_scene_load_format(scene, path, c->format, c->strict ? RAD_SCENE_STRICT : 0, &err) !=
+        RAD_OK) {
         cli_error_rec(&err);
         return 1;
     }
+    say_repairs(path, &scene->repairs);
     if (c->mesh_n > 0) {
         rad_scene_set_mesh(scene, c->mesh_n, c->mesh_m);
         /* --mesh cuts quadrilaterals only: say so when it cuts nothing */

@@ -499,7 +499,7 @@ int cli_run_solve(cli_run *run)
                       : "");
     if (no_light(&run->res))
         cli_error("warning: every radiosity is 0: no surface of the scene emits (a material "
-                  "with emit above 0)");
+                  "with emit above 0; in an OBJ file's MTL, Ke)");
     else
         balance_warning(run);
     if (!s->common.quiet)

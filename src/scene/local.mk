@@ -6,6 +6,7 @@ src_libradcore_la_SOURCES += \
 	%reldir%/changeapply.c \
 	%reldir%/changeread.c \
 	%reldir%/objread.c %reldir%/objread.h \
+	%reldir%/objrepair.c %reldir%/objrepair.h \
 	%reldir%/polycheck.c %reldir%/polycheck.h \
 	%reldir%/scene.c \
 	%reldir%/scenebuild.c %reldir%/scenebuild.h \

@@ -13,11 +13,15 @@
  *     the last vertex read (-1 is the last); T and N must name a `vt` and
  *     `vn` read before, which are otherwise ignored.  A face of 4 corners
  *     becomes a quad (so `mesh` and --mesh apply), any other a polygon;
- *     radi_polygon_check refuses what is not planar and convex;
+ *     what radi_polygon_check refuses (not planar, not convex, no area)
+ *     objrepair.c repairs, unless RAD_SCENE_STRICT;
  *   - `usemtl NAME` picks the material of the faces after it, from the
  *     `mtllib` files read so far (opened relative to the OBJ file); faces
  *     before any usemtl get the material "(no material)": black (Kd 0) and
- *     dark (Ke 0).  An mtllib file name has at most 255 bytes, so that a
+ *     dark (Ke 0).  A name that no library defines gives RAD_DEFAULT_GREY
+ *     (a repair); names may hold spaces and bytes beyond ASCII (repairs).
+ *     Every repair is counted in rad_scene_repairs; RAD_SCENE_STRICT makes
+ *     each the error it names.  An mtllib file name has at most 255 bytes, so that a
  *     message about its lines keeps their FILE:LINE;
  *   - `o NAME` and `g NAME...` start an object (the first name of a g);
  *     faces after them belong to it until the next o or g (a g without a
@@ -41,6 +45,7 @@
 #include <string.h>
 
 #include "scene/objread.h"
+#include "scene/objrepair.h"
 #include "util/util.h"
 #include "scene/polycheck.h"
 #include "scene/scenebuild.h"
@@ -61,12 +66,34 @@ typedef struct obj_state {
     int mtl_done;               /* the in-memory MTL was read */
     char **libs;                /* mtllib paths read, not read twice */
     int nlibs;
+    unsigned flags;             /* RAD_SCENE_STRICT: no repairs (objrepair.c) */
+    int undefined;              /* the usemtl in force named no material */
 } obj_state;
 
 /* RAD_ERR_NOMEM at the current line. */
 static rad_status no_memory(const rad_lines *r)
 {
     return radi_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name, r->line);
+}
+
+/* The bytes of a line: printable ASCII, as in scene files; or, for a
+ * name statement (newmtl, usemtl, o, g) read with repairs, any byte but a
+ * control character (exporters write names in UTF-8 or Latin-1: they are
+ * matched byte for byte), counted as a repair. */
+static rad_status line_bytes(obj_state *o, rad_lines *r, int name)
+{
+    if (!name || (o->flags & RAD_SCENE_STRICT))
+        return radi_lines_ascii(r, 0);
+    int high = 0;
+    for (int k = 1; k < r->ntok; k++)
+        for (const unsigned char *p = (const unsigned char *)r->tok[k]; *p; p++) {
+            if (*p < 0x20 || *p == 0x7f)
+                return radi_lines_ascii(r, k);
+            high |= *p >= 0x80;
+        }
+    if (high)
+        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, 0);
+    return RAD_OK;
 }
 
 static int is_word(const char *t, const char *const *words)
@@ -96,21 +123,42 @@ static rad_status mtl_close(obj_state *o, rad_lines *r, mtl_def *d)
     return radi_build_add_material(&o->b, &d->m, r->name, r->line);
 }
 
+/* The material name of a newmtl or usemtl line into name: its one word,
+ * or (a repair) its words joined by single spaces, or "" for none. */
+static rad_status material_name(obj_state *o, rad_lines *r, const char *what,
+                                char name[RAD_NAME_MAX])
+{
+    if (r->ntok != 2 && (o->flags & RAD_SCENE_STRICT))
+        return radi_lines_fail(r, r->ntok == 1 ? "%s needs a name" : "%s takes one name (no spaces)",
+                               what);
+    size_t len = 0;
+    name[0] = '\0';
+    for (int k = 1; k < r->ntok; k++) {
+        const size_t t = strlen(r->tok[k]) + (k > 1);
+        if (len + t >= RAD_NAME_MAX)
+            return radi_lines_fail(r, "material name is longer than %d characters",
+                                   RAD_NAME_MAX - 1);
+        if (k > 1)
+            name[len++] = ' ';
+        strcpy(name + len, r->tok[k]);
+        len += strlen(r->tok[k]);
+    }
+    return RAD_OK;
+}
+
 static rad_status mtl_new(obj_state *o, rad_lines *r, mtl_def *d)
 {
     rad_status st = mtl_close(o, r, d);
-    if (st)
+    char name[RAD_NAME_MAX];
+    if (st || (st = material_name(o, r, "newmtl", name)))
         return st;
     if (r->ntok != 2)
-        return radi_lines_fail(r, "newmtl takes one name (no spaces)");
-    if (strlen(r->tok[1]) >= RAD_NAME_MAX)
-        return radi_lines_fail(r, "material name is longer than %d characters",
-                              RAD_NAME_MAX - 1);
-    int prev = radi_build_find_material(&o->b, r->tok[1]);
+        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, 0);
+    int prev = radi_build_find_material(&o->b, name);
     if (prev >= 0)
-        return radi_lines_fail(r, "material '%s' is already defined", r->tok[1]);
+        return radi_lines_fail(r, "material '%s' is already defined", name);
     memset(d, 0, sizeof *d);
-    strcpy(d->m.name, r->tok[1]);
+    strcpy(d->m.name, name);
     d->m.line = r->line;
     d->open = 1;
     return RAD_OK;
@@ -138,7 +186,7 @@ static rad_status mtl_line(obj_state *o, rad_lines *r, mtl_def *d)
     const char *k = r->tok[0];
     if (is_word(k, ignored) || strncmp(k, "map_", 4) == 0)
         return RAD_OK;
-    rad_status st = radi_lines_ascii(r, 0);
+    rad_status st = line_bytes(o, r, strcmp(k, "newmtl") == 0);
     if (st)
         return st;
     if (strcmp(k, "newmtl") == 0)
@@ -323,10 +371,14 @@ static rad_status obj_face(obj_state *o)
     for (int k = 0; k < n && st == RAD_OK; k++)
         st = face_corner(o, r->tok[k + 1], &v[k]);
     if (!st)
-        st = radi_polygon_check(v, n, "face", r->name, r->line, r->err);
-    if (!st)
         st = face_material(o, &mat);
     if (st) {
+        free(v);
+        return st;
+    }
+    if (!(o->flags & RAD_SCENE_STRICT))
+        return radi_obj_repair_face(&o->b, r, v, n, mat, o->object, o->undefined);
+    if ((st = radi_polygon_check(v, n, "face", r->name, r->line, r->err))) {
         free(v);
         return st;
     }
@@ -337,13 +389,30 @@ static rad_status obj_face(obj_state *o)
 static rad_status obj_usemtl(obj_state *o)
 {
     rad_lines *r = o->r;
+    char name[RAD_NAME_MAX];
+    rad_status st = material_name(o, r, "usemtl", name);
+    if (st)
+        return st;
     if (r->ntok != 2)
-        return radi_lines_fail(r, "usemtl takes one material name");
-    o->material = radi_build_find_material(&o->b, r->tok[1]);
-    if (o->material < 0)
+        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, 0);
+    o->material = radi_build_find_material(&o->b, name);
+    o->undefined = o->material < 0;
+    if (o->material >= 0)
+        return RAD_OK;
+    if (o->flags & RAD_SCENE_STRICT)
         return radi_lines_fail(r, "undefined material '%s' (no mtllib read so far defines it)",
-                              r->tok[1]);
-    return RAD_OK;
+                              name);
+    /* a repair: the faces after it are grey (counted as they come) */
+    o->material = radi_build_find_material(&o->b, RAD_DEFAULT_GREY);
+    if (o->material >= 0)
+        return RAD_OK;
+    rad_material m;
+    memset(&m, 0, sizeof m);
+    strcpy(m.name, RAD_DEFAULT_GREY);
+    m.reflect[0] = m.reflect[1] = m.reflect[2] = 0.5;
+    m.line = r->line;
+    o->material = o->b.s.nmaterials;
+    return radi_build_add_material(&o->b, &m, r->name, r->line);
 }
 
 static rad_status obj_group(obj_state *o)
@@ -390,7 +459,8 @@ static rad_status obj_line(obj_state *o)
     }
     if (is_word(k, ignored))
         return RAD_OK;
-    rad_status st = radi_lines_ascii(r, 0);
+    rad_status st = line_bytes(o, r, strcmp(k, "usemtl") == 0 || strcmp(k, "o") == 0 ||
+                                         strcmp(k, "g") == 0);
     if (st)
         return st;
     if (strcmp(k, "v") == 0)
@@ -410,12 +480,14 @@ static rad_status obj_line(obj_state *o)
                              "read; radiosity-scene(5) lists what is ignored)", k);
 }
 
-rad_status radi_obj_read(rad_scene *scene, rad_lines *r, const char *mtl, size_t mtl_len)
+rad_status radi_obj_read(rad_scene *scene, rad_lines *r, const char *mtl, size_t mtl_len,
+                         unsigned flags)
 {
     obj_state o;
     int got;
     memset(&o, 0, sizeof o);
     o.r = r;
+    o.flags = flags;
     o.material = o.object = -1;
     o.mtl = mtl;
     o.mtl_len = mtl_len;

@@ -17,6 +17,7 @@
  * mtl is not NULL, the first `mtllib` reads mtl[0..mtl_len) instead, named
  * by its first file name, and later ones read nothing (tests, fuzzing).
  * On failure *scene is left empty. */
-rad_status radi_obj_read(rad_scene *scene, rad_lines *r, const char *mtl, size_t mtl_len);
+rad_status radi_obj_read(rad_scene *scene, rad_lines *r, const char *mtl, size_t mtl_len,
+                         unsigned flags);
 
 #endif /* RAD_OBJREAD_H */

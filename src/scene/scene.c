@@ -489,11 +489,11 @@ static char comment_of(scene_format f)
 }
 
 static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
-                              scene_format f)
+                              scene_format f, unsigned flags)
 {
     switch (f) {
     case FORMAT_OBJ:
-        return radi_obj_read(scene, r, NULL, 0);
+        return radi_obj_read(scene, r, NULL, 0, flags);
     case FORMAT_VS3:
         return radi_vs3_read(scene, r);
     default:
@@ -508,18 +508,18 @@ rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
     name = name ? name : "-";
     scene_format f = format_of(name);
     radi_lines_mem(&r, text, len, name, comment_of(f), err);
-    rad_status st = read_format(scene, &r, name, f);
+    rad_status st = read_format(scene, &r, name, f, 0);
     radi_lines_close(&r);
     return st;
 }
 
 rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err)
 {
-    return rad_scene_load_format(scene, path, RAD_SCENE_FORMAT_AUTO, err);
+    return rad_scene_load_format(scene, path, RAD_SCENE_FORMAT_AUTO, 0, err);
 }
 
 rad_status rad_scene_load_format(rad_scene *scene, const char *path, rad_scene_format format,
-                                 rad_error *err)
+                                 unsigned flags, rad_error *err)
 {
     rad_lines r;
     scene_format f = format == RAD_SCENE_FORMAT_OBJ     ? FORMAT_OBJ
@@ -529,7 +529,7 @@ rad_status rad_scene_load_format(rad_scene *scene, const char *path, rad_scene_f
     memset(scene, 0, sizeof *scene);
     rad_status st = radi_lines_open(&r, path, comment_of(f), err);
     if (st == RAD_OK)
-        st = read_format(scene, &r, path, f);
+        st = read_format(scene, &r, path, f, flags);
     radi_lines_close(&r);
     return st;
 }

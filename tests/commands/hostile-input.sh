@@ -158,7 +158,12 @@ case_ obj-good.obj 0 '' "${SQ}f 1 2 3 4\n"
 case_ obj-crlf-bom.obj 0 '' "\357\273\277v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"
 case_ obj-nul.obj 1 '5: line contains a NUL character*' "${SQ}f 1 2\000 3\n"
 case_ obj-utf16.obj 1 '1: line contains a NUL character (byte 0x00 at column 4; a UTF-16 file?*' '\377\376v\000 \000'
-case_ obj-utf8-name.obj 1 '5: non-ASCII character (byte 0xC3*' "${SQ}o caf\303\251\nf 1 2 3\n"
+# a name beyond ASCII is taken byte for byte (a repair, said), and refused
+# with --strict as before
+case_ obj-utf8-name.obj 0 ' repaired: 1 name with spaces, with bytes beyond ASCII, or empty*' "${SQ}o caf\303\251\nf 1 2 3\n"
+"$RADIOSITY" formfactor --strict "$work/obj-utf8-name.obj" > "$work/out" 2> "$work/err"
+[ $? -eq 1 ] && grep -q "obj-utf8-name.obj:5: non-ASCII character (byte 0xC3" "$work/err"
+ok $? "obj-utf8-name.obj --strict: refused at line 5 ($(head -n 1 "$work/err"))"
 case_ obj-utf8-ignored.obj 0 '' "${SQ}# caf\303\251\nvt 0 0 caf\303\251\ns caf\303\251\nf 1 2 3\n"
 case_ obj-index-overflow.obj 1 "5: vertex must be from -2147483647 to 2147483647, not '99999999999999999999'*" "${SQ}f 99999999999999999999 1 2\n"
 case_ obj-index-min.obj 1 '5: vertex index -2147483647, but 4 have been read*' "${SQ}f -2147483647 1 2\n"

@@ -94,7 +94,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t obj_len, mtl_at = split(data, size, &obj_len);
     memset(&err, 0, sizeof err);
     radi_lines_mem(&r, (const char *)data, obj_len, "fuzz.obj", '#', &err);
-    rad_status st = radi_obj_read(&scene, &r, (const char *)data + mtl_at, size - mtl_at);
+    rad_status st = radi_obj_read(&scene, &r, (const char *)data + mtl_at, size - mtl_at, 0);
     radi_lines_close(&r);
     if (st != RAD_OK) {
         if (err.status != st || !message_ok(err.message) || !fuzz_scene_empty(&scene))

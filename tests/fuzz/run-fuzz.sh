@@ -50,10 +50,10 @@ printf '#define PACKAGE_VERSION "fuzz"\n' > "$work/config.h"
 # The sources each harness needs, and its corpus and dictionary.
 sources() {
     case $1 in
-        scene) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
-        ply) echo io/plyread.c util/readfile.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c util/status.c render/render.c render/plot.c cli/atomicfile.c mesh/mesh.c ;;
-        obj|vs3) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
-        changes) echo scene/changeread.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/scenepresent.c scene/objread.c scene/vs3read.c util/readnum.c util/status.c util/readfile.c ;;
+        scene) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/objrepair.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
+        ply) echo io/plyread.c util/readfile.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/objrepair.c scene/vs3read.c util/readnum.c util/status.c render/render.c render/plot.c cli/atomicfile.c mesh/mesh.c ;;
+        obj|vs3) echo scene/scene.c scene/polycheck.c scene/scenebuild.c scene/objread.c scene/objrepair.c scene/vs3read.c util/readnum.c mesh/mesh.c util/status.c util/readfile.c ;;
+        changes) echo scene/changeread.c scene/scene.c scene/polycheck.c scene/scenebuild.c scene/scenepresent.c scene/objread.c scene/objrepair.c scene/vs3read.c util/readnum.c util/status.c util/readfile.c ;;
         matrix) echo io/ffread.c io/npyread.c io/vfread.c util/readfile.c util/readnum.c util/status.c ;;
     esac
 }

@@ -31,14 +31,23 @@ static const char *MTL = "# materials\n"
 static const char *SQUARE = "mtllib t.mtl\n"
                             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
-static rad_status parse(rad_scene *s, const char *obj, const char *mtl, rad_error *err)
+/* Read obj (its mtllib reading mtl) with `flags`; the checks below that
+ * expect refusals read strictly (RAD_SCENE_STRICT refuses every repair),
+ * repairs() reads as the program does by default. */
+static rad_status parse_flags(rad_scene *s, const char *obj, const char *mtl, unsigned flags,
+                              rad_error *err)
 {
     rad_lines r;
     memset(err, 0, sizeof *err);
     radi_lines_mem(&r, obj, strlen(obj), "t.obj", '#', err);
-    rad_status st = radi_obj_read(s, &r, mtl, strlen(mtl));
+    rad_status st = radi_obj_read(s, &r, mtl, strlen(mtl), flags);
     radi_lines_close(&r);
     return st;
+}
+
+static rad_status parse(rad_scene *s, const char *obj, const char *mtl, rad_error *err)
+{
+    return parse_flags(s, obj, mtl, RAD_SCENE_STRICT, err);
 }
 
 static void bad_in(const char *obj, const char *mtl, const char *file, int line,
@@ -217,7 +226,7 @@ static void errors(void)
     bad(WITH("v 1 2 nan\n"), 7, "vertex must be finite");
     bad(WITH("v 1 2 3abc\n"), 7, "'3abc' is not a number (vertex)");
     bad(WITH("usemtl brass\n"), 7, "undefined material 'brass'");
-    bad(WITH("usemtl\n"), 7, "usemtl takes one material name");
+    bad(WITH("usemtl\n"), 7, "usemtl needs a name");
     bad(WITH("o two words\n"), 7, "o takes one object name");
     bad(WITH("surf 0 1 0 1 1 2 3\n"), 7, "free-form geometry ('surf')");
     bad(WITH("call other.obj\n"), 7, "unknown OBJ statement 'call'");
@@ -242,10 +251,111 @@ static void errors(void)
     bad_mtl("newmtl a b\n", 1, "newmtl takes one name");
 }
 
+/* The sum of the surfaces' areas (Newell), for the cut faces. */
+static double total_area(const rad_scene *s)
+{
+    double a = 0;
+    for (int k = 0; k < s->nsurfaces; k++) {
+        const rad_surface *f = &s->surfaces[k];
+        rad_vec3 n = {0, 0, 0};
+        for (int v = 0; v < f->nverts; v++) {
+            const rad_vec3 p = f->verts[v], q = f->verts[(v + 1) % f->nverts];
+            n.x += p.y * q.z - p.z * q.y;
+            n.y += p.z * q.x - p.x * q.z;
+            n.z += p.x * q.y - p.y * q.x;
+        }
+        a += 0.5 * sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    }
+    return a;
+}
+
+/* Read without RAD_SCENE_STRICT: the repairs importers make, each
+ * counted; what is not repairable still refused. */
+static void repairs(void)
+{
+    rad_scene s;
+    rad_error err;
+    const char *mtl = "newmtl Hard Shiny  White\nKd 0.8\nnewmtl Terrain\xe6k\nKd 0.3\n";
+    /* an undefined material, names with spaces and Latin-1, a face whose
+     * corners coincide, a corner written twice in a row */
+    const char *obj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                      "usemtl Default\nf 1 2 3 4\nusemtl  Hard Shiny White \nf 1 2 3\n"
+                      "usemtl Terrain\xe6k\nf 1 3 4\nf 1 1 1\nf 1 2 2 3 4\n";
+    rad_status st = parse_flags(&s, obj, mtl, 0, &err);
+    const rad_scene_repairs *p = &s.repairs;
+    int grey = st == RAD_OK ? s.surfaces[0].material : -1;
+    tap_ok(st == RAD_OK && s.nsurfaces == 5 && grey >= 0 &&
+               strcmp(s.materials[grey].name, RAD_DEFAULT_GREY) == 0 &&
+               s.materials[grey].reflect[1] == 0.5 && p->undefined_materials == 1 &&
+               p->first_line[0] == 7 && p->spaced_names == 4 && p->degenerate_faces == 1 &&
+               p->first_line[2] == 12 && p->split_faces == 1 && p->split_triangles == 2,
+           "repairs: default grey for 'Default' (line %d), %d names taken as written, %d face "
+           "left out (line %d), %d face with a repeated corner cut into %d triangles (%s)",
+           p->first_line[0], p->spaced_names, p->degenerate_faces, p->first_line[2],
+           p->split_faces, p->split_triangles, st ? err.message : "ok");
+    tap_ok(st == RAD_OK && s.nsurfaces == 5 &&
+               strcmp(s.materials[s.surfaces[1].material].name, "Hard Shiny White") == 0 &&
+               strcmp(s.materials[s.surfaces[2].material].name, "Terrain\xe6k") == 0,
+           "names with spaces match their newmtl, runs of spaces as one; Latin-1 byte for byte");
+    rad_scene_free(&s);
+
+    /* not planar (a quad folded by 0.01), not convex (an L of area 3), an
+     * outline run round twice: cut into triangles of the same area, in
+     * the plane of the cut */
+    const char *cut = "mtllib t.mtl\nusemtl white\n"
+                      "v 0 0 0\nv 1 0 0\nv 1 1 0.01\nv 0 1 0\nf 1 2 3 4\n"
+                      "v 0 0 1\nv 2 0 1\nv 2 1 1\nv 1 1 1\nv 1 2 1\nv 0 2 1\n"
+                      "f 5 6 7 8 9 10\n"
+                      "f 1 2 4 1 2 4\n";
+    st = parse_flags(&s, cut, MTL, 0, &err);
+    /* the folded quad: two triangles of areas 0.5 * sqrt(1 + 0.01^2) and 0.5 (one holds the
+     * fold, one is flat: which depends on the diagonal), or both tilted */
+    double fold = 0;
+    for (int k = 0; st == RAD_OK && k < 2; k++) {
+        rad_scene one = s;
+        one.surfaces = s.surfaces + k;
+        one.nsurfaces = 1;
+        fold += total_area(&one);
+    }
+    const double l_area = st == RAD_OK ? total_area(&s) - fold - 0.5 : 0;
+    tap_ok(st == RAD_OK && s.repairs.split_faces == 3 && s.nsurfaces == 2 + 4 + 1 &&
+               fabs(l_area - 3) < 1e-12 && fold > 1 - 1e-12 && fold < 1 + 1e-4,
+           "a folded quad (2 triangles, area %.12g), an L (4 triangles, area %.15g, 3 by "
+           "its sides), a face run round twice (once: area 0.5): all cut (%s)", fold, l_area,
+           st ? err.message : "ok");
+    for (int k = 0; st == RAD_OK && k < s.nsurfaces; k++) {
+        const rad_surface *f = &s.surfaces[k];
+        const rad_vec3 a = f->verts[0], b = f->verts[1], c = f->verts[2];
+        const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        if (!(f->nverts == 3 && nz > 0)) {
+            tap_ok(0, "triangle %d faces as its face did (+z)", k);
+            st = RAD_ERR_INVALID;
+        }
+    }
+    tap_ok(st == RAD_OK, "every triangle faces as its face did (+z)");
+    rad_scene_free(&s);
+
+    /* a bow tie of unequal loops crosses itself (at (2/3, 2/3)): no
+     * triangles cover it, refused */
+    const char *tie = "mtllib t.mtl\nusemtl white\nv 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 2 0\n"
+                      "f 1 2 3 4\n";
+    st = parse_flags(&s, tie, MTL, 0, &err);
+    tap_ok(st == RAD_ERR_PARSE && strstr(err.message, "t.obj:7: face is self-intersecting"),
+           "a bow tie is refused even with repairs: %s", err.message);
+    rad_scene_free(&s);
+
+    /* strict: each of the repairs above is the error it names */
+    st = parse_flags(&s, obj, mtl, RAD_SCENE_STRICT, &err);
+    tap_ok(st == RAD_ERR_PARSE, "RAD_SCENE_STRICT refuses the file repaired above: %s",
+           err.message);
+    rad_scene_free(&s);
+}
+
 int main(void)
 {
     index_forms();
     relative_indices();
+    repairs();
     materials_and_kinds();
     groups();
     mtllib_once();
