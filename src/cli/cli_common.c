@@ -333,8 +333,9 @@ static void say_repairs(const char *path, const rad_scene_repairs *p)
                   "the default grey (reflectance 0.5)",
                   path, AT(0), p->undefined_materials, p->undefined_materials == 1 ? "" : "s");
     if (p->spaced_names)
-        cli_error("%s: repaired: %d name%s with spaces, with bytes beyond ASCII, or empty, "
-                  "taken as written", path, p->spaced_names, p->spaced_names == 1 ? "" : "s");
+        cli_error("%s%s: repaired: %d name%s with spaces, with bytes beyond ASCII, or empty, "
+                  "taken as written",
+                  path, AT(1), p->spaced_names, p->spaced_names == 1 ? "" : "s");
     if (p->degenerate_faces)
         cli_error("%s%s: repaired: %d face%s without area (fewer than 3 distinct corners, or "
                   "all on a line) left out",

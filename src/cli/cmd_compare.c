@@ -281,12 +281,21 @@ static int run(compare_args *a, char **paths, const rad_mesh *mesh, int kept,
     double t1 = cli_seconds();
     if (ours(a, mesh, F, &E))
         goto done;
+    size_t m = n; /* the elements compared */
+    rad_mesh view = *mesh;
     if (embedded) {
-        /* the O surfaces' rows and columns are ours: they add no error */
-        memcpy(G, F, sizeof *G * nn);
-        for (int j = 0; j < kept; j++)
-            for (int i = 0; i < kept; i++)
-                G[i + (size_t)j * n] = W[i + (size_t)j * kept];
+        /* their kept x kept block against ours (compacted in place,
+         * column-major: each entry moves to or before where it was) */
+        m = (size_t)kept;
+        memcpy(G, W, sizeof *G * m * m);
+        for (size_t j = 0; j < m; j++)
+            for (size_t i = 0; i < m; i++) {
+                F[i + j * m] = F[i + j * n];
+                if (E)
+                    E[i + j * m] = E[i + j * n];
+            }
+        view.nelements = kept;
+        ctx.mesh = &view;
         if (!a->c.quiet)
             fprintf(stderr, CLI_PROGRAM ": their matrix leaves out the %zu elements of the O "
                             "surfaces, as View3D does: compared on the other %d\n",
@@ -294,9 +303,9 @@ static int run(compare_args *a, char **paths, const rad_mesh *mesh, int kept,
     }
     ctx.seconds_read = t1 - t0;
     ctx.seconds_ff = cli_seconds() - t1;
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < m; i++)
         A[i] = mesh->elements[i].area;
-    if (radi_ffcmp_run(&cmp, G, F, E, A, (int)n, &err) != RAD_OK) {
+    if (radi_ffcmp_run(&cmp, G, F, E, A, (int)m, &err) != RAD_OK) {
         cli_error_rec(&err);
         goto done;
     }

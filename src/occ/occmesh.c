@@ -69,9 +69,7 @@ static int cmp_vec(const void *pa, const void *pb)
  * whatever the surface's normal says); else 0. */
 static int outer_side(const rad_vec3 *p, int n, const rad_vec3 *o, int no, double tol)
 {
-    rad_vec3 nrm = {0, 0, 0};
-    for (int k = 0; k < n; k++)
-        nrm = v3_add(nrm, v3_cross(p[k], p[(k + 1) % n]));
+    rad_vec3 nrm = v3_newell(p, n); /* relative to p[0]: no cancellation */
     const double len = v3_norm(nrm);
     if (!(len > 0))
         return 0;

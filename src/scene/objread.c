@@ -67,6 +67,7 @@ typedef struct obj_state {
     char **libs;                /* mtllib paths read, not read twice */
     int nlibs;
     unsigned flags;             /* RAD_SCENE_STRICT: no repairs (objrepair.c) */
+    int named_at;               /* the OBJ line whose name was counted */
     int undefined;              /* the usemtl in force named no material */
 } obj_state;
 
@@ -91,8 +92,11 @@ static rad_status line_bytes(obj_state *o, rad_lines *r, int name)
                 return radi_lines_ascii(r, k);
             high |= *p >= 0x80;
         }
-    if (high)
-        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, 0);
+    if (high && !(r == o->r && o->named_at == r->line)) {
+        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, r == o->r ? r->line : 0);
+        if (r == o->r)
+            o->named_at = r->line;
+    }
     return RAD_OK;
 }
 
@@ -393,8 +397,10 @@ static rad_status obj_usemtl(obj_state *o)
     rad_status st = material_name(o, r, "usemtl", name);
     if (st)
         return st;
-    if (r->ntok != 2)
-        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, 0);
+    if (r->ntok != 2 && o->named_at != r->line) {
+        radi_obj_note(&o->b.s.repairs, RADI_REPAIR_NAME, r->line);
+        o->named_at = r->line;
+    }
     o->material = radi_build_find_material(&o->b, name);
     o->undefined = o->material < 0;
     if (o->material >= 0)

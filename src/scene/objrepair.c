@@ -11,18 +11,22 @@
  * (objread.c), a face is repaired here, and every repair is counted in
  * rad_scene_repairs for the caller to say:
  *
+ *   - a face outside the sizes the program accepts is refused, as the
+ *     check says (no repair rescales a scene);
  *   - corners repeated one after the other are merged; a face left with
- *     fewer than 3 corners, or with no area (|Newell vector| / 2 at most
- *     1e-14 of its diameter squared: all corners on a line), is left out;
+ *     fewer than 3 corners, or with all its corners on a line (within
+ *     1e-12 of its length), is left out; one whose area vanishes otherwise
+ *     (|Newell vector| / 2 at most 1e-14 of its diameter squared: loops of
+ *     opposite turn, a symmetric bow tie) crosses itself and is refused;
  *   - a face that radi_polygon_check still refuses (not planar, not
  *     convex, or a corner merged) is cut into triangles by ear clipping
  *     (Meisters, "Polygons have ears", Amer. Math. Monthly 82, 1975) in the
  *     plane that its Newell vector is most normal to, keeping its corners'
  *     order, so every triangle faces as the face did.  Each triangle is
- *     planar whatever the face was.  Clipping must consume the outline and
- *     the triangles' areas in that plane must add up to the outline's
- *     (within 1e-9): a face that crosses itself has neither, and is
- *     refused with the check's own message;
+ *     planar whatever the face was.  An outline two of whose edges cross
+ *     properly in that plane (corners written twice may touch: the cut to
+ *     a hole) is refused with the check's own message, as is one that
+ *     clipping cannot consume;
  *   - an outline that runs round the same corners again ("f 1 2 3 4 1 2 3
  *     4 ...", a test of long lines) is taken once, and cut as above.  Triangles without area (three corners on a line) are
  *     left out: they carry nothing.
@@ -57,14 +61,6 @@ static int merge_repeats(rad_vec3 *v, int n)
     return m;
 }
 
-static rad_vec3 newell(const rad_vec3 *v, int n)
-{
-    rad_vec3 s = {0, 0, 0};
-    for (int k = 0; k < n; k++)
-        s = v3_add(s, v3_cross(v[k], v[(k + 1) % n]));
-    return s;
-}
-
 static double diameter2(const rad_vec3 *v, int n)
 {
     double d = 0;
@@ -76,15 +72,17 @@ static double diameter2(const rad_vec3 *v, int n)
     return d;
 }
 
-/* 2-D coordinates of v in the plane most normal to N, turned so that the
- * outline runs counter-clockwise (positive area). */
+/* 2-D coordinates of v, relative to v[0] (so that round-off does not
+ * depend on where the face sits), in the plane most normal to N, turned
+ * so that the outline runs counter-clockwise (positive area). */
 static void project(const rad_vec3 *v, int n, rad_vec3 N, double (*p)[2])
 {
     const double ax = fabs(N.x), ay = fabs(N.y), az = fabs(N.z);
     const int drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
     const double sign = (drop == 0 ? N.x : drop == 1 ? N.y : N.z) < 0 ? -1 : 1;
     for (int k = 0; k < n; k++) {
-        const double c[3] = {v[k].x, v[k].y, v[k].z};
+        const rad_vec3 d = v3_sub(v[k], v[0]);
+        const double c[3] = {d.x, d.y, d.z};
         /* (u, w) right-handed about the dropped axis */
         p[k][0] = c[(drop + 1) % 3];
         p[k][1] = sign * c[(drop + 2) % 3];
@@ -107,6 +105,25 @@ static int same2(const double *a, const double *b)
 static int in_triangle(const double *q, const double *a, const double *b, const double *c)
 {
     return cross2(a, b, q) >= 0 && cross2(b, c, q) >= 0 && cross2(c, a, q) >= 0;
+}
+
+/* Do two edges of the outline cross properly (each one's ends strictly
+ * on the two sides of the other's line)?  Edges that share a corner, or
+ * meet at a corner written twice (the cut to a hole), only touch. */
+static int crosses_itself(double (*p)[2], int n)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            const double *a = p[i], *b = p[(i + 1) % n], *c = p[j], *d = p[(j + 1) % n];
+            if (same2(a, c) || same2(a, d) || same2(b, c) || same2(b, d))
+                continue;
+            const double d1 = cross2(a, b, c), d2 = cross2(a, b, d);
+            const double d3 = cross2(c, d, a), d4 = cross2(c, d, b);
+            if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+                ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+                return 1;
+        }
+    return 0;
 }
 
 /* Ear clipping of the counter-clockwise outline p[0..n): triangles as
@@ -193,28 +210,24 @@ static rad_status split_face(rad_scene_build *b, rad_lines *r, const rad_vec3 *v
         goto done;
     }
     project(v, n, N, p);
-    const int c = clip_ears(p, n, tri);
-    /* in the plane of the cut: the ears' areas add up to the outline's
-     * (shoelace) for a simple outline, and exceed it for one that crosses
-     * itself (its loops' signed areas cancel) */
-    double sum = 0, area = 0;
-    for (int k = 0; k < n; k++)
-        area += 0.5 * (p[k][0] * p[(k + 1) % n][1] - p[(k + 1) % n][0] * p[k][1]);
-    for (int t = 0; c == 0 && t < n - 2; t++)
-        sum += 0.5 * cross2(p[tri[3 * t]], p[tri[3 * t + 1]], p[tri[3 * t + 2]]);
+    const int c = crosses_itself(p, n) ? -1 : clip_ears(p, n, tri);
     if (c == -2)
         st = radi_fail(r->err, RAD_ERR_NOMEM, "%s:%d: out of memory", r->name, r->line);
-    else if (c < 0 || !(fabs(sum - area) <= 1e-9 * area)) {
+    else if (c < 0 && why->message[0] == '\0')
+        st = radi_fail(r->err, RAD_ERR_PARSE, "%s:%d: face cannot be cut into triangles",
+                       r->name, r->line);
+    else if (c < 0) {
         if (r->err)
             *r->err = *why; /* it crosses itself: refused as the check says */
         st = RAD_ERR_PARSE;
     } else {
         int added;
         st = add_triangles(b, r, v, tri, n - 2, mat, object, &added);
-        if (st == RAD_OK) {
+        if (st == RAD_OK && added > 0) {
             radi_obj_note(&b->s.repairs, RADI_REPAIR_SPLIT, r->line);
             b->s.repairs.split_triangles += added;
-        }
+        } else if (st == RAD_OK)
+            radi_obj_note(&b->s.repairs, RADI_REPAIR_DEGENERATE, r->line);
     }
 done:
     free(p);
@@ -238,25 +251,61 @@ static int period(const rad_vec3 *v, int m)
     return m;
 }
 
+/* Do all of v[0..m) lie on the line through the two farthest apart, within
+ * 1e-12 of their distance? */
+static int on_a_line(const rad_vec3 *v, int m)
+{
+    int a = 0, c = 0;
+    double far = -1;
+    for (int k = 0; k < m; k++)
+        for (int l = k + 1; l < m; l++) {
+            const rad_vec3 e = v3_sub(v[k], v[l]);
+            if (v3_dot(e, e) > far)
+                far = v3_dot(e, e), a = k, c = l;
+        }
+    const rad_vec3 u = v3_sub(v[c], v[a]);
+    const double len = v3_norm(u);
+    if (!(len > 0))
+        return 1;
+    for (int k = 0; k < m; k++)
+        if (v3_norm(v3_cross(u, v3_sub(v[k], v[a]))) / len > 1e-12 * len)
+            return 0;
+    return 1;
+}
+
+/* Refuse with radi_polygon_check's own message (v freed). */
+static rad_status refuse(rad_lines *r, rad_vec3 *v, int m)
+{
+    rad_status st = radi_polygon_check(v, m, "face", r->name, r->line, r->err);
+    free(v);
+    if (st == RAD_OK) /* not expected: the caller saw it fail */
+        st = radi_fail(r->err, RAD_ERR_PARSE, "%s:%d: face cannot be repaired", r->name, r->line);
+    return st;
+}
+
 rad_status radi_obj_repair_face(rad_scene_build *b, rad_lines *r, rad_vec3 *v, int n, int mat,
                                 int object, int undefined)
 {
     const int m = period(v, merge_repeats(v, n));
-    const rad_vec3 N = newell(v, m);
-    if (m < 3 || !(0.5 * v3_norm(N) > 1e-14 * diameter2(v, m))) {
+    const double diam = sqrt(diameter2(v, m));
+    if (m >= 2 && !(diam >= 0x1p-510 && diam <= 0x1p510))
+        return refuse(r, v, m); /* outside the sizes accepted: no repair of that */
+    const rad_vec3 N = v3_newell(v, m);
+    if (m < 3 || on_a_line(v, m)) {
         free(v);
         radi_obj_note(&b->s.repairs, RADI_REPAIR_DEGENERATE, r->line);
         return RAD_OK;
     }
+    if (!(0.5 * v3_norm(N) > 1e-14 * diam * diam))
+        return refuse(r, v, m); /* loops of opposite turn cancel: it crosses itself */
     if (undefined)
         radi_obj_note(&b->s.repairs, RADI_REPAIR_MATERIAL, r->line);
     rad_error why;
     memset(&why, 0, sizeof why);
-    if (m == n && radi_polygon_check(v, m, "face", r->name, r->line, &why) == RAD_OK)
+    if (radi_polygon_check(v, m, "face", r->name, r->line, &why) == RAD_OK && m == n)
         return radi_build_add_surface(b, r->line, m == 4 ? RAD_SURFACE_QUAD : RAD_SURFACE_POLYGON,
                                       mat, object, v, m, 1, 1);
-    if (m != n) /* a corner merged: its message, should the cut fail */
-        radi_polygon_check(v, m, "face", r->name, r->line, &why);
+    /* not planar, not convex, a corner merged or an outline run round twice */
     rad_status st = split_face(b, r, v, m, N, mat, object, &why);
     free(v);
     return st;

@@ -160,7 +160,7 @@ case_ obj-nul.obj 1 '5: line contains a NUL character*' "${SQ}f 1 2\000 3\n"
 case_ obj-utf16.obj 1 '1: line contains a NUL character (byte 0x00 at column 4; a UTF-16 file?*' '\377\376v\000 \000'
 # a name beyond ASCII is taken byte for byte (a repair, said), and refused
 # with --strict as before
-case_ obj-utf8-name.obj 0 ' repaired: 1 name with spaces, with bytes beyond ASCII, or empty*' "${SQ}o caf\303\251\nf 1 2 3\n"
+case_ obj-utf8-name.obj 0 '5: repaired: 1 name with spaces, with bytes beyond ASCII, or empty*' "${SQ}o caf\303\251\nf 1 2 3\n"
 "$RADIOSITY" formfactor --strict "$work/obj-utf8-name.obj" > "$work/out" 2> "$work/err"
 [ $? -eq 1 ] && grep -q "obj-utf8-name.obj:5: non-ASCII character (byte 0xC3" "$work/err"
 ok $? "obj-utf8-name.obj --strict: refused at line 5 ($(head -n 1 "$work/err"))"

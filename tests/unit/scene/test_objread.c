@@ -344,6 +344,36 @@ static void repairs(void)
            "a bow tie is refused even with repairs: %s", err.message);
     rad_scene_free(&s);
 
+    /* what cannot be repaired, still refused: a 5-gon whose edges cross
+     * (not a bow tie: its area does not cancel), a symmetric bow tie (its
+     * loops cancel), a square 1e-160 across (outside the sizes accepted);
+     * and an L 0.02 across at (1000, 1000), which is repaired: the cut
+     * works in coordinates relative to a corner */
+    static const struct {
+        const char *obj, *want;
+    } hard[] = {
+        {"v 2 5 0\nv 2 3 0\nv 5 6 0\nv 1 4 0\nv 4 5 0\nf 1 2 3 4 5\n", "self-intersecting"},
+        {"v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n", "self-intersecting"},
+        {"v 0 0 0\nv 1e-160 0 0\nv 1e-160 1e-160 0\nv 0 1e-160 0\nf 1 2 3 4\n", "outside the sizes"},
+    };
+    for (size_t k = 0; k < sizeof hard / sizeof *hard; k++) {
+        char text[512];
+        snprintf(text, sizeof text, "mtllib t.mtl\nusemtl white\n%s", hard[k].obj);
+        st = parse_flags(&s, text, MTL, 0, &err);
+        tap_ok(st == RAD_ERR_PARSE && strstr(err.message, hard[k].want),
+               "not repairable, refused (%s): %s", hard[k].want, err.message);
+        rad_scene_free(&s);
+    }
+    const char *far = "mtllib t.mtl\nusemtl white\nv 1000 1000 0\nv 1000.02 1000 0\n"
+                      "v 1000.02 1000.01 0\nv 1000.01 1000.01 0\nv 1000.01 1000.02 0\n"
+                      "v 1000 1000.02 0\nf 1 2 3 4 5 6\n";
+    st = parse_flags(&s, far, MTL, 0, &err);
+    tap_ok(st == RAD_OK && s.nsurfaces == 4 && s.repairs.split_faces == 1 &&
+               fabs(total_area(&s) - 3e-4) < 1e-9, /* round-off of areas at 1000: 1e-10 */
+           "an L 0.02 across at (1000, 1000): 4 triangles of area %.6g (3e-4 by its sides) (%s)",
+           st == RAD_OK ? total_area(&s) : 0.0, st ? err.message : "ok");
+    rad_scene_free(&s);
+
     /* strict: each of the repairs above is the error it names */
     st = parse_flags(&s, obj, mtl, RAD_SCENE_STRICT, &err);
     tap_ok(st == RAD_ERR_PARSE, "RAD_SCENE_STRICT refuses the file repaired above: %s",
