@@ -155,12 +155,12 @@ ok $? "sweep --help describes --resolutions"
 # the same mesh gives no warning at all.
 gcube="$top_srcdir/data/goral1984-cube.scene"
 "$RADIOSITY" solve -q --form-factors-method hemicube --resolution 2 --mesh 2x2 \
-  --report "$work/hb.json" -o /dev/null "$gcube" 2> "$work/err"
+  --report "$work/hb.json" -o "$work/hb.ply" "$gcube" 2> "$work/err"
 rc=$?
 b=$(tr -d '\n ' < "$work/hb.json" | sed -n 's/.*"energy_balance_relative":\[\([^],]*\).*/\1/p')
 [ $rc -eq 0 ] && awk -v b="$b" 'BEGIN { exit !(b < -0.01 || b > 0.01) }' &&
   grep -q 'warning: energy balance off by .*hemicube samples each element from its centre' "$work/err"
 ok $? "hemicube 2 x 2: balance $b in the report, and a warning that names the hemicube"
-"$RADIOSITY" solve -q --mesh 2x2 -o /dev/null "$gcube" 2> "$work/err"
+"$RADIOSITY" solve -q --mesh 2x2 -o "$work/hc.ply" "$gcube" 2> "$work/err"
 [ $? -eq 0 ] && [ ! -s "$work/err" ]; ok $? "the contour integral on the same mesh: no warning"
 done_testing

@@ -200,8 +200,8 @@ ok $? "the exact 2 x 2 matrix passes at 1e-9"
 # --format: standard input and other names in any of the three formats,
 # the same scene as read by its name (mtllib relative to the current
 # folder for standard input)
-(cd "$data" && "$RADIOSITY" solve -q --format obj --elements "$work/fo.tsv" -o /dev/null - \
-  < cornell-box.obj) && "$RADIOSITY" solve -q --elements "$work/fn.tsv" -o /dev/null "$data/cornell-box.obj" &&
+(cd "$data" && "$RADIOSITY" solve -q --format obj --elements "$work/fo.tsv" -o "$work/fo.ply" - \
+  < cornell-box.obj) && "$RADIOSITY" solve -q --elements "$work/fn.tsv" -o "$work/fn.ply" "$data/cornell-box.obj" &&
   cmp -s "$work/fo.tsv" "$work/fn.tsv"
 ok $? "--format obj: the OBJ on standard input gives the element table of the file"
 cp "$work/cube.vs3" "$work/cube.txt"
@@ -214,7 +214,7 @@ ok $? "--format scene: standard input as the native format"
 "$RADIOSITY" solve --format ply - < /dev/null > /dev/null 2> "$work/err"
 [ $? -eq 2 ] && grep -q "format takes scene, obj or vs3, not 'ply'" "$work/err"
 ok $? "--format ply: a usage error naming the three formats"
-"$RADIOSITY" solve -q --format vs3 -o /dev/null "$data/grey-cube.scene" 2> "$work/err"
+"$RADIOSITY" solve -q --format vs3 -o "$work/fv.ply" "$data/grey-cube.scene" 2> "$work/err"
 [ $? -eq 1 ] && grep -q 'grey-cube.scene:[0-9]*: ' "$work/err"
 ok $? "--format vs3 on a native file: refused with FILE:LINE ($(head -c 120 "$work/err"))"
 
@@ -231,18 +231,18 @@ if [ -d "$models" ]; then
     b=$(basename "$f")
     case $b in
       box_UTF16BE.obj|cube_mtllib_after_g.obj|number_formats.obj|point_cloud.obj|testline.obj|testpoints.obj)
-        (cd "$models" && "$RADIOSITY" solve -q -o /dev/null "$b") > /dev/null 2> "$work/err"
+        (cd "$models" && "$RADIOSITY" solve -q -o "$work/m.ply" "$b") > /dev/null 2> "$work/err"
         if [ $? -eq 1 ] && grep -q "^radiosity: [^ ]*:[0-9]*: " "$work/err"; then
           refused=$((refused + 1))
         else bad="$bad $b(not refused)"; fi
         continue ;;
     esac
     (cd "$models" && "$RADIOSITY" solve -q --form-factors-method hemicube --resolution 4 \
-      -o /dev/null "$b") > /dev/null 2> "$work/err" || { bad="$bad $b($(head -c 100 "$work/err"))"; continue; }
+      -o "$work/m.ply" "$b") > /dev/null 2> "$work/err" || { bad="$bad $b($(head -c 100 "$work/err"))"; continue; }
     loaded=$((loaded + 1))
     if grep -q ': repaired: ' "$work/err"; then
       repaired=$((repaired + 1))
-      (cd "$models" && "$RADIOSITY" formfactor -q --strict -o /dev/null "$b") > /dev/null 2>&1
+      (cd "$models" && "$RADIOSITY" formfactor -q --strict -o "$work/m.tsv" "$b") > /dev/null 2>&1
       [ $? -eq 1 ] || bad="$bad $b(--strict took it)"
     fi
   done

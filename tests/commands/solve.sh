@@ -147,11 +147,11 @@ material white reflect 0.5
 polygon lamp 3  0 1 0  1 1 0  0 1 1
 polygon white 3  0 0 0  0 0 1  1 0 0
 END
-"$RADIOSITY" solve -q --mesh 4x4 --elements "$work/tri.tsv" -o /dev/null "$work/tri.scene" 2> "$work/err"
+"$RADIOSITY" solve -q --mesh 4x4 --elements "$work/tri.tsv" -o "$work/tri.ply" "$work/tri.scene" 2> "$work/err"
 [ $? -eq 0 ] && [ "$(grep -c 'warning: --mesh 4x4 applies to quadrilaterals' "$work/err")" -eq 1 ] &&
   [ "$(awk 'NR > 1' "$work/tri.tsv" | wc -l)" -eq 2 ]
 ok $? "--mesh on triangles only: one warning, two elements ($(head -c 200 "$work/err"))"
-"$RADIOSITY" solve -q --mesh 2x2 -o /dev/null "$top_srcdir/data/goral1984-cube.scene" 2> "$work/err"
+"$RADIOSITY" solve -q --mesh 2x2 -o "$work/m22.ply" "$top_srcdir/data/goral1984-cube.scene" 2> "$work/err"
 [ $? -eq 0 ] && ! grep -q 'applies to quadrilaterals' "$work/err"
 ok $? "--mesh on quadrilaterals: no such warning"
 done_testing
