@@ -325,27 +325,30 @@ int cli_reported_elements(const rad_scene *scene, const rad_mesh *mesh)
  * line of its first. */
 static void say_repairs(const char *path, const rad_scene_repairs *p)
 {
-    char at[64];
-    const int *l = p->first_line;
-#define AT(k) (l[k] ? (snprintf(at, sizeof at, ":%d", l[k]), at) : "")
-    if (p->undefined_materials)
-        cli_error("%s%s: repaired: %d face%s use a material that no mtllib defines: given "
-                  "the default grey (reflectance 0.5)",
-                  path, AT(0), p->undefined_materials, p->undefined_materials == 1 ? "" : "s");
-    if (p->spaced_names)
-        cli_error("%s%s: repaired: %d name%s with spaces, with bytes beyond ASCII, or empty, "
-                  "taken as written",
-                  path, AT(1), p->spaced_names, p->spaced_names == 1 ? "" : "s");
-    if (p->degenerate_faces)
-        cli_error("%s%s: repaired: %d face%s without area (fewer than 3 distinct corners, or "
-                  "all on a line) left out",
-                  path, AT(2), p->degenerate_faces, p->degenerate_faces == 1 ? "" : "s");
-    if (p->split_faces)
-        cli_error("%s%s: repaired: %d face%s not planar, not convex or running round twice "
-                  "cut into %d triangles",
-                  path, AT(3), p->split_faces, p->split_faces == 1 ? "" : "s",
-                  p->split_triangles);
-#undef AT
+    char what[2][96];
+    snprintf(what[0], sizeof what[0], "not planar, not convex or running round twice cut "
+             "into %d triangles", p->split_triangles);
+    const struct {
+        int count;
+        const char *noun, *what;
+    } kind[4] = {
+        {p->undefined_materials, "face", "use a material that no mtllib defines: given the "
+                                         "default grey (reflectance 0.5)"},
+        {p->spaced_names, "name", "with spaces, with bytes beyond ASCII, or empty, taken as "
+                                  "written"},
+        {p->degenerate_faces, "face", "without area (fewer than 3 distinct corners, or all "
+                                      "on a line) left out"},
+        {p->split_faces, "face", what[0]},
+    };
+    for (int k = 0; k < 4; k++) {
+        if (!kind[k].count)
+            continue;
+        what[1][0] = '\0';
+        if (p->first_line[k])
+            snprintf(what[1], sizeof what[1], ":%d", p->first_line[k]);
+        cli_error("%s%s: repaired: %d %s%s %s", path, what[1], kind[k].count, kind[k].noun,
+                  kind[k].count == 1 ? "" : "s", kind[k].what);
+    }
 }
 
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
