@@ -75,6 +75,9 @@ typedef struct rad_scene_repairs {
     int first_line[4];          /* of each kind above, in that order */
 } rad_scene_repairs;
 
+/* The kinds of repair above, in the order of first_line. */
+#define RAD_SCENE_REPAIR_KINDS 4
+
 /* The material given to faces whose material is undefined. */
 #define RAD_DEFAULT_GREY "(default grey 0.5)"
 
@@ -119,6 +122,11 @@ RAD_API rad_status rad_scene_load_format(rad_scene *scene, const char *path,
 RAD_API rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,
                            const char *name, rad_error *err);
 RAD_API void rad_scene_free(rad_scene *scene);
+/* One line saying repair kind k (0 .. RAD_SCENE_REPAIR_KINDS - 1) of the
+ * scene, as "FILE:LINE: repaired: 2 faces without area (...) left out"
+ * (LINE: the first such face).  Returns 1 when the reader made repairs of
+ * that kind (the line is in buf), else 0 (buf untouched). */
+RAD_API int rad_scene_repair_text(const rad_scene *scene, int k, char *buf, size_t size);
 /* Override the mesh of every quad (the --mesh option). */
 RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
 /* 1 if some surface belongs to an absent object. */

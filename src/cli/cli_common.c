@@ -321,34 +321,13 @@ int cli_reported_elements(const rad_scene *scene, const rad_mesh *mesh)
     return n;
 }
 
-/* One line per kind of repair the reader made (OBJ), each with the input
- * line of its first. */
-static void say_repairs(const char *path, const rad_scene_repairs *p)
+/* One line per kind of repair the reader made (OBJ). */
+static void say_repairs(const rad_scene *scene)
 {
-    char what[2][96];
-    snprintf(what[0], sizeof what[0], "not planar, not convex or running round twice cut "
-             "into %d triangles", p->split_triangles);
-    const struct {
-        int count;
-        const char *noun, *what;
-    } kind[4] = {
-        {p->undefined_materials, "face", "use a material that no mtllib defines: given the "
-                                         "default grey (reflectance 0.5)"},
-        {p->spaced_names, "name", "with spaces, with bytes beyond ASCII, or empty, taken as "
-                                  "written"},
-        {p->degenerate_faces, "face", "without area (fewer than 3 distinct corners, or all "
-                                      "on a line) left out"},
-        {p->split_faces, "face", what[0]},
-    };
-    for (int k = 0; k < 4; k++) {
-        if (!kind[k].count)
-            continue;
-        what[1][0] = '\0';
-        if (p->first_line[k])
-            snprintf(what[1], sizeof what[1], ":%d", p->first_line[k]);
-        cli_error("%s%s: repaired: %d %s%s %s", path, what[1], kind[k].count, kind[k].noun,
-                  kind[k].count == 1 ? "" : "s", kind[k].what);
-    }
+    char line[RAD_ERRMSG_MAX];
+    for (int k = 0; k < RAD_SCENE_REPAIR_KINDS; k++)
+        if (rad_scene_repair_text(scene, k, line, sizeof line))
+            cli_error("%s", line);
 }
 
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
@@ -359,7 +338,7 @@ int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
         cli_error_rec(&err);
         return 1;
     }
-    say_repairs(path, &scene->repairs);
+    say_repairs(scene);
     if (c->mesh_n > 0) {
         rad_scene_set_mesh(scene, c->mesh_n, c->mesh_m);
         /* --mesh cuts quadrilaterals only: say so when it cuts nothing */

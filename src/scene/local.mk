@@ -8,6 +8,7 @@ src_libradcore_la_SOURCES += \
 	%reldir%/objread.c %reldir%/objread.h \
 	%reldir%/objrepair.c %reldir%/objrepair.h \
 	%reldir%/polycheck.c %reldir%/polycheck.h \
+	%reldir%/repairtext.c \
 	%reldir%/scene.c \
 	%reldir%/scenebuild.c %reldir%/scenebuild.h \
 	%reldir%/scenepresent.c \
