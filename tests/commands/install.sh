@@ -88,4 +88,21 @@ cat "$incdir/radiosity.h" "$incdir"/radiosity/*.h | grep -o '[A-Za-z0-9_]*\.[ch]
   grep -v -x -e 'radiosity\.h' -e 'std[a-z]*\.h' $(for h in "$incdir"/radiosity/*.h; do
     printf -- '-e %s ' "$(basename "$h" | sed 's/\./\\./')"; done) | sort -u > "$work/named"
 [ ! -s "$work/named" ]; ok $? "the installed headers name no internal file:$(tr '\n' ' ' < "$work/named")"
+# the Python module, where make install put it, imports with the staged
+# library and answers (an interpreter not instrumented cannot load an
+# instrumented module without preloading; python.sh covers that case)
+if [ -n "${RADIOSITY_PYTHON-}" ] && [ -z "${RADIOSITY_SANITIZE-}" ]; then
+  mod=$(find "$stage" -name 'radiosity*.so' -path '*-packages/*' | head -n 1)
+  [ -n "$mod" ] && (cd "$work" && LD_LIBRARY_PATH="$libdir" PYTHONPATH="$(dirname "$mod")" \
+    "$RADIOSITY_PYTHON" -c 'import sys, radiosity
+s = radiosity.load_scene(sys.argv[1])
+print(radiosity.__version__, radiosity.form_factors(s).shape)' \
+    "$top_srcdir/data/goral1984-cube.scene" > "$work/py.out" 2>&1) &&
+    [ "$(cat "$work/py.out")" = "$have (294, 294)" ]
+  ok $? "the Python module is installed (${mod#"$stage"}), imports from there and answers: $(head -c 300 "$work/py.out")"
+  [ -n "$(find "$stage" -path '*/man3/radiosity-python.3')" ]
+  ok $? "radiosity-python(3) is installed"
+else
+  skip "the Python binding is not built here, or the build is instrumented"
+fi
 done_testing

@@ -1,0 +1,36 @@
+/* pyerror.c -- the binding's shared helpers: the module's state, the
+ * library's errors raised as radiosity.Error, names of enum values read.
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING. */
+#include "python/pyrad.h"
+
+radi_py_state *radi_py_state_of(PyObject *module)
+{
+    return PyModule_GetState(module);
+}
+
+PyObject *radi_py_raise(PyObject *module, const rad_error *err)
+{
+    const radi_py_state *st = radi_py_state_of(module);
+    PyObject *exc = PyObject_CallFunction(st->error, "s", err->message);
+    if (!exc)
+        return NULL;
+    PyObject *status = PyUnicode_FromString(rad_strstatus(err->status));
+    if (status && PyObject_SetAttrString(exc, "status", status) == 0)
+        PyErr_SetObject(st->error, exc);
+    Py_XDECREF(status);
+    Py_DECREF(exc);
+    return NULL;
+}
+
+int radi_py_choice(const char *(*namefn)(int), const char *what, const char *given)
+{
+    char choices[160] = "";
+    for (int k = 0; namefn(k); k++) {
+        if (strcmp(namefn(k), given) == 0)
+            return k;
+        size_t used = strlen(choices);
+        snprintf(choices + used, sizeof choices - used, "%s'%s'", k ? ", " : "", namefn(k));
+    }
+    PyErr_Format(PyExc_ValueError, "%s must be one of %s, not '%s'", what, choices, given);
+    return -1;
+}

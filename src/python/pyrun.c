@@ -1,0 +1,375 @@
+/* pyrun.c -- radiosity.form_factors, radiosity.solve, radiosity.elements:
+ * runs of the library on a Scene, answered as NumPy arrays.
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Each run meshes a copy of the scene (pyscene.c), releases the GIL for
+ * the library's work, and lets Ctrl-C stop it: the library's progress
+ * callback, called between blocks of rows on the calling thread, takes
+ * the GIL back for a moment to look for a pending signal, and asks the
+ * fill to stop when there is one (the run then raises KeyboardInterrupt).
+ * What the program says as warnings (entries outside [0, 1], rows above
+ * 1, promises not met) is said as RuntimeWarning; strict=True turns an
+ * unmet promise into radiosity.Error, as --strict does. */
+#include "python/pyrad.h"
+
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#include <numpy/arrayobject.h>
+
+#include <stdarg.h>
+#include <stdio.h>
+
+int radi_py_numpy_init(void)
+{
+    import_array1(-1);
+    return 0;
+}
+
+/* ---- options ------------------------------------------------------------ */
+
+typedef struct run_args {
+    PyObject *scene, *mesh;
+    const char *accuracy, *method;
+    int quadrature, resolution, threads, strict;
+} run_args;
+
+static void run_args_init(run_args *a)
+{
+    a->mesh = Py_None;
+    a->accuracy = "default";
+    a->method = "contour";
+    a->quadrature = 3;
+    a->resolution = RAD_HEMICUBE_DEFAULT;
+    a->threads = 0;
+    a->strict = 0;
+}
+
+static int check_interrupt(void *user, const char *stage, double done, double total)
+{
+    (void)user, (void)stage, (void)done, (void)total;
+    PyGILState_STATE g = PyGILState_Ensure();
+    const int stop = PyErr_CheckSignals() != 0;
+    PyGILState_Release(g);
+    return stop;
+}
+
+/* The form-factor options the arguments name; -1 with ValueError. */
+static int ff_options(const run_args *a, rad_ff_options *ff)
+{
+    rad_ff_options_init(ff);
+    const int acc = radi_py_choice(rad_accuracy_name, "accuracy", a->accuracy);
+    const int method = acc < 0 ? -1 : radi_py_choice(rad_ff_method_name, "method", a->method);
+    if (method < 0)
+        return -1;
+    if (a->quadrature < 1 || a->quadrature > RAD_GAUSS_MAX) {
+        PyErr_Format(PyExc_ValueError, "quadrature must be 1 to %d Gauss points, not %d",
+                     RAD_GAUSS_MAX, a->quadrature);
+        return -1;
+    }
+    if (a->resolution < 2 || a->resolution > RAD_HEMICUBE_MAX || a->resolution % 2) {
+        PyErr_Format(PyExc_ValueError, "resolution must be even, 2 to %d, not %d",
+                     RAD_HEMICUBE_MAX, a->resolution);
+        return -1;
+    }
+    if (a->threads < 0) {
+        PyErr_Format(PyExc_ValueError, "threads must be 0 (all) or more, not %d", a->threads);
+        return -1;
+    }
+    ff->accuracy = (rad_accuracy)acc;
+    ff->method = (rad_ff_method)method;
+    ff->quadrature = a->quadrature;
+    ff->resolution = a->resolution;
+    ff->threads = a->threads;
+    ff->progress = check_interrupt;
+    return 0;
+}
+
+static int warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static int warn(const char *fmt, ...)
+{
+    char msg[RAD_ERRMSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    return PyErr_WarnEx(PyExc_RuntimeWarning, msg, 1);
+}
+
+/* What the fill found that a user must hear (the program's words); -1
+ * with an exception when strict refuses an unmet promise or a warning
+ * became an error. */
+static int ff_verdict(PyObject *module, const rad_ff_options *ff, const rad_ff_stats *st,
+                      int strict)
+{
+    const char *mode = rad_accuracy_name(ff->accuracy);
+    const char *hint = ff->accuracy == RAD_ACCURACY_CLASSIC
+                           ? ": the classic rule fails for this geometry; try accuracy='default'"
+                           : "";
+    if ((st->negative || st->above_one) &&
+        warn("%ld form factors below 0 and %ld above 1 (min %.3g, max %.3g)%s", st->negative,
+             st->above_one, st->min_value, st->max_value, hint) != 0)
+        return -1;
+    if (st->rows_above_one && warn("%ld rows of F sum to more than 1 + %g (energy from "
+                                   "nowhere)%s", st->rows_above_one, RAD_ROW_SUM_SLACK,
+                                   hint) != 0)
+        return -1;
+    if (st->promise_unmet == 0)
+        return 0;
+    if (!strict)
+        return warn("%ld form factors miss the %s mode's promise of %g relative error (their "
+                    "own estimates say so)%s", st->promise_unmet, mode, st->promise,
+                    ff->accuracy == RAD_ACCURACY_DEFAULT ? "; try accuracy='reference'" : "");
+    rad_error err = {RAD_ERR_INVALID, ""};
+    snprintf(err.message, sizeof err.message, "%ld form factors miss the %s mode's promise of "
+             "%g relative error (their own estimates say so); strict=True makes that an error",
+             st->promise_unmet, mode, st->promise);
+    radi_py_raise(module, &err);
+    return -1;
+}
+
+/* The mesh of the run's scene, refused before meshing when F (and E)
+ * would not fit. */
+static int build_mesh(PyObject *module, const rad_scene *sc, int matrices, rad_mesh *mesh)
+{
+    rad_error err;
+    const double ne = rad_scene_element_count(sc);
+    char what[96];
+    snprintf(what, sizeof what, "%.0f elements (%d x 8 n^2 bytes of matrices)", ne, matrices);
+    if (ne > INT_MAX) {
+        err.status = RAD_ERR_TOOBIG;
+        snprintf(err.message, sizeof err.message, "the scene's meshes make %.0f elements, more "
+                 "than %d", ne, INT_MAX);
+    } else if (rad_memory_check(8.0 * matrices * ne * ne, what, NULL, &err) == RAD_OK &&
+               rad_mesh_build(mesh, sc, &err) == RAD_OK)
+        return 0;
+    radi_py_raise(module, &err);
+    return -1;
+}
+
+/* Elements at the end that only block (View3D's O surfaces). */
+static int reported(const rad_scene *sc, const rad_mesh *mesh)
+{
+    int n = mesh->nelements;
+    while (n > 0 && sc->surfaces[mesh->elements[n - 1].surface].obstruction)
+        n--;
+    return n;
+}
+
+/* The leading k x k block of an n x n Fortran-ordered array, as a new
+ * array (steals a reference to `full`). */
+static PyObject *leading_block(PyObject *full, npy_intp n, npy_intp k)
+{
+    if (!full || k == n)
+        return full;
+    npy_intp dims[2] = {k, k};
+    PyObject *out = PyArray_EMPTY(2, dims, NPY_FLOAT64, 1);
+    if (out) {
+        const double *src = PyArray_DATA((PyArrayObject *)full);
+        double *dst = PyArray_DATA((PyArrayObject *)out);
+        for (npy_intp j = 0; j < k; j++)
+            memcpy(dst + j * k, src + j * n, sizeof *dst * (size_t)k);
+    }
+    Py_DECREF(full);
+    return out;
+}
+
+/* ---- form_factors ------------------------------------------------------- */
+
+static PyObject *fill(PyObject *module, const run_args *a, int errors)
+{
+    rad_ff_options ff;
+    rad_scene sc;
+    rad_mesh mesh;
+    if (ff_options(a, &ff) != 0 || radi_py_run_scene(module, a->scene, a->mesh, &sc) != 0)
+        return NULL;
+    if (build_mesh(module, &sc, errors ? 2 : 1, &mesh) != 0) {
+        rad_scene_free(&sc);
+        return NULL;
+    }
+    const npy_intp n = mesh.nelements, dims[2] = {n, n};
+    PyObject *F = PyArray_ZEROS(2, dims, NPY_FLOAT64, 1);
+    PyObject *E = errors ? PyArray_ZEROS(2, dims, NPY_FLOAT64, 1) : NULL;
+    rad_status status = RAD_OK;
+    rad_error err;
+    rad_ff_stats st;
+    memset(&st, 0, sizeof st);
+    if (F && (E || !errors) && n > 0) {
+        double *f = PyArray_DATA((PyArrayObject *)F);
+        double *e = E ? PyArray_DATA((PyArrayObject *)E) : NULL;
+        Py_BEGIN_ALLOW_THREADS
+        status = rad_ff_matrix(&mesh, &ff, f, e, &st, &err);
+        Py_END_ALLOW_THREADS
+    }
+    const int kept = reported(&sc, &mesh);
+    rad_mesh_free(&mesh);
+    rad_scene_free(&sc);
+    if (!F || (errors && !E) || PyErr_Occurred() || status != RAD_OK ||
+        ff_verdict(module, &ff, &st, a->strict) != 0) {
+        Py_XDECREF(F);
+        Py_XDECREF(E);
+        if (!PyErr_Occurred())
+            radi_py_raise(module, &err);
+        return NULL;
+    }
+    F = leading_block(F, n, kept);
+    if (!errors)
+        return F;
+    E = leading_block(E, n, kept);
+    if (!F || !E) {
+        Py_XDECREF(F);
+        Py_XDECREF(E);
+        return NULL;
+    }
+    return Py_BuildValue("(NN)", F, E);
+}
+
+PyObject *radi_py_form_factors(PyObject *module, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"scene", "mesh", "accuracy", "quadrature", "method",
+                             "resolution", "threads", "errors", "strict", NULL};
+    run_args a;
+    int errors = 0;
+    run_args_init(&a);
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Osisiipp:form_factors", kwlist, &a.scene,
+                                     &a.mesh, &a.accuracy, &a.quadrature, &a.method,
+                                     &a.resolution, &a.threads, &errors, &a.strict))
+        return NULL;
+    return fill(module, &a, errors);
+}
+
+/* ---- solve -------------------------------------------------------------- */
+
+static PyObject *run_solve(PyObject *module, const run_args *a, const char *solver,
+                           PyObject *bounces)
+{
+    rad_pipeline_options po;
+    rad_pipeline_options_init(&po);
+    const int s = radi_py_choice(rad_solver_name, "solver", solver);
+    if (s < 0 || ff_options(a, &po.ff) != 0)
+        return NULL;
+    po.solve.solver = (rad_solver)s;
+    if (bounces != Py_None) {
+        const long k = PyLong_AsLong(bounces);
+        if (k == -1 && PyErr_Occurred())
+            return NULL;
+        if (k < 0 || k > INT_MAX) {
+            PyErr_Format(PyExc_ValueError, "bounces must be 0 or more, not %ld", k);
+            return NULL;
+        }
+        po.solve.bounces = (int)k;
+    }
+    rad_scene sc;
+    if (radi_py_run_scene(module, a->scene, a->mesh, &sc) != 0)
+        return NULL;
+    rad_result res;
+    rad_error err;
+    rad_status status;
+    Py_BEGIN_ALLOW_THREADS
+    status = rad_pipeline_run(&sc, &po, &res, &err);
+    Py_END_ALLOW_THREADS
+    PyObject *B = NULL;
+    if (!PyErr_Occurred() && (!res.ff_done || ff_verdict(module, &po.ff, &res.ff,
+                                                          a->strict) == 0)) {
+        if (status != RAD_OK)
+            radi_py_raise(module, &err);
+        else if (!res.b_negative || warn("B is negative in %ld element-band values: no "
+                                         "physical solution", res.b_negative) == 0) {
+            const npy_intp dims[2] = {res.mesh.nelements, RAD_BANDS};
+            B = PyArray_EMPTY(2, dims, NPY_FLOAT64, 1);
+            if (B && res.mesh.nelements > 0)
+                memcpy(PyArray_DATA((PyArrayObject *)B), res.B,
+                       sizeof *res.B * (size_t)res.mesh.nelements * RAD_BANDS);
+        }
+    }
+    rad_result_free(&res);
+    rad_scene_free(&sc);
+    return B;
+}
+
+PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"scene", "mesh", "accuracy", "solver", "bounces", "quadrature",
+                             "method", "resolution", "threads", "strict", NULL};
+    run_args a;
+    const char *solver = "gauss";
+    PyObject *bounces = Py_None;
+    run_args_init(&a);
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OssOisiip:solve", kwlist, &a.scene, &a.mesh,
+                                     &a.accuracy, &solver, &bounces, &a.quadrature, &a.method,
+                                     &a.resolution, &a.threads, &a.strict))
+        return NULL;
+    return run_solve(module, &a, solver, bounces);
+}
+
+/* ---- elements ----------------------------------------------------------- */
+
+static PyObject *column(const rad_mesh *mesh, const char *what)
+{
+    const npy_intp n = mesh->nelements;
+    const int width = strcmp(what, "surface") == 0 || strcmp(what, "area") == 0 ? 1 : 3;
+    const npy_intp dims[2] = {n, 3};
+    PyObject *out = PyArray_EMPTY(width == 1 ? 1 : 2, dims,
+                                  strcmp(what, "surface") == 0 ? NPY_INT : NPY_FLOAT64, 0);
+    if (!out)
+        return NULL;
+    void *data = PyArray_DATA((PyArrayObject *)out);
+    for (npy_intp i = 0; i < n; i++) {
+        const rad_element *e = &mesh->elements[i];
+        if (strcmp(what, "surface") == 0) {
+            ((int *)data)[i] = e->surface;
+            continue;
+        }
+        double *row = (double *)data + i * width;
+        const rad_vec3 *v = strcmp(what, "centroid") == 0 ? &e->centroid
+                            : strcmp(what, "normal") == 0 ? &e->normal
+                                                          : NULL;
+        const double *band = strcmp(what, "reflect") == 0 ? e->reflect : e->emit;
+        if (width == 1)
+            row[0] = e->area;
+        else if (v) {
+            row[0] = v->x;
+            row[1] = v->y;
+            row[2] = v->z;
+        } else
+            for (int b = 0; b < RAD_BANDS; b++)
+                row[b] = band[b];
+    }
+    return out;
+}
+
+PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"scene", "mesh", NULL};
+    static const char *const names[] = {"surface", "area", "centroid", "normal", "reflect",
+                                        "emit"};
+    PyObject *scene, *mesh_obj = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O:elements", kwlist, &scene, &mesh_obj))
+        return NULL;
+    rad_scene sc;
+    rad_mesh mesh;
+    if (radi_py_run_scene(module, scene, mesh_obj, &sc) != 0)
+        return NULL;
+    if (build_mesh(module, &sc, 0, &mesh) != 0) {
+        rad_scene_free(&sc);
+        return NULL;
+    }
+    PyObject *dict = PyDict_New();
+    for (size_t k = 0; dict && k < sizeof names / sizeof *names; k++) {
+        PyObject *col = column(&mesh, names[k]);
+        if (!col || PyDict_SetItemString(dict, names[k], col) != 0)
+            Py_CLEAR(dict);
+        Py_XDECREF(col);
+    }
+    const npy_intp n = mesh.nelements;
+    PyObject *obstruction = dict ? PyArray_ZEROS(1, &n, NPY_BOOL, 0) : NULL;
+    if (obstruction) {
+        npy_bool *o = PyArray_DATA((PyArrayObject *)obstruction);
+        for (npy_intp i = reported(&sc, &mesh); i < n; i++)
+            o[i] = 1;
+    }
+    if (dict && (!obstruction || PyDict_SetItemString(dict, "obstruction", obstruction) != 0))
+        Py_CLEAR(dict);
+    Py_XDECREF(obstruction);
+    rad_mesh_free(&mesh);
+    rad_scene_free(&sc);
+    return dict;
+}
