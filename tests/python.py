@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 # python.py -- the Python binding (import radiosity) against closed forms,
-# identities and the program's own outputs for the same scenes.  TAP.
+# identities and the program's own outputs for the same scenes: unittest
+# cases, reported as TAP when run as a script (tests/commands/python.sh),
+# or by `python3 -m unittest` with $RADIOSITY naming the program.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 #
-# Usage: python.py PROGRAM WORKDIR   (radiosity importable, numpy present)
 # Independent sources: the closed form of directly opposed rectangles
 # (Howell's catalogue, C-11) and the nine-point rule of Goral et al. 1984
 # (eq. 13 with 3 Gauss-Legendre points per edge, A&S 25.4.29) both written
@@ -12,33 +13,21 @@
 import math
 import os
 import signal
+import shutil
 import subprocess
 import sys
+import tempfile
 import threading
+import time
+import unittest
 import warnings
 
 import numpy as np
 
 import radiosity
 
-program, work = sys.argv[1], sys.argv[2]
-count = [0, 0]
-
-
-def ok(cond, what):
-    count[0] += 1
-    if not cond:
-        count[1] += 1
-    print("%s %d - %s" % ("ok" if cond else "not ok", count[0], what))
-
-
-def raises(kind, fn, *args, **kw):
-    """The exception fn raises (of kind), or None."""
-    try:
-        fn(*args, **kw)
-    except kind as e:
-        return e
-    return None
+PROGRAM = os.environ.get("RADIOSITY", "radiosity")
+TOP = os.environ.get("top_srcdir", os.path.join(os.path.dirname(__file__), ".."))
 
 
 def parallel_rectangles(a, b, c):
@@ -82,36 +71,33 @@ def tsv(path):
     return {h: [r[k] for r in rows] for k, h in enumerate(head)}
 
 
-squares = ("material w reflect 0.5\n"
+
+
+def perpendicular_rectangles(l, w, h):
+    """Howell's catalogue C-14: from the l x w rectangle to the l x h one
+    sharing its edge of length l at a right angle."""
+    H, W = h / l, w / l
+    r = math.sqrt(H * H + W * W)
+    a = (1 + W * W) * (1 + H * H) / (1 + W * W + H * H)
+    b = (W * W * (1 + W * W + H * H) / ((1 + W * W) * (W * W + H * H))) ** (W * W)
+    c = (H * H * (1 + H * H + W * W) / ((1 + H * H) * (H * H + W * W))) ** (H * H)
+    return (W * math.atan(1 / W) + H * math.atan(1 / H) - r * math.atan(1 / r)
+            + 0.25 * math.log(a * b * c)) / (math.pi * W)
+
+
+def disk_disk(r1, r2, h):
+    """Howell's catalogue C-41: coaxial parallel disks."""
+    R1, R2 = r1 / h, r2 / h
+    X = 1 + (1 + R2 * R2) / (R1 * R1)
+    return 0.5 * (X - math.sqrt(X * X - 4 * (R2 / R1) ** 2))
+
+
+SQUARES = ("material w reflect 0.5\n"
            "quad w 0 0 0  1 0 0  1 1 0  0 1 0\n"
            "quad w 0 0 1  0 1 1  1 1 1  1 0 1\n")
-two = radiosity.load_scene(squares)
-ok(isinstance(two, radiosity.Scene) and two.surfaces == 2 and two.materials == ["w"],
-   "load_scene(text): a Scene of 2 surfaces, material ['w'] (%r)" % two)
-
-# ---- form factors against independent values ------------------------------
-want = parallel_rectangles(1, 1, 1)
-F = radiosity.form_factors(two, accuracy="reference")
-ok(F.dtype == np.float64 and F.shape == (2, 2),
-   "form_factors: a 2 x 2 float64 array (%s, %s)" % (F.dtype, F.shape))
-ok(abs(F[0, 1] - want) <= 1e-9 * want and abs(F[1, 0] - want) <= 1e-9 * want,
-   "reference: F within 1e-9 of Howell C-11's %.15g (%.15g, %.15g)" % (want, F[0, 1], F[1, 0]))
-ok(F[0, 0] == 0 and F[1, 1] == 0, "F_ii = 0 for planar elements")
-p = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
-q = np.array([[0, 0, 1], [0, 1, 1], [1, 1, 1], [1, 0, 1]], float)
-rule = nine_point(p, q)
-F = radiosity.form_factors(two, accuracy="classic")
-ok(abs(F[0, 1] - rule) <= 1e-13,
-   "classic: the nine-point rule as computed here in NumPy (%.15g, %.15g)" % (rule, F[0, 1]))
-F4, E4 = radiosity.form_factors(two, mesh=(2, 2), accuracy="reference", errors=True)
-fold = F4[:4, 4:].sum() / 4
-ok(F4.shape == (8, 8) and E4.shape == (8, 8) and abs(fold - want) <= 1e-9 * want,
-   "mesh=(2, 2): 8 elements, and the 16 pieces sum back to C-11 (additivity: %.15g)" % fold)
-ok(np.all(E4[:4, 4:] <= 1e-9 * F4[:4, 4:] + 1e-15) and np.all(E4[:4, 4:] > 0),
-   "errors=True: each estimate within the reference promise (max %.3g)" % E4.max())
-
-# ---- rows and columns: a closed cube of unequal elements -----------------
-cube_text = """material w reflect 0.5
+# a closed unit cube, each wall meshed differently: unequal areas, so a
+# transposed F would show (rows sum to 1, columns do not)
+CUBE = """material w reflect 0.5
 quad w 0 0 0  1 0 0  1 1 0  0 1 0  mesh 1x1
 quad w 0 0 1  0 1 1  1 1 1  1 0 1  mesh 2x1
 quad w 0 0 0  0 1 0  0 1 1  0 0 1  mesh 2x2
@@ -119,139 +105,338 @@ quad w 1 0 0  1 0 1  1 1 1  1 1 0  mesh 3x1
 quad w 0 0 0  0 0 1  1 0 1  1 0 0  mesh 1x2
 quad w 0 1 0  1 1 0  1 1 1  0 1 1  mesh 2x3
 """
-cube_path = os.path.join(work, "cube.scene")
-with open(cube_path, "w") as f:
-    f.write(cube_text)
-cube = radiosity.load_scene(cube_path)
-F = radiosity.form_factors(cube, accuracy="reference")
-el = radiosity.elements(cube)
-a = el["area"]
-rows = F.sum(axis=1)
-ok(F.shape == (18, 18) and np.max(np.abs(rows - 1)) <= 18e-9,
-   "closed cube: every row (from element i) sums to 1 within 18 x 1e-9 (worst %.3g)"
-   % np.max(np.abs(rows - 1)))
-ok(np.max(np.abs(F.sum(axis=0) - 1)) > 0.1,
-   "columns do not (unequal areas): the array is not transposed")
-rec = np.abs(a[:, None] * F - (a[:, None] * F).T).max()
-ok(rec <= 1e-15, "reciprocity A_i F_ij = A_j F_ji with elements()['area'] (worst %.3g)" % rec)
-ok(abs(a.sum() - 6) <= 1e-14 and el["centroid"].shape == (18, 3) and
-   list(el["surface"][:3]) == [0, 1, 1] and not el["obstruction"].any(),
-   "elements(): areas sum to the cube's 6, centroids 18 x 3, surfaces in file order")
-npy = os.path.join(work, "f.npy")
-subprocess.run([program, "formfactor", "-q", "--accuracy", "reference", "-o", npy, cube_path],
-               check=True)
-ok(np.array_equal(np.load(npy), F),
-   "bit for bit the matrix `radiosity formfactor -o f.npy` writes for the same scene")
-
-# ---- the solve -------------------------------------------------------------
-furnace = radiosity.load_scene(cube_text.replace("reflect 0.5", "reflect 0.2 0.5 0.8 emit 1"))
-B = radiosity.solve(furnace, accuracy="reference")
-rho = np.array([0.2, 0.5, 0.8])
-delta = np.max(np.abs(radiosity.form_factors(furnace, accuracy="reference").sum(axis=1) - 1))
-# B = E + rho F B with rows short of 1 by at most delta: |B - B*| / B* <=
-# rho delta / (1 - rho (1 - delta)), plus LU's rounding
-tol = rho * delta / (1 - rho) + 1e-12
-err = np.abs(B / (1 / (1 - rho)) - 1).max(axis=0)
-ok(B.shape == (18, 3) and np.all(err <= tol),
-   "furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) (errors %s, bounds %s)"
-   % (np.array2string(err, precision=3), np.array2string(tol, precision=3)))
-B0 = radiosity.solve(furnace, bounces=0)
-ok(np.all(B0 == 1), "bounces=0: B = E exactly")
-goral = os.path.join(radiosity.scene_dir, "goral1984-cube.scene")
-if not os.path.exists(goral):
-    goral = os.path.join(os.environ.get("top_srcdir", "."), "data", "goral1984-cube.scene")
-g = radiosity.load_scene(goral)
-B = radiosity.solve(g, mesh=(4, 4))
-table = os.path.join(work, "g.tsv")
-subprocess.run([program, "solve", "-q", "--mesh", "4x4", "--elements", table, goral], check=True)
-t = tsv(table)
-ref = np.array([[float(v) for v in t[b]] for b in "rgb"]).T
-ok(np.array_equal(B, ref), "solve(): bit for bit `radiosity solve --elements` (r, g, b columns)")
-Bc = radiosity.solve(g, mesh=(4, 4), solver="cholesky")
-ok(np.abs(Bc - B).max() <= 1e-12 * np.abs(B).max(),
-   "solver='cholesky' agrees with gauss within 1e-12 (%.3g)" % np.abs(Bc - B).max())
-
-# ---- View3D's obstructions -------------------------------------------------
-vs3 = os.path.join(work, "obs.vs3")
-with open(vs3, "w") as f:
-    f.write("T two unit squares, an obstruction midway covering every line between\n"
-            "F 3\nV 1 0 0 0\nV 2 1 0 0\nV 3 1 1 0\nV 4 0 1 0\nV 5 0 0 1\nV 6 1 0 1\n"
-            "V 7 1 1 1\nV 8 0 1 1\nV 9 0 0 .5\nV 10 1 0 .5\nV 11 1 1 .5\nV 12 0 1 .5\n"
-            "S 1  1 2 3 4  0 0 0.9 bottom\nS 2  5 8 7 6  0 0 0.9 top\n"
-            "O 3  9 12 11 10\nE\n")
-obs = radiosity.load_scene(vs3)
-F = radiosity.form_factors(obs)
-ok(F.shape == (2, 2) and abs(F[0, 1]) <= 1e-12,
-   "an O surface blocks (every line meets it at its midpoint: F = 0, got %.3g) but has no row"
-   % F[0, 1])
-ok(list(radiosity.elements(obs)["obstruction"]) == [False, False, True],
-   "elements(): the obstruction is flagged, last")
-
-# ---- OBJ repairs said, or refused -----------------------------------------
-obj = os.path.join(work, "m.obj")
-with open(obj, "w") as f:
-    f.write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl nowhere\n"
-            "f 1 2 3 4\nf 1 2 5\n")
-with warnings.catch_warnings(record=True) as caught:
-    warnings.simplefilter("always")
-    m = radiosity.load_scene(obj)
-said = [str(w.message) for w in caught if w.category is RuntimeWarning]
-ok(m.surfaces == 1 and len(said) == 2 and said[0].startswith(obj + ":7: repaired: 1 face use")
-   and said[1].startswith(obj + ":8: repaired: 1 face without area") and m.repairs == said,
-   "OBJ: each repair said as a RuntimeWarning with its line, and kept in .repairs (%s)" % said)
-e = raises(radiosity.Error, radiosity.load_scene, obj, strict=True)
-ok(e is not None and str(e).startswith(obj + ":6: undefined material"),
-   "strict=True refuses the repair: %s" % e)
-e = raises(radiosity.Error, radiosity.load_scene, cube_path, format="obj")
-ok(e is not None and str(e).startswith(cube_path + ":"),
-   "format='obj' reads a native file as OBJ, and says where it fails: %s" % e)
-
-# ---- errors ----------------------------------------------------------------
-e = raises(radiosity.Error, radiosity.load_scene, "material w reflect 2\nquad w 0 0 0\n")
-ok(e is not None and str(e).startswith("<string>:1: ") and e.status == "malformed input",
-   "bad text raises radiosity.Error 'FILE:LINE: reason' with its status: %s (%s)"
-   % (e, getattr(e, "status", None)))
-missing = os.path.join(work, "none.scene")
-e = raises(radiosity.Error, radiosity.load_scene, missing)
-ok(e is not None and str(e).startswith(missing + ": "), "a missing file: %s" % e)
-e = raises(radiosity.Error, radiosity.form_factors, cube, mesh=(2000, 2000))
-ok(e is not None and e.status == "problem too large for memory" and "24000000 elements" in str(e),
-   "a mesh too large for memory is refused before anything is allocated: %s" % e)
-e = raises(ValueError, radiosity.form_factors, cube, accuracy="best")
-ok(e is not None and "'reference'" in str(e), "an unknown accuracy: ValueError: %s" % e)
-e = raises(ValueError, radiosity.form_factors, cube, mesh=(0, 2))
-ok(e is not None, "mesh=(0, 2): ValueError: %s" % e)
-e = raises(TypeError, radiosity.form_factors, "cube.scene")
-ok(e is not None, "a str where a Scene belongs: TypeError: %s" % e)
-e = raises(ValueError, radiosity.solve, cube, solver="lu")
-ok(e is not None and "'gauss'" in str(e), "an unknown solver: ValueError: %s" % e)
-ok(raises(TypeError, radiosity.Scene) is not None, "a Scene is made by load_scene alone")
-
-# ---- threads and Ctrl-C ----------------------------------------------------
-out = [None, None]
+RHO = np.array([0.2, 0.5, 0.8])
+FURNACE = CUBE.replace("reflect 0.5", "reflect 0.2 0.5 0.8 emit 1")
 
 
-def fill(k):
-    out[k] = radiosity.form_factors(g, mesh=(3, 3))
+class Binding(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp()
+        cls.cube_path = os.path.join(cls.work, "cube.scene")
+        with open(cls.cube_path, "w") as f:
+            f.write(CUBE)
+        cls.two = radiosity.load_scene(SQUARES)
+        cls.cube = radiosity.load_scene(cls.cube_path)
+        cls.goral = os.path.join(radiosity.scene_dir, "goral1984-cube.scene")
+        if not os.path.exists(cls.goral):  # not installed yet: the source's
+            cls.goral = os.path.join(TOP, "data", "goral1984-cube.scene")
+        cls.g = radiosity.load_scene(cls.goral)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.work)
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    # ---- scenes ------------------------------------------------------------
+    def test_load_text(self):
+        """load_scene(text): a Scene of 2 surfaces, material ['w'], named <string>"""
+        self.assertIsInstance(self.two, radiosity.Scene)
+        self.assertEqual((self.two.surfaces, self.two.materials, self.two.filename),
+                         (2, ["w"], "<string>"))
+
+    def test_load_pathlike(self):
+        """load_scene takes os.PathLike and bytes paths"""
+        import pathlib
+        for p in (pathlib.Path(self.cube_path), os.fsencode(self.cube_path)):
+            self.assertEqual(radiosity.load_scene(p).surfaces, 6)
+
+    # ---- form factors against independent values ---------------------------
+    def test_reference_closed_form(self):
+        """reference: F within 1e-9 of Howell C-11, F_ii = 0, a 2 x 2 float64 array"""
+        F = radiosity.form_factors(self.two, accuracy="reference")
+        want = parallel_rectangles(1, 1, 1)
+        self.assertEqual((F.dtype, F.shape), (np.float64, (2, 2)))
+        self.assertLessEqual(abs(F[0, 1] - want), 1e-9 * want)
+        self.assertLessEqual(abs(F[1, 0] - want), 1e-9 * want)
+        self.assertEqual((F[0, 0], F[1, 1]), (0, 0))
+
+    def test_classic_nine_point(self):
+        """classic: the nine-point rule of eq. 13 as computed here in NumPy, to 1e-13"""
+        p = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+        q = np.array([[0, 0, 1], [0, 1, 1], [1, 1, 1], [1, 0, 1]], float)
+        F = radiosity.form_factors(self.two, accuracy="classic")
+        self.assertAlmostEqual(F[0, 1], nine_point(p, q), delta=1e-13)
+
+    def test_additivity_and_estimates(self):
+        """mesh=(2, 2): 16 pieces sum back to C-11; errors=True gives E within the promise"""
+        F, E = radiosity.form_factors(self.two, mesh=(2, 2), accuracy="reference", errors=True)
+        want = parallel_rectangles(1, 1, 1)
+        self.assertEqual((F.shape, E.shape), ((8, 8), (8, 8)))
+        self.assertLessEqual(abs(F[:4, 4:].sum() / 4 - want), 1e-9 * want)
+        self.assertTrue(np.all(E[:4, 4:] <= 1e-9 * F[:4, 4:] + 1e-15))
+        self.assertTrue(np.all(E[:4, 4:] > 0))
+
+    def test_rows_columns_reciprocity(self):
+        """closed cube of unequal elements: rows sum to 1, columns do not, A_i F_ij = A_j F_ji"""
+        F = radiosity.form_factors(self.cube, accuracy="reference")
+        a = radiosity.elements(self.cube)["area"]
+        self.assertEqual(F.shape, (18, 18))
+        self.assertLessEqual(np.abs(F.sum(axis=1) - 1).max(), 18e-9)
+        self.assertGreater(np.abs(F.sum(axis=0) - 1).max(), 0.1)
+        self.assertLessEqual(np.abs(a[:, None] * F - (a[:, None] * F).T).max(), 1e-15)
+
+    def test_same_as_program(self):
+        """bit for bit the matrix `radiosity formfactor -o f.npy` writes (the 1984 cube, 4x4)"""
+        npy = self.path("f.npy")
+        subprocess.run([PROGRAM, "formfactor", "-q", "--mesh", "4x4", "-o", npy, self.goral],
+                       check=True)
+        F = radiosity.form_factors(self.g, mesh=(4, 4))
+        self.assertEqual(F.shape, (96, 96))
+        self.assertLessEqual(np.abs(F.sum(axis=1) - 1).max(), 1e-9)
+        self.assertTrue(np.array_equal(np.load(npy), F))
+
+    def test_hemicube(self):
+        """method='hemicube': the program's --form-factors-method hemicube, bit for bit"""
+        npy = self.path("h.npy")
+        subprocess.run([PROGRAM, "formfactor", "-q", "--form-factors-method", "hemicube",
+                        "--resolution", "32", "-o", npy, self.cube_path], check=True)
+        F = radiosity.form_factors(self.cube, method="hemicube", resolution=32)
+        self.assertTrue(np.array_equal(np.load(npy), F))
+
+    # ---- elements and vertices ----------------------------------------------
+    def test_elements(self):
+        """elements(): areas sum to 6, surfaces in file order, corners average to centroids"""
+        el = radiosity.elements(self.cube)
+        v = radiosity.vertices(self.cube)
+        self.assertAlmostEqual(el["area"].sum(), 6, delta=1e-14)
+        self.assertEqual(list(el["surface"][:3]), [0, 1, 1])
+        self.assertEqual(el["corners"].shape, (18, 4))
+        self.assertFalse(el["obstruction"].any())
+        # each element is a parallelogram: its centroid is its corners' mean
+        self.assertLessEqual(np.abs(v[el["corners"]].mean(axis=1) - el["centroid"]).max(), 1e-15)
+        normals = np.cross(v[el["corners"][:, 1]] - v[el["corners"][:, 0]],
+                           v[el["corners"][:, 2]] - v[el["corners"][:, 1]])
+        self.assertTrue(np.allclose(normals / np.linalg.norm(normals, axis=1)[:, None],
+                                    el["normal"], atol=1e-15))
+
+    # ---- the solve -----------------------------------------------------------
+    def test_furnace(self):
+        """furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) of F's row sums"""
+        s = radiosity.load_scene(FURNACE)
+        B, Bv = radiosity.solve(s, accuracy="reference", vertices=True)
+        delta = np.abs(radiosity.form_factors(s, accuracy="reference").sum(axis=1) - 1).max()
+        # B = E + rho F B with rows short of 1 by at most delta:
+        # |B - B*| / B* <= rho delta / (1 - rho), plus LU's rounding
+        tol = RHO * delta / (1 - RHO) + 1e-12
+        self.assertEqual(B.shape, (18, 3))
+        self.assertTrue(np.all(np.abs(B * (1 - RHO) - 1) <= tol))
+        # smoothing a constant gives that constant at every vertex
+        self.assertEqual(Bv.shape, (len(radiosity.vertices(s)), 3))
+        self.assertTrue(np.all(np.abs(Bv * (1 - RHO) - 1) <= 4 * tol))
+
+    def test_bounces(self):
+        """bounces=0: B = E exactly; bounces=1: B = E + rho F E"""
+        s = radiosity.load_scene(FURNACE)
+        self.assertTrue(np.all(radiosity.solve(s, bounces=0) == 1))
+        F = radiosity.form_factors(s)
+        B1 = radiosity.solve(s, bounces=1)
+        self.assertLessEqual(np.abs(B1 - (1 + RHO * F.sum(axis=1)[:, None])).max(), 1e-14)
+
+    def test_solve_same_as_program(self):
+        """solve(): bit for bit `radiosity solve --elements`, columns r, g, b"""
+        table = self.path("g.tsv")
+        subprocess.run([PROGRAM, "solve", "-q", "--mesh", "4x4", "--elements", table,
+                        self.goral], check=True)
+        t = tsv(table)
+        ref = np.array([[float(v) for v in t[b]] for b in "rgb"]).T
+        self.assertTrue(np.array_equal(radiosity.solve(self.g, mesh=(4, 4)), ref))
+
+    def test_cholesky(self):
+        """solver='cholesky' agrees with gauss within 1e-12"""
+        B = radiosity.solve(self.g, mesh=(4, 4))
+        Bc = radiosity.solve(self.g, mesh=(4, 4), solver="cholesky")
+        self.assertLessEqual(np.abs(Bc - B).max(), 1e-12 * np.abs(B).max())
+
+    # ---- closed forms --------------------------------------------------------
+    def test_analytic(self):
+        """analytic.*: Howell C-11, C-14, C-41 and r^2 / (r^2 + h^2), as written here"""
+        an = radiosity.analytic
+        for a, b, c in [(1, 1, 1), (2, 0.5, 3), (1e-3, 1, 1)]:
+            self.assertAlmostEqual(an.parallel_rectangles(a, b, c),
+                                   parallel_rectangles(a, b, c), delta=1e-12)
+        for l, w, h in [(1, 1, 1), (2, 1, 0.5)]:
+            self.assertAlmostEqual(an.perpendicular_rectangles(l, w, h),
+                                   perpendicular_rectangles(l, w, h), delta=1e-12)
+        self.assertAlmostEqual(an.disk_disk(1, 2, 1.5), disk_disk(1, 2, 1.5), delta=1e-12)
+        self.assertAlmostEqual(an.point_disk(1, 2), 1 / 5, delta=1e-15)
+        with self.assertRaises(ValueError):
+            an.point_disk(-1, 2)
+        with self.assertRaises(ValueError):
+            an.disk_disk(1, float("inf"), 1)
+
+    # ---- View3D's obstructions ----------------------------------------------
+    def test_obstruction(self):
+        """an O surface blocks (every line meets it: F = 0) but has no row; flagged last"""
+        vs3 = self.path("obs.vs3")
+        with open(vs3, "w") as f:
+            f.write("T two unit squares, an obstruction midway covering every line\n"
+                    "F 3\nV 1 0 0 0\nV 2 1 0 0\nV 3 1 1 0\nV 4 0 1 0\nV 5 0 0 1\n"
+                    "V 6 1 0 1\nV 7 1 1 1\nV 8 0 1 1\nV 9 0 0 .5\nV 10 1 0 .5\n"
+                    "V 11 1 1 .5\nV 12 0 1 .5\nS 1  1 2 3 4  0 0 0.9 bottom\n"
+                    "S 2  5 8 7 6  0 0 0.9 top\nO 3  9 12 11 10\nE\n")
+        s = radiosity.load_scene(vs3)
+        F = radiosity.form_factors(s)
+        self.assertEqual(F.shape, (2, 2))
+        self.assertLessEqual(abs(F[0, 1]), 1e-12)
+        self.assertEqual(list(radiosity.elements(s)["obstruction"]), [False, False, True])
+
+    # ---- OBJ repairs ----------------------------------------------------------
+    def test_obj_repairs(self):
+        """OBJ: each repair a RuntimeWarning with its line, kept in .repairs; strict refuses"""
+        obj = self.path("m.obj")
+        with open(obj, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl nowhere\n"
+                    "f 1 2 3 4\nf 1 2 5\n")
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            m = radiosity.load_scene(obj)
+        said = [str(w.message) for w in caught if w.category is RuntimeWarning]
+        self.assertEqual(m.surfaces, 1)
+        self.assertEqual(len(said), 2)
+        self.assertTrue(said[0].startswith(obj + ":7: repaired: 1 face use a material"))
+        self.assertTrue(said[1].startswith(obj + ":8: repaired: 1 face without area"))
+        self.assertEqual(m.repairs, said)
+        with self.assertRaisesRegex(radiosity.Error, "^" + obj + ":6: undefined material"):
+            radiosity.load_scene(obj, strict=True)
+
+    def test_format(self):
+        """format='obj' reads a native file as OBJ and says where it fails"""
+        with self.assertRaisesRegex(radiosity.Error, "^" + self.cube_path + ":1: "):
+            radiosity.load_scene(self.cube_path, format="obj")
+
+    # ---- errors -------------------------------------------------------------------
+    def test_error_text(self):
+        """bad text: radiosity.Error 'FILE:LINE: reason' with its status"""
+        with self.assertRaises(radiosity.Error) as c:
+            radiosity.load_scene("material w reflect 2\nquad w 0 0 0\n")
+        self.assertTrue(str(c.exception).startswith("<string>:1: reflectance"))
+        self.assertEqual(c.exception.status, "malformed input")
+
+    def test_error_file(self):
+        """a missing file: radiosity.Error naming it"""
+        missing = self.path("none.scene")
+        with self.assertRaisesRegex(radiosity.Error, "^" + missing + ": "):
+            radiosity.load_scene(missing)
+
+    def test_too_big(self):
+        """a mesh too large for memory is refused before anything is allocated"""
+        with self.assertRaises(radiosity.Error) as c:
+            radiosity.form_factors(self.cube, mesh=(2000, 2000))
+        self.assertEqual(c.exception.status, "problem too large for memory")
+        self.assertIn("24000000 elements", str(c.exception))
+
+    def test_bad_arguments(self):
+        """wrong arguments: ValueError or TypeError naming the choices"""
+        with self.assertRaisesRegex(ValueError, "'reference'"):
+            radiosity.form_factors(self.cube, accuracy="best")
+        with self.assertRaises(ValueError):
+            radiosity.form_factors(self.cube, mesh=(0, 2))
+        with self.assertRaises(TypeError):
+            radiosity.form_factors(self.cube, mesh=[2, 2, 2])
+        with self.assertRaises(TypeError):
+            radiosity.form_factors("cube.scene")
+        with self.assertRaisesRegex(ValueError, "'gauss'"):
+            radiosity.solve(self.cube, solver="lu")
+        with self.assertRaises(ValueError):
+            radiosity.form_factors(self.cube, quadrature=0)
+        with self.assertRaises(ValueError):
+            radiosity.form_factors(self.cube, method="hemicube", resolution=33)
+        with self.assertRaises(TypeError):
+            radiosity.form_factors(self.cube, progress=3)
+        with self.assertRaises(TypeError):
+            radiosity.Scene()
+
+    # ---- progress, threads, signals ---------------------------------------------
+    def test_progress(self):
+        """progress(stage, done, total) is called, up to done == total; it may stop the fill"""
+        calls = []
+        radiosity.form_factors(self.g, mesh=(3, 3),
+                               progress=lambda *a: calls.append(a))
+        self.assertTrue(calls and calls[-1][1] == calls[-1][2])
+        self.assertEqual(calls[-1][0], "form factors")
+        self.assertTrue(all(0 <= c[1] <= c[2] for c in calls))
+
+        class Stop(Exception):
+            pass
+
+        def stop(*a):
+            raise Stop
+
+        with self.assertRaises(Stop):
+            radiosity.form_factors(self.g, mesh=(6, 6), progress=stop)
+        with self.assertRaisesRegex(radiosity.Error, "interrupted"):
+            radiosity.form_factors(self.g, mesh=(6, 6), progress=lambda *a: True)
+
+    def test_threads(self):
+        """two threads filling at once (the GIL released) get the same matrix"""
+        out = [None, None]
+
+        def fill(k):
+            out[k] = radiosity.form_factors(self.g, mesh=(3, 3))
+
+        threads = [threading.Thread(target=fill, args=(k,)) for k in range(2)]
+        for th in threads:
+            th.start()
+        for th in threads:
+            th.join()
+        self.assertTrue(out[0] is not None and np.array_equal(out[0], out[1]))
+
+    def test_ctrl_c(self):
+        """Ctrl-C (SIGINT) in a long fill: KeyboardInterrupt within a second, then usable"""
+        fired = []
+
+        def fire():
+            fired.append(time.monotonic())
+            os.kill(os.getpid(), signal.SIGINT)
+
+        timer = threading.Timer(0.2, fire)
+        timer.start()
+        with self.assertRaises(KeyboardInterrupt):
+            radiosity.form_factors(self.g, mesh=(20, 20), accuracy="reference")
+        late = time.monotonic() - fired[0]
+        timer.join()
+        self.assertLess(late, 1.0)
+        self.assertEqual(radiosity.form_factors(self.two).shape, (2, 2))
 
 
-threads = [threading.Thread(target=fill, args=(k,)) for k in range(2)]
-for th in threads:
-    th.start()
-for th in threads:
-    th.join()
-ok(out[0] is not None and np.array_equal(out[0], out[1]),
-   "two threads filling at once (the GIL released) get the same matrix")
+class Tap(unittest.TestResult):
+    """Each test as one TAP line, its docstring as the description."""
+
+    def __init__(self):
+        super().__init__()
+        self.n = 0
+
+    def line(self, test, good, why=""):
+        self.n += 1
+        print("%s %d - %s%s" % ("ok" if good else "not ok", self.n,
+                                test.shortDescription() or test.id(), why))
+        sys.stdout.flush()
+
+    def addSuccess(self, test):
+        super().addSuccess(test)
+        self.line(test, True)
+
+    def addFailure(self, test, err):
+        super().addFailure(test, err)
+        self.line(test, False)
+        print("# " + self.failures[-1][1].replace("\n", "\n# "))
+
+    def addError(self, test, err):
+        super().addError(test, err)
+        self.line(test, False)
+        print("# " + self.errors[-1][1].replace("\n", "\n# "))
+
+    def addSkip(self, test, reason):
+        super().addSkip(test, reason)
+        self.n += 1
+        print("ok %d # SKIP %s" % (self.n, reason))
 
 
-def alarm(signum, frame):
-    raise KeyboardInterrupt
-
-
-signal.signal(signal.SIGALRM, alarm)
-signal.setitimer(signal.ITIMER_REAL, 0.05)
-e = raises(KeyboardInterrupt, radiosity.form_factors, g, mesh=(20, 20), accuracy="reference")
-signal.setitimer(signal.ITIMER_REAL, 0)
-ok(e is not None, "a signal during a long fill stops it with the handler's exception")
-print("1..%d" % count[0])
-sys.exit(1 if count[1] else 0)
+if __name__ == "__main__":
+    result = Tap()
+    unittest.defaultTestLoader.loadTestsFromTestCase(Binding).run(result)
+    print("1..%d" % result.n)
+    sys.exit(0 if result.wasSuccessful() else 1)

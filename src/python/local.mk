@@ -10,7 +10,8 @@ if HAVE_PYTHON
 pyexec_LTLIBRARIES = %reldir%/radiosity.la
 endif
 %canon_reldir%_radiosity_la_SOURCES = %reldir%/pymodule.c %reldir%/pyscene.c \
-	%reldir%/pyrun.c %reldir%/pyerror.c %reldir%/pyrad.h
+	%reldir%/pyrun.c %reldir%/pyerror.c %reldir%/pyanalytic.c \
+	%reldir%/pyrad.h
 %canon_reldir%_radiosity_la_CPPFLAGS = $(AM_CPPFLAGS) $(PYTHON_CPPFLAGS)
 # Python's argument parser takes its keyword lists as char *[] before 3.13:
 # string literals stay char[] here

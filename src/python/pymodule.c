@@ -20,7 +20,7 @@ PyDoc_STRVAR(load_scene_doc,
 PyDoc_STRVAR(form_factors_doc,
 "form_factors(scene, *, mesh=None, accuracy='default', quadrature=3,\n"
 "             method='contour', resolution=64, threads=0, errors=False,\n"
-"             strict=False) -> numpy.ndarray\n\n"
+"             strict=False, progress=None) -> numpy.ndarray\n\n"
 "The form factors of every pair of elements: an n x n float64 array whose\n"
 "row i holds the factors from element i (F[i, j] = F_ij; rows of a closed\n"
 "scene sum to 1; A_i F_ij = A_j F_ji).  mesh=(N, M) cuts every\n"
@@ -30,25 +30,37 @@ PyDoc_STRVAR(form_factors_doc,
 "errors=True returns (F, E), E the estimated absolute error of each entry\n"
 "(NaN where none is known).  Obstruction surfaces (View3D's O lines) block\n"
 "but have no rows or columns.  Entries that miss the mode's promise are\n"
-"said by a RuntimeWarning, or raise radiosity.Error with strict=True.");
+"said by a RuntimeWarning, or raise radiosity.Error with strict=True.\n"
+"progress(stage, done, total) is called now and then; an exception it\n"
+"raises, or Ctrl-C, stops the fill and is raised; a true return stops it\n"
+"with radiosity.Error('interrupted').");
 
 PyDoc_STRVAR(solve_doc,
 "solve(scene, *, mesh=None, accuracy='default', solver='gauss', bounces=None,\n"
 "      quadrature=3, method='contour', resolution=64, threads=0,\n"
-"      strict=False) -> numpy.ndarray\n\n"
+"      strict=False, progress=None, vertices=False) -> numpy.ndarray\n\n"
 "Mesh, form factors and the radiosity system (Goral et al. 1984, eq. 5)\n"
 "band by band: B as an n x 3 float64 array, row i the radiosity of element\n"
 "i in red, green and blue.  solver is 'gauss', 'cholesky', 'jacobi',\n"
 "'gauss-seidel', 'cg' or 'progressive'; bounces=K gives exactly K\n"
-"reflections instead.  Raises radiosity.Error on a singular system or an\n"
-"unmet promise with strict=True.");
+"reflections instead.  vertices=True returns (B, Bv), Bv the radiosity\n"
+"smoothed to each vertex of vertices(scene, mesh=...) (Goral et al. 1984,\n"
+"section 3).  Raises radiosity.Error on a singular system or an unmet\n"
+"promise with strict=True.");
 
 PyDoc_STRVAR(elements_doc,
 "elements(scene, *, mesh=None) -> dict\n\n"
 "The elements a run with this mesh makes, in the order of the rows of F\n"
 "and B: 'surface' (index of the surface in file order, int), 'area',\n"
 "'centroid' and 'normal' (n x 3), 'reflect' and 'emit' (n x 3, per band),\n"
+"'corners' (n x K int: vertex indices, counter-clockwise, padded with -1),\n"
 "'obstruction' (bool: left out of form_factors' rows; they come last).");
+
+PyDoc_STRVAR(vertices_doc,
+"vertices(scene, *, mesh=None) -> numpy.ndarray\n\n"
+"The mesh's vertices as an nv x 3 float64 array: the rows of the Bv that\n"
+"solve(..., vertices=True) returns, indexed by elements()['corners'].\n"
+"Vertices are shared inside a surface, never across surfaces.");
 
 static PyMethodDef functions[] = {
     {"load_scene", (PyCFunction)(void (*)(void))radi_py_load_scene,
@@ -59,6 +71,8 @@ static PyMethodDef functions[] = {
      solve_doc},
     {"elements", (PyCFunction)(void (*)(void))radi_py_elements,
      METH_VARARGS | METH_KEYWORDS, elements_doc},
+    {"vertices", (PyCFunction)(void (*)(void))radi_py_vertices,
+     METH_VARARGS | METH_KEYWORDS, vertices_doc},
     {NULL, NULL, 0, NULL}};
 
 static int exec_module(PyObject *module)
@@ -73,7 +87,7 @@ static int exec_module(PyObject *module)
         PyExc_Exception, NULL);
     if (!st->error || PyModule_AddObjectRef(module, "Error", st->error) != 0)
         return -1;
-    if (radi_py_scene_init(module, st) != 0)
+    if (radi_py_scene_init(module, st) != 0 || radi_py_analytic_init(module) != 0)
         return -1;
     if (PyModule_AddStringConstant(module, "__version__", rad_version()) != 0 ||
         PyModule_AddStringConstant(module, "scene_dir", rad_scene_dir()) != 0)

@@ -51,10 +51,14 @@ PyObject *radi_py_load_scene(PyObject *module, PyObject *args, PyObject *kw);
  * Returns 0, or -1 with an exception set. */
 int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene *out);
 
+/* pyanalytic.c: the submodule radiosity.analytic */
+int radi_py_analytic_init(PyObject *module);
+
 /* pyrun.c */
 int radi_py_numpy_init(void);
 PyObject *radi_py_form_factors(PyObject *module, PyObject *args, PyObject *kw);
 PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw);
 PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw);
+PyObject *radi_py_vertices(PyObject *module, PyObject *args, PyObject *kw);
 
 #endif /* RADI_PYRAD_H */

@@ -28,6 +28,7 @@ int radi_py_numpy_init(void)
 
 typedef struct run_args {
     PyObject *scene, *mesh;
+    PyObject *progress;         /* None, or called as progress(stage, done, total) */
     const char *accuracy, *method;
     int quadrature, resolution, threads, strict;
 } run_args;
@@ -35,6 +36,7 @@ typedef struct run_args {
 static void run_args_init(run_args *a)
 {
     a->mesh = Py_None;
+    a->progress = Py_None;
     a->accuracy = "default";
     a->method = "contour";
     a->quadrature = 3;
@@ -43,11 +45,19 @@ static void run_args_init(run_args *a)
     a->strict = 0;
 }
 
+/* The library's progress callback: a pending signal's handler runs here,
+ * then the caller's progress(stage, done, total); an exception from
+ * either, or a true return, asks the library to stop. */
 static int check_interrupt(void *user, const char *stage, double done, double total)
 {
-    (void)user, (void)stage, (void)done, (void)total;
+    PyObject *progress = user;
     PyGILState_STATE g = PyGILState_Ensure();
-    const int stop = PyErr_CheckSignals() != 0;
+    int stop = PyErr_CheckSignals() != 0;
+    if (!stop && progress != Py_None) {
+        PyObject *r = PyObject_CallFunction(progress, "sdd", stage, done, total);
+        stop = !r || PyObject_IsTrue(r) != 0;
+        Py_XDECREF(r);
+    }
     PyGILState_Release(g);
     return stop;
 }
@@ -70,6 +80,10 @@ static int ff_options(const run_args *a, rad_ff_options *ff)
                      RAD_HEMICUBE_MAX, a->resolution);
         return -1;
     }
+    if (a->progress != Py_None && !PyCallable_Check(a->progress)) {
+        PyErr_SetString(PyExc_TypeError, "progress must be callable or None");
+        return -1;
+    }
     if (a->threads < 0) {
         PyErr_Format(PyExc_ValueError, "threads must be 0 (all) or more, not %d", a->threads);
         return -1;
@@ -80,6 +94,7 @@ static int ff_options(const run_args *a, rad_ff_options *ff)
     ff->resolution = a->resolution;
     ff->threads = a->threads;
     ff->progress = check_interrupt;
+    ff->progress_user = a->progress;
     return 0;
 }
 
@@ -225,21 +240,33 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
 PyObject *radi_py_form_factors(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", "accuracy", "quadrature", "method",
-                             "resolution", "threads", "errors", "strict", NULL};
+                             "resolution", "threads", "errors", "strict", "progress", NULL};
     run_args a;
     int errors = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Osisiipp:form_factors", kwlist, &a.scene,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OsisiippO:form_factors", kwlist, &a.scene,
                                      &a.mesh, &a.accuracy, &a.quadrature, &a.method,
-                                     &a.resolution, &a.threads, &errors, &a.strict))
+                                     &a.resolution, &a.threads, &errors, &a.strict,
+                                     &a.progress))
         return NULL;
     return fill(module, &a, errors);
 }
 
 /* ---- solve -------------------------------------------------------------- */
 
+/* An n x RAD_BANDS array holding a copy of the library's column-major
+ * values. */
+static PyObject *bands(const double *v, int n)
+{
+    const npy_intp dims[2] = {n, RAD_BANDS};
+    PyObject *out = PyArray_EMPTY(2, dims, NPY_FLOAT64, 1);
+    if (out && n > 0)
+        memcpy(PyArray_DATA((PyArrayObject *)out), v, sizeof *v * (size_t)n * RAD_BANDS);
+    return out;
+}
+
 static PyObject *run_solve(PyObject *module, const run_args *a, const char *solver,
-                           PyObject *bounces)
+                           PyObject *bounces, int vertices)
 {
     rad_pipeline_options po;
     rad_pipeline_options_init(&po);
@@ -273,11 +300,14 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
             radi_py_raise(module, &err);
         else if (!res.b_negative || warn("B is negative in %ld element-band values: no "
                                          "physical solution", res.b_negative) == 0) {
-            const npy_intp dims[2] = {res.mesh.nelements, RAD_BANDS};
-            B = PyArray_EMPTY(2, dims, NPY_FLOAT64, 1);
-            if (B && res.mesh.nelements > 0)
-                memcpy(PyArray_DATA((PyArrayObject *)B), res.B,
-                       sizeof *res.B * (size_t)res.mesh.nelements * RAD_BANDS);
+            B = bands(res.B, res.mesh.nelements);
+            if (B && vertices) {
+                PyObject *Bv = bands(res.Bv, res.mesh.nvertices);
+                if (Bv)
+                    B = Py_BuildValue("(NN)", B, Bv);
+                else
+                    Py_CLEAR(B);
+            }
         }
     }
     rad_result_free(&res);
@@ -288,16 +318,19 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
 PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", "accuracy", "solver", "bounces", "quadrature",
-                             "method", "resolution", "threads", "strict", NULL};
+                             "method", "resolution", "threads", "strict", "progress",
+                             "vertices", NULL};
     run_args a;
     const char *solver = "gauss";
     PyObject *bounces = Py_None;
+    int vertices = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OssOisiip:solve", kwlist, &a.scene, &a.mesh,
-                                     &a.accuracy, &solver, &bounces, &a.quadrature, &a.method,
-                                     &a.resolution, &a.threads, &a.strict))
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OssOisiipOp:solve", kwlist, &a.scene,
+                                     &a.mesh, &a.accuracy, &solver, &bounces, &a.quadrature,
+                                     &a.method, &a.resolution, &a.threads, &a.strict,
+                                     &a.progress, &vertices))
         return NULL;
-    return run_solve(module, &a, solver, bounces);
+    return run_solve(module, &a, solver, bounces, vertices);
 }
 
 /* ---- elements ----------------------------------------------------------- */
@@ -336,6 +369,26 @@ static PyObject *column(const rad_mesh *mesh, const char *what)
     return out;
 }
 
+/* Each element's vertex indices (counter-clockwise about its front), as
+ * rows of an n x K int array padded with -1 (K the most corners). */
+static PyObject *corner_table(const rad_mesh *mesh)
+{
+    int k = 0;
+    for (int i = 0; i < mesh->nelements; i++)
+        k = mesh->elements[i].nverts > k ? mesh->elements[i].nverts : k;
+    const npy_intp dims[2] = {mesh->nelements, k};
+    PyObject *out = PyArray_EMPTY(2, dims, NPY_INT, 0);
+    if (!out)
+        return NULL;
+    int *row = PyArray_DATA((PyArrayObject *)out);
+    for (int i = 0; i < mesh->nelements; i++, row += k) {
+        const rad_element *e = &mesh->elements[i];
+        for (int v = 0; v < k; v++)
+            row[v] = v < e->nverts ? mesh->vindex[e->first + v] : -1;
+    }
+    return out;
+}
+
 PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", NULL};
@@ -360,6 +413,10 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
         Py_XDECREF(col);
     }
     const npy_intp n = mesh.nelements;
+    PyObject *corners = dict ? corner_table(&mesh) : NULL;
+    if (dict && (!corners || PyDict_SetItemString(dict, "corners", corners) != 0))
+        Py_CLEAR(dict);
+    Py_XDECREF(corners);
     PyObject *obstruction = dict ? PyArray_ZEROS(1, &n, NPY_BOOL, 0) : NULL;
     if (obstruction) {
         npy_bool *o = PyArray_DATA((PyArrayObject *)obstruction);
@@ -372,4 +429,35 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
     rad_mesh_free(&mesh);
     rad_scene_free(&sc);
     return dict;
+}
+
+/* ---- vertices ----------------------------------------------------------- */
+
+PyObject *radi_py_vertices(PyObject *module, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"scene", "mesh", NULL};
+    PyObject *scene, *mesh_obj = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O:vertices", kwlist, &scene, &mesh_obj))
+        return NULL;
+    rad_scene sc;
+    rad_mesh mesh;
+    if (radi_py_run_scene(module, scene, mesh_obj, &sc) != 0)
+        return NULL;
+    if (build_mesh(module, &sc, 0, &mesh) != 0) {
+        rad_scene_free(&sc);
+        return NULL;
+    }
+    const npy_intp dims[2] = {mesh.nvertices, 3};
+    PyObject *out = PyArray_EMPTY(2, dims, NPY_FLOAT64, 0);
+    if (out) {
+        double *p = PyArray_DATA((PyArrayObject *)out);
+        for (int v = 0; v < mesh.nvertices; v++, p += 3) {
+            p[0] = mesh.vertices[v].x;
+            p[1] = mesh.vertices[v].y;
+            p[2] = mesh.vertices[v].z;
+        }
+    }
+    rad_mesh_free(&mesh);
+    rad_scene_free(&sc);
+    return out;
 }
