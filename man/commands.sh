@@ -8,6 +8,9 @@ echo "[COMMANDS]"
 for c in solve render formfactor analytic sweep progress animate compare; do
   echo ".SS \"radiosity $c\""
   echo ".nf"
+  # the help is 80 columns wide: it starts at the margin to fit the page
+  echo ".in 1n"
   "$rad" $c --help | sed -e 's/\\/\\e/g' -e "s/^\\([.']\\)/\\\\\\&\\1/"
   echo ".fi"
+  echo ".in"
 done

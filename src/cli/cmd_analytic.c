@@ -19,15 +19,16 @@ typedef struct analytic_case {
 
 static const analytic_case cases[] = {
     {"point-disk", 2, "R H",
-     "differential area on the axis of a coaxial parallel disk of radius R\n"
-     "                        at distance H: F = R^2 / (H^2 + R^2)"},
+     "differential area on the axis of a coaxial parallel\n"
+     "                        disk of radius R at distance H:\n"
+     "                        F = R^2 / (H^2 + R^2)"},
     {"disk-disk", 3, "R1 R2 H",
-     "from a disk of radius R1 to a coaxial parallel disk of radius R2,\n"
-     "                        H apart"},
+     "from a disk of radius R1 to a coaxial parallel disk\n"
+     "                        of radius R2, H apart"},
     {"parallel-rectangles", 3, "A B C", "directly opposed A x B rectangles, C apart"},
     {"perpendicular-rectangles", 3, "L W H",
-     "from the L x W rectangle to the L x H rectangle that shares\n"
-     "                        its edge of length L at a right angle"},
+     "from the L x W rectangle to the L x H rectangle\n"
+     "                        that shares its edge of length L at a right angle"},
 };
 #define NCASES (int)(sizeof cases / sizeof cases[0])
 

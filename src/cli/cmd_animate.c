@@ -134,20 +134,27 @@ static void help(void)
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
-           "  radiosity animate --mesh 2x2 data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
-           "  radiosity animate --steps 50 --strategy 2 --reference data/cube-on-table.scene data/cube-on-table.changes\n"
-           "  radiosity animate --steps 3 --converge-last --log anim.log --errors anim-errors.tsv data/cube-on-table.scene data/cube-on-table.changes\n"
-           "  radiosity animate --resume anim.log --steps 3 --converge-last data/cube-on-table.scene data/cube-on-table.changes\n"
-           "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv --frames frame%%02d.png data/cornell-moving-box.scene data/cornell-moving-box.changes\n"
+           "  radiosity animate --mesh 2x2 data/cornell-moving-box.scene \\\n"
+           "      data/cornell-moving-box.changes\n"
+           "  radiosity animate --steps 50 --strategy 2 --reference \\\n"
+           "      data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --steps 3 --converge-last --log anim.log \\\n"
+           "      --errors anim-errors.tsv data/cube-on-table.scene \\\n"
+           "      data/cube-on-table.changes\n"
+           "  radiosity animate --resume anim.log --steps 3 --converge-last \\\n"
+           "      data/cube-on-table.scene data/cube-on-table.changes\n"
+           "  radiosity animate --mesh 2x2 --elements frame%%02d.tsv \\\n"
+           "      --frames frame%%02d.png data/cornell-moving-box.scene \\\n"
+           "      data/cornell-moving-box.changes\n"
            "\n"
            "Every path is checked before the work.  Each regular file is written to a\n"
-           "temporary beside it as its frame is done, and all are renamed together\n"
-           "at the end: a failed or interrupted run replaces none (but --log, which\n"
-           "is replaced after every frame, the state to resume from); a device or FIFO\n"
+           "temporary beside it as its frame is done, and all are renamed together at\n"
+           "the end: a failed or interrupted run replaces none (but --log, which is\n"
+           "replaced after every frame, the state to resume from); a device or FIFO\n"
            "given to --trace, --report, --errors or --log is written in place, but a\n"
            "frame pattern must make files (a frame path naming a device, FIFO or\n"
-           "descriptor is an error).  Exit status: 0 on success, 1 on an error, 2 on a\n"
-           "usage error; 128 + signal when interrupted.\n");
+           "descriptor is an error).  Exit status: 0 on success, 1 on an error, 2\n"
+           "on a usage error; 128 + signal when interrupted.\n");
 }
 
 /* ---- arguments --------------------------------------------------------- */

@@ -49,8 +49,10 @@ static void help(void)
            "Examples:\n"
            "  radiosity formfactor --mesh 3x3 data/grey-cube.scene -o F.tsv\n"
            "  radiosity formfactor --mesh 20x20 data/goral1984-cube.scene -o F.npy\n"
-           "  radiosity formfactor --per-surface --accuracy reference data/grey-cube.scene\n"
-           "  radiosity formfactor --per-surface --form-factors-method hemicube --resolution 256 data/grey-cube.scene\n"
+           "  radiosity formfactor --per-surface --accuracy reference \\\n"
+           "      data/grey-cube.scene\n"
+           "  radiosity formfactor --per-surface --form-factors-method hemicube \\\n"
+           "      --resolution 256 data/grey-cube.scene\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
 }

@@ -155,17 +155,22 @@ static void help(void)
            CLI_COMMON_HELP
            "\n"
            "Examples:\n"
-           "  radiosity progress --mesh 3x3 data/goral1984-cube.scene --plot race.png\n"
-           "  radiosity progress --patches --mesh 3x3 data/cornell-box.scene -o race.tsv\n"
+           "  radiosity progress --mesh 3x3 data/goral1984-cube.scene --plot \\\n"
+           "      race.png\n"
+           "  radiosity progress --patches --mesh 3x3 data/cornell-box.scene -o \\\n"
+           "      race.tsv\n"
            "  radiosity progress --mesh 3x3 --snapshots 24 data/cornell-box.scene\n"
-           "  radiosity progress --mesh 3x3 --snapshots-at 1,2,24,100 --snapshot-prefix fig data/cornell-box.scene\n"
-           "  radiosity progress --matrix none --mesh 5x5 --steps 100 data/goral1984-cube.scene\n"
-           "  radiosity progress --adaptive --mesh 4x4 --snapshots 20 --snapshot-elements data/blocker.scene\n"
+           "  radiosity progress --mesh 3x3 --snapshots-at 1,2,24,100 \\\n"
+           "      --snapshot-prefix fig data/cornell-box.scene\n"
+           "  radiosity progress --matrix none --mesh 5x5 --steps 100 \\\n"
+           "      data/goral1984-cube.scene\n"
+           "  radiosity progress --adaptive --mesh 4x4 --snapshots 20 \\\n"
+           "      --snapshot-elements data/blocker.scene\n"
            "\n"
-           "A regular file is written to a temporary beside it and renamed at the end:\n"
-           "a failed or interrupted run leaves the old file whole; a device or FIFO is\n"
-           "written in place.  Exit status: 0 on success, 1 on an error, 2 on a\n"
-           "usage error; 128 + signal when interrupted.\n",
+           "A regular file is written to a temporary beside it and renamed at the\n"
+           "end: a failed or interrupted run leaves the old file whole; a device or\n"
+           "FIFO is written in place.  Exit status: 0 on success, 1 on an error, 2\n"
+           "on a usage error; 128 + signal when interrupted.\n",
            DEFAULT_STEPS_CAP);
 }
 

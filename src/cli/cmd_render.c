@@ -78,7 +78,8 @@ static void help(void)
            "\n"
            "Examples:\n"
            "  radiosity render data/goral1984-cube.scene -o cube.png\n"
-           "  radiosity render --shading flat --edges --mesh 4x4 data/cornell-box.scene -o c.png\n"
+           "  radiosity render --shading flat --edges --mesh 4x4 \\\n"
+           "      data/cornell-box.scene -o c.png\n"
            "  radiosity render cube.ply --scanline 256 --plot row.png -o cube.png\n"
            "\n"
            "Exit status: 0 on success, 1 on an error, 2 on a usage error.\n");
