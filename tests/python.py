@@ -349,6 +349,42 @@ class Binding(unittest.TestCase):
         with self.assertRaises(TypeError):
             radiosity.Scene()
 
+    def test_limits(self):
+        """the program's limits hold: threads <= 4096, bounces <= 1e9 without a solver, no bools"""
+        with self.assertRaises(ValueError):
+            radiosity.form_factors(self.two, threads=5000)
+        with self.assertRaisesRegex(ValueError, "give solver or bounces"):
+            radiosity.solve(self.two, bounces=2, solver="progressive")
+        with self.assertRaises(ValueError):
+            radiosity.solve(self.two, bounces=2**31)
+        with self.assertRaises(ValueError):
+            radiosity.solve(self.two, bounces=True)
+        with self.assertRaises(TypeError):
+            radiosity.form_factors(self.two, mesh=(True, True))
+
+    def test_undecodable_name(self):
+        """a file name that is not UTF-8 is named in radiosity.Error, \\xNN for its bytes"""
+        bad = os.fsencode(self.work) + b"/\xff.scene"
+        with self.assertRaisesRegex(radiosity.Error, r"\\xff\.scene: "):
+            radiosity.load_scene(bad)
+
+    def test_cr_text(self):
+        """text with CR line ends (which scene files may have) is text, not a path"""
+        self.assertEqual(radiosity.load_scene(SQUARES.replace("\n", "\r")).surfaces, 2)
+
+    def test_absent(self):
+        """absent objects: left out and numbered out, as the program does; all absent refused"""
+        text = SQUARES.replace("quad w 0 0 0", "object lid absent\nquad w 0 0 0", 1)
+        text = text.replace("0 1 0\n", "0 1 0\nend\n", 1)
+        s = radiosity.load_scene(text)
+        self.assertEqual((s.surfaces, s.objects), (2, ["lid"]))
+        self.assertEqual(list(radiosity.elements(s)["surface"]), [0])
+        self.assertEqual(radiosity.form_factors(s).shape, (1, 1))
+        alone = radiosity.load_scene("material w reflect 0.5\nobject lid absent\n"
+                                     "quad w 0 0 0  1 0 0  1 1 0  0 1 0\nend\n")
+        with self.assertRaisesRegex(radiosity.Error, "every surface belongs to an absent"):
+            radiosity.solve(alone)
+
     # ---- progress, threads, signals ---------------------------------------------
     def test_progress(self):
         """progress(stage, done, total) is called, up to done == total; it may stop the fill"""

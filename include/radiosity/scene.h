@@ -125,7 +125,8 @@ RAD_API void rad_scene_free(rad_scene *scene);
 /* One line saying repair kind k (0 .. RAD_SCENE_REPAIR_KINDS - 1) of the
  * scene, as "FILE:LINE: repaired: 2 faces without area (...) left out"
  * (LINE: the first such face).  Returns 1 when the reader made repairs of
- * that kind (the line is in buf), else 0 (buf untouched). */
+ * that kind and buf has room (size > 0; the line is cut to fit), else 0
+ * (buf untouched). */
 RAD_API int rad_scene_repair_text(const rad_scene *scene, int k, char *buf, size_t size);
 /* Override the mesh of every quad (the --mesh option). */
 RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);

@@ -8,10 +8,27 @@ radi_py_state *radi_py_state_of(PyObject *module)
     return PyModule_GetState(module);
 }
 
+PyObject *radi_py_text(const char *s)
+{
+    return PyUnicode_DecodeUTF8(s, (Py_ssize_t)strlen(s), "backslashreplace");
+}
+
+int radi_py_warn(const char *message)
+{
+    PyObject *msg = radi_py_text(message);
+    if (!msg)
+        return -1;
+    const int r = PyErr_WarnEx(PyExc_RuntimeWarning, PyUnicode_AsUTF8(msg), 1);
+    Py_DECREF(msg);
+    return r;
+}
+
 PyObject *radi_py_raise(PyObject *module, const rad_error *err)
 {
     const radi_py_state *st = radi_py_state_of(module);
-    PyObject *exc = PyObject_CallFunction(st->error, "s", err->message);
+    PyObject *msg = radi_py_text(err->message);
+    PyObject *exc = msg ? PyObject_CallOneArg(st->error, msg) : NULL;
+    Py_XDECREF(msg);
     if (!exc)
         return NULL;
     PyObject *status = PyUnicode_FromString(rad_strstatus(err->status));

@@ -10,7 +10,7 @@
 
 PyDoc_STRVAR(load_scene_doc,
 "load_scene(path_or_text, *, format=None, strict=False) -> Scene\n\n"
-"Read a scene.  A str holding a newline is the scene's text in the native\n"
+"Read a scene.  A str holding a line end is the scene's text in the native\n"
 "format (radiosity-scene(5)); any other str, bytes or os.PathLike is a file:\n"
 "by its ending (.obj Wavefront OBJ, .vs3 View3D, else native) or by format=\n"
 "'scene', 'obj' or 'vs3'.  Repairs made to an OBJ file are each said by a\n"
@@ -36,13 +36,13 @@ PyDoc_STRVAR(form_factors_doc,
 "with radiosity.Error('interrupted').");
 
 PyDoc_STRVAR(solve_doc,
-"solve(scene, *, mesh=None, accuracy='default', solver='gauss', bounces=None,\n"
+"solve(scene, *, mesh=None, accuracy='default', solver=None, bounces=None,\n"
 "      quadrature=3, method='contour', resolution=64, threads=0,\n"
 "      strict=False, progress=None, vertices=False) -> numpy.ndarray\n\n"
 "Mesh, form factors and the radiosity system (Goral et al. 1984, eq. 5)\n"
 "band by band: B as an n x 3 float64 array, row i the radiosity of element\n"
-"i in red, green and blue.  solver is 'gauss', 'cholesky', 'jacobi',\n"
-"'gauss-seidel', 'cg' or 'progressive'; bounces=K gives exactly K\n"
+"i in red, green and blue.  solver is 'gauss' (None: LU), 'cholesky',\n"
+"'jacobi', 'gauss-seidel', 'cg' or 'progressive'; bounces=K gives exactly K\n"
 "reflections instead.  vertices=True returns (B, Bv), Bv the radiosity\n"
 "smoothed to each vertex of vertices(scene, mesh=...) (Goral et al. 1984,\n"
 "section 3).  Raises radiosity.Error on a singular system or an unmet\n"
@@ -51,7 +51,8 @@ PyDoc_STRVAR(solve_doc,
 PyDoc_STRVAR(elements_doc,
 "elements(scene, *, mesh=None) -> dict\n\n"
 "The elements a run with this mesh makes, in the order of the rows of F\n"
-"and B: 'surface' (index of the surface in file order, int), 'area',\n"
+"and B: 'surface' (int: the surface's index in file order, surfaces of\n"
+"absent objects left out, as the program's tables number them), 'area',\n"
 "'centroid' and 'normal' (n x 3), 'reflect' and 'emit' (n x 3, per band),\n"
 "'corners' (n x K int: vertex indices, counter-clockwise, padded with -1),\n"
 "'obstruction' (bool: left out of form_factors' rows; they come last).");

@@ -36,6 +36,11 @@ typedef struct radi_py_scene {
 
 /* pyerror.c */
 radi_py_state *radi_py_state_of(PyObject *module);
+/* A message of the library as a str: its bytes are UTF-8 but for file
+ * and material names, which may hold any (shown as \xNN). */
+PyObject *radi_py_text(const char *s);
+/* Say a message as a RuntimeWarning; -1 when a filter made it an error. */
+int radi_py_warn(const char *message);
 /* Raise radiosity.Error with the library's message ("FILE:LINE: reason");
  * returns NULL. */
 PyObject *radi_py_raise(PyObject *module, const rad_error *err);

@@ -26,6 +26,12 @@ int radi_py_numpy_init(void)
 
 /* ---- options ------------------------------------------------------------ */
 
+/* The program's limits (--threads, --bounces): more threads than this
+ * make OpenMP fail to start them, more bounces than this cannot be
+ * stopped in any useful time. */
+#define THREADS_MAX 4096
+#define BOUNCES_MAX 1000000000L
+
 typedef struct run_args {
     PyObject *scene, *mesh;
     PyObject *progress;         /* None, or called as progress(stage, done, total) */
@@ -84,8 +90,9 @@ static int ff_options(const run_args *a, rad_ff_options *ff)
         PyErr_SetString(PyExc_TypeError, "progress must be callable or None");
         return -1;
     }
-    if (a->threads < 0) {
-        PyErr_Format(PyExc_ValueError, "threads must be 0 (all) or more, not %d", a->threads);
+    if (a->threads < 0 || a->threads > THREADS_MAX) {
+        PyErr_Format(PyExc_ValueError, "threads must be 0 (all cores) to %d, not %d",
+                     THREADS_MAX, a->threads);
         return -1;
     }
     ff->accuracy = (rad_accuracy)acc;
@@ -106,7 +113,7 @@ static int warn(const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    return PyErr_WarnEx(PyExc_RuntimeWarning, msg, 1);
+    return radi_py_warn(msg);
 }
 
 /* What the fill found that a user must hear (the program's words); -1
@@ -270,16 +277,22 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
 {
     rad_pipeline_options po;
     rad_pipeline_options_init(&po);
-    const int s = radi_py_choice(rad_solver_name, "solver", solver);
+    if (solver && bounces != Py_None) {
+        PyErr_SetString(PyExc_ValueError, "bounces=K is its own solver (Jacobi from B = E, "
+                                          "exactly K reflections): give solver or bounces");
+        return NULL;
+    }
+    const int s = solver ? radi_py_choice(rad_solver_name, "solver", solver) : 0;
     if (s < 0 || ff_options(a, &po.ff) != 0)
         return NULL;
     po.solve.solver = (rad_solver)s;
     if (bounces != Py_None) {
-        const long k = PyLong_AsLong(bounces);
+        const long k = PyBool_Check(bounces) ? -2 : PyLong_AsLong(bounces);
         if (k == -1 && PyErr_Occurred())
             return NULL;
-        if (k < 0 || k > INT_MAX) {
-            PyErr_Format(PyExc_ValueError, "bounces must be 0 or more, not %ld", k);
+        if (k < 0 || k > BOUNCES_MAX) {
+            PyErr_Format(PyExc_ValueError, "bounces must be a whole number from 0 to %ld, "
+                                           "not %R", BOUNCES_MAX, bounces);
             return NULL;
         }
         po.solve.bounces = (int)k;
@@ -321,11 +334,11 @@ PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
                              "method", "resolution", "threads", "strict", "progress",
                              "vertices", NULL};
     run_args a;
-    const char *solver = "gauss";
+    const char *solver = NULL; /* gauss, unless bounces are asked for */
     PyObject *bounces = Py_None;
     int vertices = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OssOisiipOp:solve", kwlist, &a.scene,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOp:solve", kwlist, &a.scene,
                                      &a.mesh, &a.accuracy, &solver, &bounces, &a.quadrature,
                                      &a.method, &a.resolution, &a.threads, &a.strict,
                                      &a.progress, &vertices))

@@ -81,7 +81,7 @@ static PyObject *get_repairs(PyObject *self, void *closure)
     for (int k = 0; list && k < RAD_SCENE_REPAIR_KINDS; k++) {
         if (!rad_scene_repair_text(sc, k, line, sizeof line))
             continue;
-        PyObject *s = PyUnicode_DecodeUTF8(line, (Py_ssize_t)strlen(line), "surrogateescape");
+        PyObject *s = radi_py_text(line);
         if (!s || PyList_Append(list, s) != 0)
             Py_CLEAR(list);
         Py_XDECREF(s);
@@ -122,8 +122,7 @@ static int warn_repairs(const rad_scene *sc)
 {
     char line[RAD_ERRMSG_MAX];
     for (int k = 0; k < RAD_SCENE_REPAIR_KINDS; k++)
-        if (rad_scene_repair_text(sc, k, line, sizeof line) &&
-            PyErr_WarnEx(PyExc_RuntimeWarning, line, 1) != 0)
+        if (rad_scene_repair_text(sc, k, line, sizeof line) && radi_py_warn(line) != 0)
             return -1;
     return 0;
 }
@@ -148,13 +147,20 @@ static int format_of(PyObject *format)
     return -1;
 }
 
+/* A str holding a line end (LF or CR: radiosity-scene(5) reads both) is
+ * a scene's text; a path with a line end in it is given as a Path. */
+static int is_text(PyObject *s)
+{
+    const Py_ssize_t n = PyUnicode_GetLength(s);
+    return PyUnicode_FindChar(s, '\n', 0, n, 1) >= 0 || PyUnicode_FindChar(s, '\r', 0, n, 1) >= 0;
+}
+
 /* Text in the native format, or a file by name. */
 static rad_status read_scene(PyObject *source, int format, int strict, rad_scene *sc,
                              rad_error *err, int *failed)
 {
     *failed = 0;
-    if (PyUnicode_Check(source) && PyUnicode_FindChar(source, '\n', 0,
-                                                      PyUnicode_GetLength(source), 1) >= 0) {
+    if (PyUnicode_Check(source) && is_text(source)) {
         Py_ssize_t len;
         const char *text = PyUnicode_AsUTF8AndSize(source, &len);
         if (!text || (format != RAD_SCENE_FORMAT_AUTO && format != RAD_SCENE_FORMAT_SCENE)) {
@@ -223,6 +229,10 @@ static int mesh_of(PyObject *mesh, int *n, int *m)
     }
     long v[2];
     for (int k = 0; k < 2; k++) {
+        if (PyBool_Check(PyTuple_GET_ITEM(mesh, k))) {
+            PyErr_SetString(PyExc_TypeError, "mesh must be two whole numbers, not bools");
+            return -1;
+        }
         v[k] = PyLong_AsLong(PyTuple_GET_ITEM(mesh, k));
         if (v[k] == -1 && PyErr_Occurred())
             return -1;
@@ -251,6 +261,14 @@ int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene
     const rad_scene *in = &((radi_py_scene *)obj)->scene;
     rad_error err;
     if (rad_scene_present_copy(in, NULL, out, &err) != RAD_OK) {
+        radi_py_raise(module, &err);
+        return -1;
+    }
+    if (out->nsurfaces == 0) { /* nothing to mesh: refused as a run refuses it */
+        err.status = RAD_ERR_INVALID;
+        snprintf(err.message, sizeof err.message, "%s: %s", in->filename ? in->filename : "-",
+                 in->nsurfaces ? "every surface belongs to an absent object" : "no surfaces");
+        rad_scene_free(out);
         radi_py_raise(module, &err);
         return -1;
     }
