@@ -39,6 +39,8 @@ typedef struct rad_run_info {
     const char *matrix;         /* "dense", "none" (form factors per shot), or NULL */
     const char *method;         /* "contour", "hemicube", or NULL (not said) */
     int resolution;             /* the hemicube's R (method "hemicube") */
+    const rad_scene *repaired;  /* the scene read: what an OBJ reader
+                                   repaired (key "repairs"), or NULL */
 } rad_run_info;
 
 /* Per-element table: element surface gi gj cx cy cz nx ny nz area r g b. */

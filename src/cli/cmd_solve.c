@@ -245,6 +245,7 @@ static void run_info(const cli_run *r, rad_run_info *in)
     in->quadrature = contour ? r->s->common.ff.quadrature : 0;
     in->method = rad_ff_method_name(r->s->common.ff.method);
     in->resolution = r->s->common.ff.resolution;
+    in->repaired = &r->scene;
     in->nelements = res->mesh.nelements;
     in->memory_bytes = res->memory_bytes;
     in->memory_available = res->memory_available;

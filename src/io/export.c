@@ -361,6 +361,26 @@ static void jstr(FILE *out, const char *key, const char *s)
     fputs(",\n", out);
 }
 
+/* What reading the scene repaired: the counts of rad_scene_repairs and
+ * the lines the program printed for them (rad_scene_repair_text). */
+static void jrepairs(FILE *out, const rad_scene *scene)
+{
+    const rad_scene_repairs *p = &scene->repairs;
+    fprintf(out, "  \"repairs\": {\"undefined_materials\": %d, \"spaced_names\": %d, "
+                 "\"degenerate_faces\": %d, \"split_faces\": %d, \"split_triangles\": %d, "
+                 "\"said\": [",
+            p->undefined_materials, p->spaced_names, p->degenerate_faces, p->split_faces,
+            p->split_triangles);
+    char line[RAD_ERRMSG_MAX];
+    int n = 0;
+    for (int k = 0; k < RAD_SCENE_REPAIR_KINDS; k++)
+        if (rad_scene_repair_text(scene, k, line, sizeof line)) {
+            fputs(n++ ? ", " : "", out);
+            radi_json_string(out, line);
+        }
+    fputs("]},\n", out);
+}
+
 rad_status rad_export_report(FILE *out, const rad_run_info *in)
 {
     const rad_solve_report *s = in->solve;
@@ -387,6 +407,8 @@ rad_status rad_export_report(FILE *out, const rad_run_info *in)
         jstr(out, "form_factors_method", in->method);
     if (in->method && strcmp(in->method, "hemicube") == 0)
         fprintf(out, "  \"hemicube_resolution\": %d,\n", in->resolution);
+    if (in->repaired)
+        jrepairs(out, in->repaired);
     if (f) {
         jnum(out, "form_factor_min", f->min_value, 1);
         jnum(out, "form_factor_max", f->max_value, 1);

@@ -218,6 +218,24 @@ ok $? "--format ply: a usage error naming the three formats"
 [ $? -eq 1 ] && grep -q 'grey-cube.scene:[0-9]*: ' "$work/err"
 ok $? "--format vs3 on a native file: refused with FILE:LINE ($(head -c 120 "$work/err"))"
 
+# ---- what an OBJ reader repaired, in the report as on standard error ----
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl nowhere\nf 1 2 3 4\nf 1 2 5\n' > "$work/rep.obj"
+"$RADIOSITY" solve -q --report "$work/rep.json" -o "$work/rep.ply" "$work/rep.obj" 2> "$work/err"
+said=$(sed -n 's/^radiosity: //p' "$work/err" | grep ': repaired: ')
+if command -v python3 > /dev/null 2>&1; then
+  printf '%s\n' "$said" > "$work/said"
+  python3 -c 'import json, sys
+r = json.load(open(sys.argv[1]))["repairs"]
+said = open(sys.argv[2]).read().splitlines()
+want = {"undefined_materials": 1, "spaced_names": 0, "degenerate_faces": 1,
+        "split_faces": 0, "split_triangles": 0}
+sys.exit(not (all(r[k] == v for k, v in want.items()) and r["said"] == said and len(said) == 2))' \
+    "$work/rep.json" "$work/said"
+  ok $? "--report's repairs: 1 undefined material, 1 face without area, the 2 lines said on standard error"
+else
+  skip "python3 not found to read the report"
+fi
+
 # ---- OBJ files as exporters write them (Debian's assimp-testmodels) ----
 # Every file there that holds faces loads and solves, its repairs said on
 # standard error; --strict refuses each repaired one; those that hold no
