@@ -212,6 +212,23 @@ class Binding(unittest.TestCase):
         self.assertTrue(np.allclose(normals / np.linalg.norm(normals, axis=1)[:, None],
                                     el["normal"], atol=1e-15))
 
+    def test_triangles_meshed(self):
+        """mesh=(2, 2) cuts a triangle into 4 of equal area; max_element_size bounds every side"""
+        s = radiosity.load_scene("material w reflect 0.5\npolygon w 3  0 0 0  1 0 0  0 1 0\n")
+        el = radiosity.elements(s, mesh=(2, 2))
+        self.assertEqual(len(el["area"]), 4)
+        self.assertLessEqual(np.abs(el["area"] - 1 / 8).max(), 1e-16)
+        el = radiosity.elements(s, max_element_size=0.3)
+        v = radiosity.vertices(s, max_element_size=0.3)
+        c = el["corners"]
+        sides = np.linalg.norm(v[c] - v[np.roll(c, -1, axis=1)], axis=2)
+        self.assertEqual(len(c), 25)  # the hypotenuse sqrt(2) in 5 parts
+        self.assertLessEqual(sides.max(), 0.3)
+        with self.assertWarnsRegex(RuntimeWarning, "makes no surface .* finer"):
+            radiosity.elements(s, max_element_size=3)
+        with self.assertRaises(ValueError):
+            radiosity.elements(s, mesh=(2, 2), max_element_size=0.3)
+
     # ---- the solve -----------------------------------------------------------
     def test_furnace(self):
         """furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) of F's row sums"""

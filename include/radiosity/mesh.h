@@ -40,7 +40,10 @@ typedef struct rad_mesh {
     int *surface_first;         /* elements of surface s: [first[s], first[s+1]) */
     int *surface_vfirst;        /* vertices of surface s: [vfirst[s], vfirst[s+1]);
                                    a quad's are row-major: (gj) * (n+1) + gi */
-    int *surface_n, *surface_m; /* grid size per surface (1 x 1 for polygons) */
+    int *surface_n, *surface_m; /* grid size per surface: N x M for a quad,
+                                   1 x 1 for a polygon left whole, n x 0
+                                   for a polygon cut into triangles (n per
+                                   edge; no grid: radiosity-files(5)) */
 } rad_mesh;
 
 /* Refuses (RAD_ERR_INVALID, naming the scene's line) an element whose area

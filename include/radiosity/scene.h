@@ -37,7 +37,9 @@ typedef struct rad_surface {
     int material;               /* index into rad_scene.materials */
     int nverts;                 /* 4 for a quad, K >= 3 for a polygon */
     rad_vec3 *verts;            /* counter-clockwise about the front */
-    int mesh_n, mesh_m;         /* v1->v2 in N parts, v2->v3 in M parts */
+    int mesh_n, mesh_m;         /* quad: v1->v2 in N parts, v2->v3 in M parts;
+                                   polygon: each edge of its fan's triangles
+                                   in N parts (M = N; 1: one element) */
     int line;                   /* input line, for messages */
     int object;                 /* index into rad_scene.objects; -1: the static
                                    environment (outside every object) */
@@ -128,8 +130,17 @@ RAD_API void rad_scene_free(rad_scene *scene);
  * that kind and buf has room (size > 0; the line is cut to fit), else 0
  * (buf untouched). */
 RAD_API int rad_scene_repair_text(const rad_scene *scene, int k, char *buf, size_t size);
-/* Override the mesh of every quad (the --mesh option). */
+/* Override the mesh of every surface (the --mesh option): quads into
+ * n x m elements, triangles and other polygons into max(n, m)^2
+ * triangles per triangle of their fan (a K-gon, K > 3, is first cut into
+ * K triangles around its centroid). */
 RAD_API void rad_scene_set_mesh(rad_scene *scene, int n, int m);
+/* Mesh every surface so that no side of an element is longer than size
+ * (> 0; the --max-element-size option): quads by the longer of each pair
+ * of opposite sides, polygons by the longest edge of their fan's
+ * triangles; a finer mesh the scene gives a surface stays.  Returns how
+ * many surfaces it made finer (0: every element is already that small). */
+RAD_API int rad_scene_set_max_element_size(rad_scene *scene, double size);
 /* 1 if some surface belongs to an absent object. */
 RAD_API int rad_scene_has_absent(const rad_scene *scene);
 /* A copy of the scene with only the present surfaces, in file order:

@@ -42,10 +42,11 @@ static void surface_counts(const rad_mesh *m, int s, int D, int quad, double *ne
                            double *ni)
 {
     const int e0 = m->surface_first[s];
-    if (!quad) {
-        *ne += 1;
-        *nv += m->elements[e0].nverts;
-        *ni += m->elements[e0].nverts;
+    if (!quad) { /* a polygon, alone or cut into triangles: kept as it is */
+        for (int e = e0; e < m->surface_first[s + 1]; e++)
+            *ni += m->elements[e].nverts;
+        *ne += m->surface_first[s + 1] - e0;
+        *nv += m->surface_vfirst[s + 1] - m->surface_vfirst[s];
         return;
     }
     const double N = m->surface_n[s], M = m->surface_m[s], k = (double)(1LL << D);
@@ -81,22 +82,30 @@ static rad_status allocate(rad_adapt_nodes *a, const rad_mesh *m, size_t ne, siz
 }
 
 /* A polygon surface: its one element and vertices, as in m. */
+/* A polygon's elements (one, or the triangles it was cut into), each a
+ * level-0 patch of its own, with the surface's vertices as they are. */
 static void copy_polygon(rad_adapt_nodes *a, const rad_mesh *m, int s, int *ne, int *nv, int *ni)
 {
-    const int e0 = m->surface_first[s];
-    rad_element el = m->elements[e0];
-    for (int k = 0; k < el.nverts; k++) {
-        a->mesh.vertices[*nv + k] = rad_mesh_vertex(m, e0, k);
-        a->mesh.vindex[*ni + k] = *nv + k;
+    const int v0 = m->surface_vfirst[s], nverts = m->surface_vfirst[s + 1] - v0;
+    for (int v = 0; v < nverts; v++)
+        a->mesh.vertices[*nv + v] = m->vertices[v0 + v];
+    for (int e0 = m->surface_first[s]; e0 < m->surface_first[s + 1]; e0++) {
+        rad_element el = m->elements[e0];
+        for (int k = 0; k < el.nverts; k++)
+            a->mesh.vindex[*ni + k] = *nv + m->vindex[el.first + k] - v0;
+        el.first = *ni;
+        a->mesh.elements[*ne] = el;
+        a->root[e0] = *ne;
+        a->patch[*ne] = e0;
+        a->level[*ne] = 0;
+        *ni += el.nverts;
+        *ne += 1;
     }
-    el.first = *ni;
-    a->mesh.elements[*ne] = el;
-    a->root[e0] = *ne;
-    a->patch[*ne] = e0;
-    a->level[*ne] = 0;
-    *nv += el.nverts;
-    *ni += el.nverts;
-    *ne += 1;
+    if (radi_mesh_is_fan(m, s)) { /* smoothing and outlines know it so */
+        a->mesh.surface_n[s] = m->surface_n[s];
+        a->mesh.surface_m[s] = 0;
+    }
+    *nv += nverts;
 }
 
 /* Node (l, i, j) of quad surface s: corners, area, centroid, material. */

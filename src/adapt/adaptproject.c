@@ -49,8 +49,11 @@ static int node_of(const rad_adapt_nodes *a, const rad_mesh *mesh, const int *le
     const int s = el->surface, l = level[e];
     if (s < 0 || s >= a->mesh.nsurfaces || l < 0 || l > a->depth || el->gi < 0 || el->gj < 0)
         return -1;
-    if (!a->splits[s])
-        return l == 0 ? a->mesh.surface_first[s] : -1;
+    if (!a->splits[s]) /* a polygon's elements, in the same order */
+        return l == 0 && e - mesh->surface_first[s] <
+                             a->mesh.surface_first[s + 1] - a->mesh.surface_first[s]
+                   ? a->mesh.surface_first[s] + (e - mesh->surface_first[s])
+                   : -1;
     if (el->gi >= a->cn[s] << l || el->gj >= a->cm[s] << l)
         return -1;
     const int sh = a->depth - l;

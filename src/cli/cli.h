@@ -25,6 +25,7 @@
 /* Options every numerical subcommand accepts. */
 typedef struct cli_common {
     int mesh_n, mesh_m;         /* 0: keep the scene's */
+    double max_size;            /* --max-element-size, or 0 */
     rad_ff_options ff;
     int quiet;
     int strict;                 /* --strict: an unmet accuracy promise is an error */
@@ -45,11 +46,13 @@ enum {
     OPT_RESOLUTION,
     OPT_HELP,
     OPT_FORMAT,
+    OPT_MAX_SIZE,
     OPT_COMMON_END
 };
 
 #define CLI_COMMON_LONGOPTS                                       \
     {"mesh", required_argument, NULL, OPT_MESH},                  \
+    {"max-element-size", required_argument, NULL, OPT_MAX_SIZE},  \
     {"quadrature", required_argument, NULL, OPT_QUADRATURE},      \
     {"accuracy", required_argument, NULL, OPT_ACCURACY},          \
     {"threads", required_argument, NULL, OPT_THREADS},            \
@@ -59,7 +62,12 @@ enum {
     {"help", no_argument, NULL, OPT_HELP}
 
 #define CLI_COMMON_HELP                                                          \
-    "      --mesh NxM          mesh every quad into N x M elements\n"            \
+    "      --mesh NxM          mesh every quad into N x M elements, and every\n"\
+    "                          triangle into max(N,M)^2 (a polygon: each of the\n"\
+    "                          triangles around its centroid)\n"             \
+    "      --max-element-size L\n"                                           \
+    "                          mesh every surface so that no element side is\n"\
+    "                          longer than L (the scene's units)\n"          \
     "      --quadrature K      Gauss points per edge (1-20; 3 is the paper's\n"  \
     "                          nine-point rule)\n"                               \
     "      --accuracy MODE     classic (the 1984 rule alone), default (that\n"   \

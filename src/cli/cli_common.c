@@ -203,8 +203,23 @@ int cli_common_option(cli_common *c, int opt, const char *arg)
         }
         return 0;
     case OPT_MESH:
+        if (c->max_size > 0) {
+            cli_error("give --mesh or --max-element-size, not both");
+            return 2;
+        }
         if (cli_parse_mesh(arg, &c->mesh_n, &c->mesh_m)) {
             cli_error("--mesh takes NxM with whole numbers from 1 to 100000, not '%s'", arg);
+            return 2;
+        }
+        return 0;
+    case OPT_MAX_SIZE:
+        if (c->mesh_n > 0) {
+            cli_error("give --mesh or --max-element-size, not both");
+            return 2;
+        }
+        if (cli_parse_double(arg, &c->max_size) || !(c->max_size > 0) ||
+            !isfinite(c->max_size)) {
+            cli_error("--max-element-size takes a positive length, not '%s'", arg);
             return 2;
         }
         return 0;
@@ -339,17 +354,13 @@ int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene)
         return 1;
     }
     say_repairs(scene);
-    if (c->mesh_n > 0) {
+    if (c->mesh_n > 0)
         rad_scene_set_mesh(scene, c->mesh_n, c->mesh_m);
-        /* --mesh cuts quadrilaterals only: say so when it cuts nothing */
-        int quads = 0;
-        for (int k = 0; k < scene->nsurfaces; k++)
-            quads += scene->surfaces[k].kind == RAD_SURFACE_QUAD;
-        if (quads == 0 && scene->nsurfaces > 0)
-            cli_error("warning: --mesh %dx%d applies to quadrilaterals, and %s has none: its %d "
-                      "triangles and polygons stay one element each",
-                      c->mesh_n, c->mesh_m, path, scene->nsurfaces);
-    }
+    /* an option that changes nothing is said, not ignored */
+    if (c->max_size > 0 && rad_scene_set_max_element_size(scene, c->max_size) == 0 &&
+        scene->nsurfaces > 0)
+        cli_error("warning: --max-element-size %g makes no surface of %s finer: every "
+                  "element is already that small", c->max_size, path);
     return 0;
 }
 

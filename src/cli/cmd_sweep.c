@@ -95,7 +95,8 @@ static void help(void)
            "of up to 9 runs, repeated while they took less than 0.1 s in all.\n"
            "\n"
            "Options:\n"
-           "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10)\n"
+           "      --meshes LIST       N for N x N meshes (default 1,2,3,5,7,10); a\n"
+           "                          polygon of K > 3 corners becomes K N^2 triangles\n"
            "      --accuracies LIST   classic,default,reference (default: all)\n"
            "      --solvers LIST      gauss,cholesky,jacobi,gauss-seidel,cg,progressive\n"
            "                          (default gauss)\n"
@@ -233,8 +234,8 @@ static int parse_args(sweep_args *a, int argc, char **argv)
                 return 2;
         }
     }
-    if (a->common.mesh_n) {
-        cli_error("sweep takes --meshes, not --mesh");
+    if (a->common.mesh_n || a->common.max_size > 0) {
+        cli_error("sweep takes --meshes, not --mesh or --max-element-size");
         return 2;
     }
     if (a->plot && (a->nacc + a->nres) * a->nsolvers > MAX_SERIES) {

@@ -96,6 +96,8 @@ double radi_ff_element_doubt(const rad_mesh *m, int e)
     const int s = el->surface, v0 = m->surface_vfirst[s];
     const int n = m->surface_n[s], mm = m->surface_m[s];
     rad_vec3 c[4];
+    if (radi_mesh_is_fan(m, s)) /* a polygon cut into triangles: its corners first */
+        return radi_ff_normal_doubt(m->vertices + v0, radi_mesh_outline(m, s, NULL));
     if (n == 1 && mm == 1 && el->nverts != 4) /* a polygon, its vertices in order */
         return radi_ff_normal_doubt(m->vertices + v0, m->surface_vfirst[s + 1] - v0);
     if (n == 1 && mm == 1) { /* the element is its surface */

@@ -4,5 +4,7 @@
 
 src_libradcore_la_SOURCES += \
 	%reldir%/mesh.c %reldir%/mesh.h \
+	%reldir%/meshgeom.c \
+	%reldir%/meshtri.c \
 	%reldir%/patchgrid.c %reldir%/patchgrid.h \
 	%reldir%/smooth.c

@@ -12,7 +12,8 @@
  * crease).  Vertex (gi, gj) of surface s is vertices[vfirst[s] + gj*(N+1) + gi];
  * element (gi, gj) is elements[first[s] + gj*N + gi] with corners
  * (gi,gj) (gi+1,gj) (gi+1,gj+1) (gi,gj+1), counter-clockwise like the quad.
- * A polygon (or disk) is one element whose vertices are its own.
+ * A polygon (or disk) is one element whose vertices are its own, or, with
+ * a mesh of n > 1, n^2 triangles per triangle of its fan (meshtri.c).
  *
  * Every element carries its surface's unit normal (the normalised Newell
  * vector of the whole surface), so elements of one plane share one normal
@@ -60,60 +61,6 @@
 #define RAD_AREA_MIN DBL_MIN /* 2.2e-308: smaller areas lose digits */
 #define RAD_AREA_MAX DBL_MAX /* 1.8e308 */
 
-/* 2^e with 2^(e-1) <= the largest |coordinate| of p[k] - p[0] < 2^e, or 0
- * when every vertex is p[0]: scaling by 2^-e is exact and brings the
- * polygon to size about 1 whatever its size in the user's units. */
-static int local_exponent(const rad_vec3 *p, int n)
-{
-    double m = 0;
-    int e = 0;
-    for (int k = 1; k < n; k++) {
-        double a = v3_maxabs(v3_sub(p[k], p[0]));
-        m = a > m ? a : m;
-    }
-    if (m > 0 && isfinite(m))
-        frexp(m, &e);
-    return e;
-}
-
-/* (p - o) 2^-e, exactly unless the result is subnormal */
-static rad_vec3 shrink(rad_vec3 p, rad_vec3 o, int e)
-{
-    rad_vec3 d = v3_sub(p, o);
-    return v3(ldexp(d.x, -e), ldexp(d.y, -e), ldexp(d.z, -e));
-}
-
-/* Unit normal of a planar polygon: Newell's vector of the polygon scaled
- * to size about 1 (so it neither overflows nor underflows), normalised. */
-static rad_vec3 unit_normal(const rad_vec3 *p, int n)
-{
-    const int e = local_exponent(p, n);
-    rad_vec3 s = v3(0, 0, 0);
-    for (int k = 1; k + 1 < n; k++)
-        s = v3_add(s, v3_cross(shrink(p[k], p[0], e), shrink(p[k + 1], p[0], e)));
-    return v3_scale(s, 1.0 / v3_norm(s));
-}
-
-/* Area and centroid of a planar polygon: fan of triangles from p[0], on
- * the polygon scaled by 2^-e; the area is scaled back by 2^2e (inf or
- * subnormal when it is out of the double range: the caller refuses it). */
-static void polygon_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
-                                  rad_vec3 *centroid)
-{
-    const int e = local_exponent(p, n);
-    double a = 0;
-    rad_vec3 c = v3(0, 0, 0);
-    for (int k = 1; k + 1 < n; k++) {
-        rad_vec3 e1 = shrink(p[k], p[0], e), e2 = shrink(p[k + 1], p[0], e);
-        double t = 0.5 * v3_dot(v3_cross(e1, e2), nrm);
-        a += t;
-        c = v3_add(c, v3_scale(v3_add(e1, e2), t / 3.0));
-    }
-    *area = ldexp(a, 2 * e);
-    c = v3_scale(c, 1.0 / a); /* the centroid relative to p[0], scaled by 2^-e */
-    *centroid = a > 0 ? v3_add(p[0], v3(ldexp(c.x, e), ldexp(c.y, e), ldexp(c.z, e))) : p[0];
-}
-
 /* (1 - t) a + t b: exactly a at t = 0 and b at t = 1 (a + t (b - a)
  * rounds b - a, so the far end moves by an ulp of the larger coordinate:
  * 2e-14 of the height of an element whose corner sits just above another
@@ -135,11 +82,6 @@ rad_vec3 radi_mesh_bilinear(const rad_vec3 q[4], double u, double v)
     return bilinear(q, u, v);
 }
 
-void radi_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
-                            rad_vec3 *centroid)
-{
-    polygon_area_centroid(p, n, nrm, area, centroid);
-}
 
 rad_status radi_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
                           size_t *nindex)
@@ -152,6 +94,14 @@ rad_status radi_mesh_count(const rad_scene *scene, size_t *nelem, size_t *nvert,
             ne += n * m;
             nv += (n + 1) * (m + 1);
             ni += 4 * n * m;
+        } else if (f->mesh_n > 1) {
+            size_t fe, fv;
+            if (n > RADI_MESH_COUNT_MAX / n) /* n^2 alone overflows the count */
+                return RAD_ERR_TOOBIG;
+            radi_mesh_fan_count(f->nverts, f->mesh_n, &fe, &fv);
+            ne += fe;
+            nv += fv;
+            ni += 3 * fe;
         } else {
             ne += 1;
             nv += (size_t)f->nverts;
@@ -171,7 +121,7 @@ static void mesh_quad(rad_mesh *m, const rad_scene *scene, int s, int *ne, int *
     const rad_surface *f = &scene->surfaces[s];
     const rad_material *mat = &scene->materials[f->material];
     const int N = f->mesh_n, M = f->mesh_m, v0 = *nv;
-    const rad_vec3 nrm = unit_normal(f->verts, 4);
+    const rad_vec3 nrm = radi_mesh_unit_normal(f->verts, 4);
     for (int gj = 0; gj <= M; gj++)
         for (int gi = 0; gi <= N; gi++)
             m->vertices[(*nv)++] = bilinear(f->verts, (double)gi / N, (double)gj / M);
@@ -192,7 +142,7 @@ static void mesh_quad(rad_mesh *m, const rad_scene *scene, int s, int *ne, int *
             e->nverts = 4;
             e->first = *ni;
             e->normal = nrm;
-            polygon_area_centroid(p, 4, nrm, &e->area, &e->centroid);
+            radi_mesh_area_centroid(p, 4, nrm, &e->area, &e->centroid);
             memcpy(e->reflect, mat->reflect, sizeof e->reflect);
             memcpy(e->emit, mat->emit, sizeof e->emit);
             *ni += 4;
@@ -205,7 +155,7 @@ static void mesh_polygon(rad_mesh *m, const rad_scene *scene, int s, int *ne, in
     const rad_surface *f = &scene->surfaces[s];
     const rad_material *mat = &scene->materials[f->material];
     rad_element *e = &m->elements[(*ne)++];
-    const rad_vec3 nrm = unit_normal(f->verts, f->nverts);
+    const rad_vec3 nrm = radi_mesh_unit_normal(f->verts, f->nverts);
     e->surface = s;
     e->gi = e->gj = 0;
     e->nverts = f->nverts;
@@ -215,7 +165,7 @@ static void mesh_polygon(rad_mesh *m, const rad_scene *scene, int s, int *ne, in
         m->vindex[(*ni)++] = *nv;
         m->vertices[(*nv)++] = f->verts[k];
     }
-    polygon_area_centroid(f->verts, f->nverts, nrm, &e->area, &e->centroid);
+    radi_mesh_area_centroid(f->verts, f->nverts, nrm, &e->area, &e->centroid);
     memcpy(e->reflect, mat->reflect, sizeof e->reflect);
     memcpy(e->emit, mat->emit, sizeof e->emit);
 }
@@ -272,6 +222,10 @@ rad_status rad_mesh_build(rad_mesh *m, const rad_scene *scene, rad_error *err)
             m->surface_n[s] = f->mesh_n;
             m->surface_m[s] = f->mesh_m;
             mesh_quad(m, scene, s, &e, &v, &k);
+        } else if (f->mesh_n > 1) {
+            m->surface_n[s] = f->mesh_n;
+            m->surface_m[s] = 0; /* not a grid */
+            radi_mesh_fan(m, scene, s, radi_mesh_unit_normal(f->verts, f->nverts), &e, &v, &k);
         } else {
             m->surface_n[s] = m->surface_m[s] = 1;
             mesh_polygon(m, scene, s, &e, &v, &k);
@@ -335,12 +289,12 @@ int radi_frame_fit(rad_frame *fr, rad_vec3 lo, rad_vec3 hi)
 
 rad_vec3 radi_frame_apply(const rad_frame *fr, rad_vec3 p)
 {
-    return shrink(p, fr->shift, fr->exponent);
+    return radi_mesh_shrink(p, fr->shift, fr->exponent);
 }
 
 rad_vec3 radi_frame_offset(const rad_frame *fr)
 {
-    return shrink(fr->shift, v3(0, 0, 0), fr->exponent);
+    return radi_mesh_shrink(fr->shift, v3(0, 0, 0), fr->exponent);
 }
 
 /* Is surface s's grid the bilinear subdivision of its four corners, as
@@ -446,7 +400,7 @@ rad_status radi_mesh_normalized(const rad_mesh *m, rad_mesh *out, rad_frame *fra
         }
         for (int k = 0; k < el->nverts; k++)
             pp[k] = rad_mesh_vertex(out, e, k);
-        polygon_area_centroid(pp, el->nverts, el->normal, &el->area, &el->centroid);
+        radi_mesh_area_centroid(pp, el->nverts, el->normal, &el->area, &el->centroid);
         if (pp != p)
             free(pp);
     }
@@ -460,7 +414,44 @@ double rad_scene_element_count(const rad_scene *scene)
     double n = 0;
     for (int s = 0; s < scene->nsurfaces; s++) {
         const rad_surface *f = &scene->surfaces[s];
-        n += f->kind == RAD_SURFACE_QUAD ? (double)f->mesh_n * (double)f->mesh_m : 1.0;
+        const double fan = f->nverts == 3 ? 1 : f->nverts; /* meshtri.c */
+        n += f->kind == RAD_SURFACE_QUAD ? (double)f->mesh_n * (double)f->mesh_m
+             : f->mesh_n > 1           ? fan * f->mesh_n * f->mesh_n
+                                       : 1.0;
     }
     return n;
+}
+
+int radi_mesh_is_fan(const rad_mesh *m, int s)
+{
+    return m->surface_m[s] == 0 && m->surface_first[s + 1] - m->surface_first[s] > 1;
+}
+
+int radi_mesh_outline(const rad_mesh *m, int s, rad_vec3 *out)
+{
+    const int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
+    const int v0 = m->surface_vfirst[s];
+    if (ne == 0)
+        return 0;
+    if (ne == 1) { /* the element is its surface */
+        const int n = m->elements[e0].nverts;
+        for (int k = 0; out && k < n; k++)
+            out[k] = rad_mesh_vertex(m, e0, k);
+        return n;
+    }
+    if (radi_mesh_is_fan(m, s)) { /* its corners come first */
+        const int fan = ne / (m->surface_n[s] * m->surface_n[s]);
+        const int K = fan == 1 ? 3 : fan;
+        for (int k = 0; out && k < K; k++)
+            out[k] = m->vertices[v0 + k];
+        return K;
+    }
+    const int N = m->surface_n[s], M = m->surface_m[s];
+    if (out) {
+        out[0] = m->vertices[v0];
+        out[1] = m->vertices[v0 + N];
+        out[2] = m->vertices[v0 + M * (N + 1) + N];
+        out[3] = m->vertices[v0 + M * (N + 1)];
+    }
+    return 4;
 }

@@ -57,6 +57,25 @@ rad_status radi_mesh_normalized(const rad_mesh *mesh, rad_mesh *out, rad_frame *
  * for bit (adaptnodes.c). */
 rad_vec3 radi_mesh_bilinear(const rad_vec3 q[4], double u, double v);
 
+/* Surface s is a polygon cut into triangles (meshtri.c), not a grid of
+ * quadrilaterals nor a lone element. */
+int radi_mesh_is_fan(const rad_mesh *m, int s);
+/* The outline of surface s, counter-clockwise: a grid's four corners, a
+ * lone element's vertices, or the corners of a polygon cut into triangles;
+ * returns their count (out may be NULL to ask it). */
+int radi_mesh_outline(const rad_mesh *m, int s, rad_vec3 *out);
+
+/* meshtri.c: a K-gon cut into triangles with n > 1 parts per edge (its
+ * surface_n is n, its surface_m 0) */
+void radi_mesh_fan_count(int K, int n, size_t *ne, size_t *nv);
+void radi_mesh_fan(rad_mesh *m, const rad_scene *scene, int s, rad_vec3 nrm, int *ne, int *nv,
+                   int *ni);
+
+/* meshgeom.c: (p - o) 2^-e, exactly unless the result is subnormal; the
+ * unit normal of a planar polygon (Newell's vector at size about 1) */
+rad_vec3 radi_mesh_shrink(rad_vec3 p, rad_vec3 o, int e);
+rad_vec3 radi_mesh_unit_normal(const rad_vec3 *p, int n);
+
 /* Area and centroid of the planar polygon p (n vertices, unit normal nrm)
  * as rad_mesh_build computes an element's. */
 void radi_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh/mesh.h"
 #include "mesh/patchgrid.h"
 #include "util/util.h"
 
@@ -30,8 +31,9 @@ void radi_patch_grid_free(rad_patch_grid *g)
 static void surface_grid(const rad_mesh *m, int s, int P, int Q, int *p, int *q)
 {
     const int ne = m->surface_first[s + 1] - m->surface_first[s];
-    *p = ne == 1 ? 1 : P < m->surface_n[s] ? P : m->surface_n[s];
-    *q = ne == 1 ? 1 : Q < m->surface_m[s] ? Q : m->surface_m[s];
+    const int one = ne == 1 || radi_mesh_is_fan(m, s); /* a polygon: one patch */
+    *p = one ? 1 : P < m->surface_n[s] ? P : m->surface_n[s];
+    *q = one ? 1 : Q < m->surface_m[s] ? Q : m->surface_m[s];
 }
 
 /* The patch column (row) of grid index g among N cells cut into P parts:
@@ -46,14 +48,11 @@ static int cell_of(int g, int N, int P)
     return k;
 }
 
-/* Patch outlines: four grid vertices, or the polygon element's own. */
+/* Patch outlines: four grid vertices, or the polygon's own outline. */
 static void corners(rad_patch_grid *g, const rad_mesh *m, int s, int p0, int P, int Q)
 {
-    const int e0 = m->surface_first[s];
-    if (m->surface_first[s + 1] - e0 == 1) {
-        const rad_element *el = &m->elements[e0];
-        for (int k = 0; k < el->nverts; k++)
-            g->corner[g->cfirst[p0] + k] = rad_mesh_vertex(m, e0, k);
+    if (m->surface_first[s + 1] - m->surface_first[s] == 1 || radi_mesh_is_fan(m, s)) {
+        radi_mesh_outline(m, s, g->corner + g->cfirst[p0]);
         return;
     }
     const int N = m->surface_n[s], M = m->surface_m[s], v0 = m->surface_vfirst[s];
@@ -79,7 +78,9 @@ static int count_patches(const rad_mesh *m, int P, int Q, int *ncorners)
         const int e0 = m->surface_first[s];
         const int ne = m->surface_first[s + 1] - e0;
         np += ne > 0 ? p * q : 0;
-        *ncorners += ne == 1 ? m->elements[e0].nverts : ne > 1 ? 4 * p * q : 0;
+        *ncorners += ne == 1 || radi_mesh_is_fan(m, s) ? radi_mesh_outline(m, s, NULL)
+                     : ne > 1                                ? 4 * p * q
+                                                             : 0;
     }
     return np;
 }
@@ -113,14 +114,15 @@ rad_status radi_patch_grid_build(rad_patch_grid *g, const rad_mesh *m, int P, in
         const int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
         if (ne < 1)
             continue;
+        const int one = ne == 1 || radi_mesh_is_fan(m, s);
         for (int k = 0; k < p * q; k++) {
             g->surface[p0 + k] = s;
             g->cfirst[p0 + k] = c0;
-            c0 += ne == 1 ? m->elements[e0].nverts : 4;
+            c0 += one ? radi_mesh_outline(m, s, NULL) : 4;
         }
         for (int e = e0; e < e0 + ne; e++) {
             const rad_element *el = &m->elements[e];
-            const int k = ne == 1 ? 0
+            const int k = one ? 0
                                   : cell_of(el->gj, m->surface_m[s], q) * p +
                                         cell_of(el->gi, m->surface_n[s], p);
             g->patch_of[e] = p0 + k;

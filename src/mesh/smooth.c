@@ -17,7 +17,11 @@
  * rule (mean of 1 and 2; 1.5 B_c - 0.5 B_next) or the element's own value.
  * Results are clamped at 0, and never mix surfaces: walls of different
  * colours meet at a crease.  A polygon (one element) gives every vertex its
- * element's value.
+ * element's value.  A polygon cut into triangles (meshtri.c) gives each
+ * vertex the area-weighted mean of the triangles around it: on the
+ * uniform lattice of a triangle an inner vertex is the centre of its six
+ * triangles' centroids, so the mean reproduces a linear field there; on
+ * the outline it is the mean of the elements inside (no extrapolation).
  *
  * The corner rule (RAD_VERTEX_CORNER) is the one of the SIGGRAPH course
  * notes on radiosity (Cohen & Wallace, Radiosity and Realistic Image
@@ -36,8 +40,10 @@
 #include <config.h>
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "radiosity/base.h"
+#include "mesh/mesh.h"
 #include "radiosity/mesh.h"
 
 /* B of element (gi, gj) of surface s, band b (indices clamped to the grid). */
@@ -115,12 +121,51 @@ void rad_smooth_vertices(const rad_mesh *m, const double *B, double *Bv)
     rad_smooth_vertices_rule(m, B, Bv, RAD_VERTEX_EXTRAPOLATE);
 }
 
+/* Surface s, a polygon cut into triangles: each vertex the area-weighted
+ * mean of the elements that have it (w: one weight per vertex of s, or
+ * NULL when there was no memory for it: the last element's value). */
+static void smooth_fan(const rad_mesh *m, const double *B, double *Bv, int s, double *w)
+{
+    const int v0 = m->surface_vfirst[s], nv = m->surface_vfirst[s + 1] - v0;
+    for (int v = 0; v < nv; v++) {
+        if (w)
+            w[v] = 0;
+        for (int b = 0; b < RAD_BANDS; b++)
+            Bv[(size_t)(v0 + v) + (size_t)b * m->nvertices] = 0;
+    }
+    for (int e = m->surface_first[s]; e < m->surface_first[s + 1]; e++) {
+        const rad_element *el = &m->elements[e];
+        for (int k = 0; k < el->nverts; k++) {
+            const int v = m->vindex[el->first + k];
+            const double a = w ? el->area : 1;
+            if (w)
+                w[v - v0] += a;
+            for (int b = 0; b < RAD_BANDS; b++) {
+                double *out = &Bv[(size_t)v + (size_t)b * m->nvertices];
+                const double x = B[(size_t)e + (size_t)b * m->nelements];
+                *out = w ? *out + a * x : x;
+            }
+        }
+    }
+    for (int v = 0; w && v < nv; v++)
+        for (int b = 0; b < RAD_BANDS; b++)
+            if (w[v] > 0)
+                Bv[(size_t)(v0 + v) + (size_t)b * m->nvertices] /= w[v];
+}
+
 void rad_smooth_vertices_rule(const rad_mesh *m, const double *B, double *Bv,
                               rad_vertex_rule rule)
 {
+    double *w = NULL;
     for (int s = 0; s < m->nsurfaces; s++) {
         const int first = m->surface_first[s], vfirst = m->surface_vfirst[s];
         const rad_element *e0 = &m->elements[first];
+        if (radi_mesh_is_fan(m, s)) {
+            free(w);
+            w = malloc(sizeof *w * (size_t)(m->surface_vfirst[s + 1] - vfirst));
+            smooth_fan(m, B, Bv, s, w);
+            continue;
+        }
         if (m->surface_first[s + 1] - first == 1 && e0->nverts != 4) { /* polygon */
             for (int k = 0; k < e0->nverts; k++)
                 for (int b = 0; b < RAD_BANDS; b++)
@@ -137,4 +182,5 @@ void rad_smooth_vertices_rule(const rad_mesh *m, const double *B, double *Bv,
                         v > 0 ? v : 0.0;
                 }
     }
+    free(w);
 }

@@ -52,6 +52,7 @@
 #include "occ/occspace.h"
 #include "util/util.h"
 #include "radiosity/base.h"
+#include "mesh/mesh.h"
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
 
@@ -149,24 +150,6 @@ int occ_clip_pair(occ_space *sp, const rad_vec3 *p, int np, rad_vec3 pn, const r
     return b < 0 ? -1 : b > 0;
 }
 
-/* The outline of surface s: a quad's grid corners, or its one element. */
-static int surface_outline(const rad_mesh *m, int s, rad_vec3 *out)
-{
-    int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
-    if (ne == 1) {
-        int n = m->elements[e0].nverts;
-        for (int k = 0; k < n; k++)
-            out[k] = rad_mesh_vertex(m, e0, k);
-        return n;
-    }
-    const int N = m->surface_n[s], M = m->surface_m[s], v0 = m->surface_vfirst[s];
-    out[0] = m->vertices[v0];
-    out[1] = m->vertices[v0 + N];
-    out[2] = m->vertices[v0 + M * (N + 1) + N];
-    out[3] = m->vertices[v0 + M * (N + 1)];
-    return 4;
-}
-
 int radi_occ_candidate(const rad_occ *o, int a, int b, const unsigned char *mask)
 {
     if (!o || a == b)
@@ -197,8 +180,7 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
     const int ns = m->nsurfaces;
     int total = 0;
     for (int s = 0; s < ns; s++) {
-        int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
-        total += ne == 1 ? m->elements[e0].nverts : ne > 1 ? 4 : 0;
+        total += radi_mesh_outline(m, s, NULL);
     }
     o->nsurf = ns;
     o->sv = malloc(sizeof *o->sv * (size_t)(total > 0 ? total : 1));
@@ -215,7 +197,7 @@ static rad_status load_surfaces(rad_occ *o, const rad_mesh *m)
         int e0 = m->surface_first[s], ne = m->surface_first[s + 1] - e0;
         o->sfirst[s] = at;
         if (ne > 0) {
-            int n = surface_outline(m, s, o->sv + at);
+            int n = radi_mesh_outline(m, s, o->sv + at);
             o->snormal[s] = m->elements[e0].normal;
             v3_bounds(o->sv + at, n, &o->slo[s], &o->shi[s]);
             o->stwist[s] = poly_twist(o->sv + at, n, o->snormal[s]);

@@ -20,6 +20,7 @@
 #include "radiosity/formfactor.h"
 #include "radiosity/accuracy.h"
 #include "radiosity/accuracy.h"
+#include "mesh/mesh.h"
 #include "util/util.h"
 
 int rad_furnace_radiosity(const rad_scene *s, double B[RAD_BANDS])
@@ -84,6 +85,53 @@ rad_status rad_scene_closed(const rad_scene *scene, double tol, int *closed, dou
     return st;
 }
 
+/* How far point p lies outside element e of mesh c, along its plane: 0
+ * inside, else the largest distance outside one of its edges (a convex
+ * polygon, counter-clockwise about its normal). */
+static double outside(const rad_mesh *c, int e, rad_vec3 p)
+{
+    const rad_element *el = &c->elements[e];
+    double worst = 0;
+    for (int k = 0; k < el->nverts; k++) {
+        const rad_vec3 a = rad_mesh_vertex(c, e, k), b = rad_mesh_vertex(c, e, (k + 1) % el->nverts);
+        const rad_vec3 inward = v3_cross(el->normal, v3_sub(b, a));
+        const double d = -v3_dot(inward, v3_sub(p, a)) / v3_norm(inward);
+        worst = fmax(worst, d);
+    }
+    return worst;
+}
+
+/* The element of mesh c that holds fine element f of mesh t (the same
+ * scene, meshed finer): by the grids' indices, or, for a polygon cut into
+ * triangles, the element of its surface (of the same triangle of its fan
+ * when both are fans) that holds f's centroid (the least outside of them,
+ * against rounding: every fine triangle lies inside one coarse one only
+ * when the coarse count divides the fine, so else the one holding its
+ * centroid). */
+static int coarse_of(const rad_mesh *c, const rad_mesh *t, int f)
+{
+    const rad_element *el = &t->elements[f];
+    const int s = el->surface;
+    if (radi_mesh_is_fan(c, s) || radi_mesh_is_fan(t, s)) {
+        const int both = radi_mesh_is_fan(c, s) && radi_mesh_is_fan(t, s);
+        int best = c->surface_first[s];
+        double least = INFINITY;
+        for (int e = c->surface_first[s]; e < c->surface_first[s + 1] && least > 0; e++) {
+            if (both && c->elements[e].gi != el->gi)
+                continue;
+            const double d = outside(c, e, el->centroid);
+            if (d < least) {
+                least = d;
+                best = e;
+            }
+        }
+        return best;
+    }
+    const int ci = (int)floor((el->gi + 0.5) * c->surface_n[s] / t->surface_n[s]);
+    const int cj = (int)floor((el->gj + 0.5) * c->surface_m[s] / t->surface_m[s]);
+    return c->surface_first[s] + cj * c->surface_n[s] + ci;
+}
+
 void rad_solution_error(const rad_mesh *c, const double *Bc, const rad_mesh *t,
                         const double *Bt, const double truth[RAD_BANDS], double *rms,
                         double *max)
@@ -94,10 +142,7 @@ void rad_solution_error(const rad_mesh *c, const double *Bc, const rad_mesh *t,
     *max = 0;
     for (int f = 0; f < nt; f++) {
         const rad_element *el = &mt->elements[f];
-        const int s = el->surface;
-        const int ci = (int)floor((el->gi + 0.5) * c->surface_n[s] / mt->surface_n[s]);
-        const int cj = (int)floor((el->gj + 0.5) * c->surface_m[s] / mt->surface_m[s]);
-        const int e = c->surface_first[s] + cj * c->surface_n[s] + ci;
+        const int e = coarse_of(c, mt, f);
         for (int b = 0; b < RAD_BANDS; b++) {
             const double want = t ? Bt[f + (size_t)b * nt] : truth[b];
             const double d = Bc[e + (size_t)b * nc] - want;

@@ -20,11 +20,13 @@ PyDoc_STRVAR(load_scene_doc,
 PyDoc_STRVAR(form_factors_doc,
 "form_factors(scene, *, mesh=None, accuracy='default', quadrature=3,\n"
 "             method='contour', resolution=64, threads=0, errors=False,\n"
-"             strict=False, progress=None) -> numpy.ndarray\n\n"
+"             strict=False, progress=None, max_element_size=0) -> numpy.ndarray\n\n"
 "The form factors of every pair of elements: an n x n float64 array whose\n"
 "row i holds the factors from element i (F[i, j] = F_ij; rows of a closed\n"
 "scene sum to 1; A_i F_ij = A_j F_ji).  mesh=(N, M) cuts every\n"
-"quadrilateral into N x M elements; accuracy is 'classic' (Goral et al.\n"
+"quadrilateral into N x M elements and every triangle into max(N, M)^2\n"
+"(max_element_size=L instead: no element side longer than L); accuracy\n"
+"is 'classic' (Goral et al.\n"
 "1984's rule alone), 'default' or 'reference' (error-controlled);\n"
 "method='hemicube' computes each row by a hemicube of resolution pixels.\n"
 "errors=True returns (F, E), E the estimated absolute error of each entry\n"
@@ -38,7 +40,8 @@ PyDoc_STRVAR(form_factors_doc,
 PyDoc_STRVAR(solve_doc,
 "solve(scene, *, mesh=None, accuracy='default', solver=None, bounces=None,\n"
 "      quadrature=3, method='contour', resolution=64, threads=0,\n"
-"      strict=False, progress=None, vertices=False) -> numpy.ndarray\n\n"
+"      strict=False, progress=None, vertices=False, max_element_size=0)\n"
+"      -> numpy.ndarray\n\n"
 "Mesh, form factors and the radiosity system (Goral et al. 1984, eq. 5)\n"
 "band by band: B as an n x 3 float64 array, row i the radiosity of element\n"
 "i in red, green and blue.  solver is 'gauss' (None: LU), 'cholesky',\n"
@@ -49,7 +52,7 @@ PyDoc_STRVAR(solve_doc,
 "promise with strict=True.");
 
 PyDoc_STRVAR(elements_doc,
-"elements(scene, *, mesh=None) -> dict\n\n"
+"elements(scene, *, mesh=None, max_element_size=0) -> dict\n\n"
 "The elements a run with this mesh makes, in the order of the rows of F\n"
 "and B: 'surface' (int: the surface's index in file order, surfaces of\n"
 "absent objects left out, as the program's tables number them), 'area',\n"
@@ -58,7 +61,7 @@ PyDoc_STRVAR(elements_doc,
 "'obstruction' (bool: left out of form_factors' rows; they come last).");
 
 PyDoc_STRVAR(vertices_doc,
-"vertices(scene, *, mesh=None) -> numpy.ndarray\n\n"
+"vertices(scene, *, mesh=None, max_element_size=0) -> numpy.ndarray\n\n"
 "The mesh's vertices as an nv x 3 float64 array: the rows of the Bv that\n"
 "solve(..., vertices=True) returns, indexed by elements()['corners'].\n"
 "Vertices are shared inside a surface, never across surfaces.");

@@ -51,10 +51,12 @@ int radi_py_choice(const char *(*namefn)(int), const char *what, const char *giv
 /* pyscene.c */
 int radi_py_scene_init(PyObject *module, radi_py_state *st);
 PyObject *radi_py_load_scene(PyObject *module, PyObject *args, PyObject *kw);
-/* The scene a run works on: the present part of `obj` (a Scene), every
- * quadrilateral meshed N x M when `mesh` is a pair (N, M), not None.
+/* The scene a run works on: the present part of `obj` (a Scene), meshed
+ * as rad_scene_set_mesh does when `mesh` is a pair (N, M), not None, or
+ * so that no element side exceeds max_size when that is not 0.
  * Returns 0, or -1 with an exception set. */
-int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene *out);
+int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, double max_size,
+                      rad_scene *out);
 
 /* pyanalytic.c: the submodule radiosity.analytic */
 int radi_py_analytic_init(PyObject *module);

@@ -34,6 +34,7 @@ int radi_py_numpy_init(void)
 
 typedef struct run_args {
     PyObject *scene, *mesh;
+    double max_size;            /* max_element_size, or 0 */
     PyObject *progress;         /* None, or called as progress(stage, done, total) */
     const char *accuracy, *method;
     int quadrature, resolution, threads, strict;
@@ -42,6 +43,7 @@ typedef struct run_args {
 static void run_args_init(run_args *a)
 {
     a->mesh = Py_None;
+    a->max_size = 0;
     a->progress = Py_None;
     a->accuracy = "default";
     a->method = "contour";
@@ -201,7 +203,7 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
     rad_ff_options ff;
     rad_scene sc;
     rad_mesh mesh;
-    if (ff_options(a, &ff) != 0 || radi_py_run_scene(module, a->scene, a->mesh, &sc) != 0)
+    if (ff_options(a, &ff) != 0 || radi_py_run_scene(module, a->scene, a->mesh, a->max_size, &sc) != 0)
         return NULL;
     if (build_mesh(module, &sc, errors ? 2 : 1, &mesh) != 0) {
         rad_scene_free(&sc);
@@ -247,14 +249,15 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
 PyObject *radi_py_form_factors(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", "accuracy", "quadrature", "method",
-                             "resolution", "threads", "errors", "strict", "progress", NULL};
+                             "resolution", "threads", "errors", "strict", "progress",
+                             "max_element_size", NULL};
     run_args a;
     int errors = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OsisiippO:form_factors", kwlist, &a.scene,
-                                     &a.mesh, &a.accuracy, &a.quadrature, &a.method,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OsisiippOd:form_factors", kwlist,
+                                     &a.scene, &a.mesh, &a.accuracy, &a.quadrature, &a.method,
                                      &a.resolution, &a.threads, &errors, &a.strict,
-                                     &a.progress))
+                                     &a.progress, &a.max_size))
         return NULL;
     return fill(module, &a, errors);
 }
@@ -298,7 +301,7 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
         po.solve.bounces = (int)k;
     }
     rad_scene sc;
-    if (radi_py_run_scene(module, a->scene, a->mesh, &sc) != 0)
+    if (radi_py_run_scene(module, a->scene, a->mesh, a->max_size, &sc) != 0)
         return NULL;
     rad_result res;
     rad_error err;
@@ -332,16 +335,16 @@ PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", "accuracy", "solver", "bounces", "quadrature",
                              "method", "resolution", "threads", "strict", "progress",
-                             "vertices", NULL};
+                             "vertices", "max_element_size", NULL};
     run_args a;
     const char *solver = NULL; /* gauss, unless bounces are asked for */
     PyObject *bounces = Py_None;
     int vertices = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOp:solve", kwlist, &a.scene,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOpd:solve", kwlist, &a.scene,
                                      &a.mesh, &a.accuracy, &solver, &bounces, &a.quadrature,
                                      &a.method, &a.resolution, &a.threads, &a.strict,
-                                     &a.progress, &vertices))
+                                     &a.progress, &vertices, &a.max_size))
         return NULL;
     return run_solve(module, &a, solver, bounces, vertices);
 }
@@ -404,15 +407,17 @@ static PyObject *corner_table(const rad_mesh *mesh)
 
 PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"scene", "mesh", NULL};
+    static char *kwlist[] = {"scene", "mesh", "max_element_size", NULL};
     static const char *const names[] = {"surface", "area", "centroid", "normal", "reflect",
                                         "emit"};
     PyObject *scene, *mesh_obj = Py_None;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O:elements", kwlist, &scene, &mesh_obj))
+    double max_size = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Od:elements", kwlist, &scene, &mesh_obj,
+                                     &max_size))
         return NULL;
     rad_scene sc;
     rad_mesh mesh;
-    if (radi_py_run_scene(module, scene, mesh_obj, &sc) != 0)
+    if (radi_py_run_scene(module, scene, mesh_obj, max_size, &sc) != 0)
         return NULL;
     if (build_mesh(module, &sc, 0, &mesh) != 0) {
         rad_scene_free(&sc);
@@ -448,13 +453,15 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
 
 PyObject *radi_py_vertices(PyObject *module, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"scene", "mesh", NULL};
+    static char *kwlist[] = {"scene", "mesh", "max_element_size", NULL};
     PyObject *scene, *mesh_obj = Py_None;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O:vertices", kwlist, &scene, &mesh_obj))
+    double max_size = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Od:vertices", kwlist, &scene, &mesh_obj,
+                                     &max_size))
         return NULL;
     rad_scene sc;
     rad_mesh mesh;
-    if (radi_py_run_scene(module, scene, mesh_obj, &sc) != 0)
+    if (radi_py_run_scene(module, scene, mesh_obj, max_size, &sc) != 0)
         return NULL;
     if (build_mesh(module, &sc, 0, &mesh) != 0) {
         rad_scene_free(&sc);

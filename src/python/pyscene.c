@@ -6,6 +6,9 @@
  * on a copy of the scene's present part (objects not declared absent),
  * meshed as the run asks, so that one Scene can serve form_factors at
  * several meshes. */
+#include <math.h>
+#include <stdio.h>
+
 #include "python/pyrad.h"
 
 static void scene_dealloc(PyObject *self)
@@ -247,7 +250,8 @@ static int mesh_of(PyObject *mesh, int *n, int *m)
     return 0;
 }
 
-int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene *out)
+int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, double max_size,
+                      rad_scene *out)
 {
     radi_py_state *st = radi_py_state_of(module);
     if (!PyObject_TypeCheck(obj, st->scene_type)) {
@@ -258,6 +262,11 @@ int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene
     int n = 0, m = 0;
     if (mesh != Py_None && mesh_of(mesh, &n, &m) != 0)
         return -1;
+    if (max_size != 0 && (n > 0 || !(max_size > 0) || !isfinite(max_size))) {
+        PyErr_SetString(PyExc_ValueError, n > 0 ? "give mesh or max_element_size, not both"
+                                                : "max_element_size must be a positive length");
+        return -1;
+    }
     const rad_scene *in = &((radi_py_scene *)obj)->scene;
     rad_error err;
     if (rad_scene_present_copy(in, NULL, out, &err) != RAD_OK) {
@@ -272,16 +281,13 @@ int radi_py_run_scene(PyObject *module, PyObject *obj, PyObject *mesh, rad_scene
         radi_py_raise(module, &err);
         return -1;
     }
-    if (n > 0) {
+    if (n > 0)
         rad_scene_set_mesh(out, n, m);
-        int quads = 0;
-        for (int k = 0; k < out->nsurfaces; k++)
-            quads += out->surfaces[k].kind == RAD_SURFACE_QUAD;
-        if (quads == 0 && out->nsurfaces > 0 &&
-            PyErr_WarnFormat(PyExc_RuntimeWarning, 1,
-                             "mesh (%d, %d) applies to quadrilaterals, and %s has none: its %d "
-                             "triangles and polygons stay one element each",
-                             n, m, in->filename, out->nsurfaces) != 0) {
+    if (max_size > 0 && rad_scene_set_max_element_size(out, max_size) == 0) {
+        char msg[RAD_ERRMSG_MAX]; /* said as the program says it */
+        snprintf(msg, sizeof msg, "max_element_size %g makes no surface of %s finer: every "
+                 "element is already that small", max_size, in->filename ? in->filename : "-");
+        if (radi_py_warn(msg) != 0) {
             rad_scene_free(out);
             return -1;
         }

@@ -536,9 +536,62 @@ rad_status rad_scene_load_format(rad_scene *scene, const char *path, rad_scene_f
 
 void rad_scene_set_mesh(rad_scene *scene, int n, int m)
 {
-    for (int k = 0; k < scene->nsurfaces; k++)
-        if (scene->surfaces[k].kind == RAD_SURFACE_QUAD) {
-            scene->surfaces[k].mesh_n = n;
-            scene->surfaces[k].mesh_m = m;
+    for (int k = 0; k < scene->nsurfaces; k++) {
+        rad_surface *f = &scene->surfaces[k];
+        const int quad = f->kind == RAD_SURFACE_QUAD;
+        f->mesh_n = quad ? n : n > m ? n : m;
+        f->mesh_m = quad ? m : f->mesh_n;
+    }
+}
+
+/* Parts of a side of length d so that each is at most `size` long
+ * (capped: a count beyond the element limit is refused when meshing). */
+static int parts(double d, double size)
+{
+    const double k = ceil(d / size);
+    return !(k >= 1) ? 1 : k > RAD_ELEMENTS_MAX ? RAD_ELEMENTS_MAX : (int)k;
+}
+
+static double dist(rad_vec3 a, rad_vec3 b)
+{
+    return v3_norm(v3_sub(a, b));
+}
+
+/* The area centroid of a convex polygon (the apex of its fan, meshtri.c):
+ * its triangles from v[0] weighted by their areas. */
+static rad_vec3 area_centroid(const rad_vec3 *v, int n)
+{
+    rad_vec3 c = v3(0, 0, 0);
+    double a = 0;
+    for (int k = 1; k + 1 < n; k++) {
+        const double t = v3_norm(v3_cross(v3_sub(v[k], v[0]), v3_sub(v[k + 1], v[0])));
+        c = v3_add(c, v3_scale(v3_add(v3_add(v[0], v[k]), v[k + 1]), t / 3));
+        a += t;
+    }
+    return a > 0 ? v3_scale(c, 1 / a) : v[0];
+}
+
+int rad_scene_set_max_element_size(rad_scene *scene, double size)
+{
+    int cut = 0;
+    for (int k = 0; k < scene->nsurfaces; k++) {
+        rad_surface *f = &scene->surfaces[k];
+        const rad_vec3 *v = f->verts;
+        int n, m; /* each side of an element at most size */
+        if (f->kind == RAD_SURFACE_QUAD) {
+            n = parts(fmax(dist(v[0], v[1]), dist(v[3], v[2])), size);
+            m = parts(fmax(dist(v[1], v[2]), dist(v[0], v[3])), size);
+        } else { /* every edge of its fan's triangles (meshtri.c): outline and spokes */
+            const rad_vec3 apex = f->nverts == 3 ? v[0] : area_centroid(v, f->nverts);
+            double d = 0;
+            for (int j = 0; j < f->nverts; j++)
+                d = fmax(d, fmax(dist(v[j], v[(j + 1) % f->nverts]), dist(apex, v[j])));
+            n = m = parts(d, size);
         }
+        /* a finer mesh of the scene's own stays */
+        cut += n > f->mesh_n || m > f->mesh_m;
+        f->mesh_n = n > f->mesh_n ? n : f->mesh_n;
+        f->mesh_m = m > f->mesh_m ? m : f->mesh_m;
+    }
+    return cut;
 }

@@ -159,8 +159,9 @@ static void materials_and_kinds(void)
            s.surfaces[2].line);
     rad_scene_set_mesh(&s, 3, 2);
     tap_ok(s.surfaces[1].mesh_n == 3 && s.surfaces[1].mesh_m == 2 &&
-               s.surfaces[0].mesh_n == 1 && s.surfaces[2].mesh_n == 1,
-           "--mesh applies to the quad face only");
+               s.surfaces[0].mesh_n == 3 && s.surfaces[0].mesh_m == 3 &&
+               s.surfaces[2].mesh_n == 3 && s.surfaces[2].mesh_m == 3,
+           "--mesh 3x2 applies to every face: the quad 3 x 2, triangle and 5-gon 3 per edge");
     rad_scene_free(&s);
 }
 

@@ -82,8 +82,9 @@ static void valid(void)
     tap_ok(nz < 0, "disk runs counter-clockwise about its normal");
     tap_ok(s.camera.defined && s.camera.fov == 45 && s.camera.eye.z == -3, "camera");
     rad_scene_set_mesh(&s, 4, 5);
-    tap_ok(s.surfaces[0].mesh_n == 4 && s.surfaces[0].mesh_m == 5 && s.surfaces[1].mesh_n == 1,
-           "--mesh overrides quads only");
+    tap_ok(s.surfaces[0].mesh_n == 4 && s.surfaces[0].mesh_m == 5 &&
+               s.surfaces[1].mesh_n == 5 && s.surfaces[1].mesh_m == 5,
+           "--mesh 4x5: quads 4 x 5, polygons 5 parts per edge of their triangles");
     rad_scene_free(&s);
 }
 

@@ -99,8 +99,8 @@ static void mapping(void)
            "lines kept (%d, %d); no objects", s.surfaces[0].line, s.surfaces[4].line);
     rad_scene_set_mesh(&s, 2, 3);
     tap_ok(s.surfaces[0].mesh_n == 2 && s.surfaces[0].mesh_m == 3 &&
-               s.surfaces[2].mesh_n == 1 && s.surfaces[3].mesh_m == 3,
-           "--mesh applies to the quads, S and O alike");
+               s.surfaces[2].mesh_n == 3 && s.surfaces[3].mesh_m == 3,
+           "--mesh applies to every surface, S and O alike (the triangle 3 per edge)");
     rad_scene_free(&s);
 }
 
