@@ -229,6 +229,44 @@ class Binding(unittest.TestCase):
         with self.assertRaises(ValueError):
             radiosity.elements(s, mesh=(2, 2), max_element_size=0.3)
 
+    def test_crease(self):
+        """crease=30: the two triangles of each wall meet smoothly, walls at 90 degrees do not"""
+        tris = "".join(
+            "polygon %s 3  %s  %s  %s\npolygon %s 3  %s  %s  %s\n" % (m, a, b, c, m, a, c, d)
+            for m, a, b, c, d in [
+                ("w", "0 0 0", "1 0 0", "1 1 0", "0 1 0"), ("l", "0 0 1", "0 1 1", "1 1 1", "1 0 1"),
+                ("w", "0 0 0", "0 1 0", "0 1 1", "0 0 1"), ("w", "1 0 0", "1 0 1", "1 1 1", "1 1 0"),
+                ("w", "0 0 0", "0 0 1", "1 0 1", "1 0 0"), ("w", "0 1 0", "1 1 0", "1 1 1", "0 1 1")])
+        s = radiosity.load_scene("material w reflect 0.5\nmaterial l reflect 0.2 emit 1\n" + tris)
+        v = radiosity.vertices(s, mesh=(3, 3))
+        n = radiosity.elements(s, mesh=(3, 3))
+        # each vertex's surface, and the copies of each point
+        surf = np.empty(len(v), int)
+        for e, c in enumerate(n["corners"]):
+            surf[c] = n["surface"][e]
+        _, group = np.unique(v, axis=0, return_inverse=True)
+        _, Bv0 = radiosity.solve(s, mesh=(3, 3), vertices=True)
+        _, Bv = radiosity.solve(s, mesh=(3, 3), vertices=True, crease=30)
+        same_wall = different = 0
+        ok_same, ok_diff = True, True
+        for g in np.unique(group):
+            idx = np.flatnonzero(group == g)
+            for i in idx:
+                for j in idx:
+                    if i < j and surf[i] // 2 == surf[j] // 2:  # the wall's two triangles
+                        same_wall += 1
+                        ok_same &= np.array_equal(Bv[i], Bv[j])
+                    elif i < j:
+                        different += 1
+                        ok_diff &= not np.array_equal(Bv[i], Bv[j]) or np.array_equal(Bv0[i], Bv0[j])
+        self.assertTrue(same_wall > 0 and ok_same)
+        self.assertTrue(different > 0 and ok_diff)
+        self.assertFalse(all(np.array_equal(Bv0[i], Bv0[j]) for g in np.unique(group)
+                             for i in np.flatnonzero(group == g) for j in np.flatnonzero(group == g)
+                             if surf[i] // 2 == surf[j] // 2))
+        # the merged value is a mean of the copies: within their range
+        self.assertTrue(np.all(Bv <= Bv0.max(axis=0) + 1e-15) and np.all(Bv >= Bv0.min(axis=0) - 1e-15))
+
     # ---- the solve -----------------------------------------------------------
     def test_furnace(self):
         """furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) of F's row sums"""

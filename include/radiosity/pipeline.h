@@ -38,6 +38,9 @@ typedef struct rad_pipeline_options {
     int keep_form_factors;      /* 1: leave F in the result (--form-factors;
                                    needs the dense matrix) */
     rad_matrix_mode matrix;     /* stored F or not (default auto) */
+    double crease;              /* degrees: smooth vertex radiosity across
+                                   surfaces of one material meeting at less
+                                   (rad_smooth_across); 0: never (default) */
     rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
                                      (default: extrapolate) */
 } rad_pipeline_options;

@@ -219,6 +219,7 @@ enum {
     OPT_TRACE,
     OPT_PATCHES,
     OPT_VERTEX_RULE,
+    OPT_CREASE,
     OPT_MATRIX,
     OPT_ADAPTIVE,
     OPT_SUBDIVIDE_THRESHOLD,
@@ -239,6 +240,7 @@ typedef struct cli_solve {
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
     rad_vertex_rule vertex_rule;  /* --vertex-rule */
+    double crease;              /* --crease DEG, 0: never across surfaces */
     int given_adaptive_option;  /* --subdivide-threshold, --max-depth or
                                    --subdivide-test */
 } cli_solve;
@@ -256,6 +258,7 @@ typedef struct cli_solve {
     {"patches", optional_argument, NULL, OPT_PATCHES},                    \
     {"matrix", required_argument, NULL, OPT_MATRIX},                      \
     {"vertex-rule", required_argument, NULL, OPT_VERTEX_RULE},            \
+    {"crease", required_argument, NULL, OPT_CREASE},                      \
     CLI_METHOD_LONGOPTS,                                                  \
     {"adaptive", no_argument, NULL, OPT_ADAPTIVE},                        \
     {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD}, \
@@ -332,7 +335,11 @@ typedef struct cli_solve {
     "      --vertex-rule RULE  vertex radiosity on a surface's boundary:\n"     \
     "                          extrapolate (linear, Goral et al. 1984; default)\n"\
     "                          or corner ((vertex + nearest interior vertex)/2\n"\
-    "                          = mean of the elements at the vertex)\n"
+    "                          = mean of the elements at the vertex)\n"         \
+    "      --crease DEG        smooth vertex radiosity across surfaces of one\n"\
+    "                          material that meet at a point with normals\n"   \
+    "                          less than DEG degrees apart (the faces of a\n"  \
+    "                          model; default 0: never across surfaces)\n"
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */
 typedef struct cli_run {

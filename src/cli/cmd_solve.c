@@ -114,6 +114,12 @@ int cli_solve_option(cli_solve *s, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_CREASE:
+        if (cli_parse_double(arg, &s->crease) || !(s->crease >= 0 && s->crease <= 180)) {
+            cli_error("--crease takes an angle from 0 to 180 degrees, not '%s'", arg);
+            return 2;
+        }
+        return 0;
     case OPT_ADAPTIVE:
     case OPT_SUBDIVIDE_THRESHOLD:
     case OPT_MAX_DEPTH:
@@ -473,6 +479,7 @@ int cli_run_solve(cli_run *run)
     po.solve = s->solve;
     po.keep_form_factors = s->form_factors != NULL;
     po.vertex_rule = s->vertex_rule;
+    po.crease = s->crease;
     po.matrix = s->matrix;
     if (s->trace) {
         po.solve.on_shot = keep_shot;

@@ -3,6 +3,7 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/crease.c \
 	%reldir%/mesh.c %reldir%/mesh.h \
 	%reldir%/meshgeom.c \
 	%reldir%/meshtri.c \

@@ -139,12 +139,15 @@ static rad_status allocate(rad_result *r, rad_error *err)
 }
 
 /* Smooth B and count its negative values (a solved run). */
-static void finish(rad_result *r, const rad_pipeline_options *opt, double t_solved)
+static rad_status finish(rad_result *r, const rad_pipeline_options *opt, double t_solved,
+                         rad_error *err)
 {
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
     rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
+    rad_status st = rad_smooth_across(&r->mesh, opt->crease, r->Bv, err);
     r->t_smooth = radi_seconds() - t_solved;
+    return st;
 }
 
 /* --matrix none: the form factors are computed inside the solve, shot by
@@ -162,7 +165,7 @@ static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt
     r->t_solve = t3 - t1;
     r->ff_done = r->solve_done = 1;
     if (st == RAD_OK)
-        finish(r, opt, t3);
+        st = finish(r, opt, t3, err);
     return st;
 }
 
@@ -194,7 +197,7 @@ static rad_status run_adaptive(rad_result *r, const rad_pipeline_options *opt, d
     r->splits = out.splits;
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
-    return RAD_OK;
+    return rad_smooth_across(&r->mesh, opt->crease, r->Bv, err);
 }
 
 /* A scene with absent objects is solved without them (radiosity-scene(5)):
@@ -262,7 +265,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     r->t_solve = t3 - t2;
     r->solve_done = 1;
     if (st == RAD_OK)
-        finish(r, opt, t3);
+        st = finish(r, opt, t3, err);
     if (!opt->keep_form_factors) {
         free(r->F);
         r->F = NULL;

@@ -276,7 +276,7 @@ static PyObject *bands(const double *v, int n)
 }
 
 static PyObject *run_solve(PyObject *module, const run_args *a, const char *solver,
-                           PyObject *bounces, int vertices)
+                           PyObject *bounces, int vertices, double crease)
 {
     rad_pipeline_options po;
     rad_pipeline_options_init(&po);
@@ -289,6 +289,7 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
     if (s < 0 || ff_options(a, &po.ff) != 0)
         return NULL;
     po.solve.solver = (rad_solver)s;
+    po.crease = crease;
     if (bounces != Py_None) {
         const long k = PyBool_Check(bounces) ? -2 : PyLong_AsLong(bounces);
         if (k == -1 && PyErr_Occurred())
@@ -335,18 +336,23 @@ PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"scene", "mesh", "accuracy", "solver", "bounces", "quadrature",
                              "method", "resolution", "threads", "strict", "progress",
-                             "vertices", "max_element_size", NULL};
+                             "vertices", "max_element_size", "crease", NULL};
     run_args a;
     const char *solver = NULL; /* gauss, unless bounces are asked for */
     PyObject *bounces = Py_None;
     int vertices = 0;
+    double crease = 0;
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOpd:solve", kwlist, &a.scene,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOpdd:solve", kwlist, &a.scene,
                                      &a.mesh, &a.accuracy, &solver, &bounces, &a.quadrature,
                                      &a.method, &a.resolution, &a.threads, &a.strict,
-                                     &a.progress, &vertices, &a.max_size))
+                                     &a.progress, &vertices, &a.max_size, &crease))
         return NULL;
-    return run_solve(module, &a, solver, bounces, vertices);
+    if (!(crease >= 0 && crease <= 180)) {
+        PyErr_Format(PyExc_ValueError, "crease must be 0 to 180 degrees");
+        return NULL;
+    }
+    return run_solve(module, &a, solver, bounces, vertices, crease);
 }
 
 /* ---- elements ----------------------------------------------------------- */

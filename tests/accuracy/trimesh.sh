@@ -51,6 +51,12 @@ awk -v q0="$q0" -v q1="$q1" -v q2="$q2" -v t0="$t0" -v t1="$t1" 'function abs(x)
       4 / 3 * abs(q0 - q1), 4 / 3 * abs(q1 - q2) > "/dev/stderr"
     exit !(e0 <= 4 / 3 * abs(q0 - q1) && e1 <= 4 / 3 * abs(q1 - q2) && e0 >= 3 * e1) }' 2> "$work/why"
 ok $? "triangles converge to the quads' limit within the quads' own error, at second order: $(cat "$work/why")"
+# --crease: accepted from 0 to 180 degrees
+"$RADIOSITY" solve -q --crease 30 --max-element-size 0.5 -o "$work/c.ply" "$work/tris.scene" 2> "$work/err"
+ok $? "solve --crease 30 runs on the room of triangles $(head -c 120 "$work/err")"
+"$RADIOSITY" solve -q --crease 200 -o "$work/c.ply" "$work/tris.scene" 2> "$work/err"
+[ $? -eq 2 ] && grep -q 'from 0 to 180 degrees' "$work/err"
+ok $? "--crease 200: a usage error"
 # --max-element-size that cuts nothing says so
 "$RADIOSITY" formfactor -q --max-element-size 10 -o "$work/f.tsv" "$work/tris.scene" 2> "$work/err"
 [ $? -eq 0 ] && grep -q 'warning: --max-element-size 10 makes no surface .* finer' "$work/err"

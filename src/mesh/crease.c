@@ -1,0 +1,104 @@
+/* crease.c -- vertex radiosity across surfaces that meet smoothly.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * Goral et al. 1984 smooth inside each surface only: walls of different
+ * colours meet at a crease, and a vertex keeps one value per surface.  A
+ * model from a modelling tool is another matter: a curved or flat face is
+ * many triangles, each its own surface, and shading that stops at every
+ * triangle's edge shows the facets.  Renderers smooth across faces whose
+ * normals differ by less than a crease angle (Gouraud 1971; the "auto
+ * smooth" angle of modelling tools).  Here: mesh vertices at the same
+ * point (the same bits: shared corners of an exporter's faces are written
+ * once and read alike) on surfaces of the same material (reflectance and
+ * emission) whose unit normals make an angle of at most the crease angle
+ * take the mean of their values, each weighted by the area of its
+ * surface's elements that meet there.  The angle test is made for each
+ * vertex against each other one, so a fan of faces turning gradually
+ * round a point is smoothed pairwise, never across a sharp edge.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mesh/mesh.h"
+#include "radiosity/base.h"
+#include "radiosity/mesh.h"
+#include "util/util.h"
+
+typedef struct vkey {
+    rad_vec3 p;
+    int v, surface;
+} vkey;
+
+static int by_point(const void *a, const void *b)
+{
+    const rad_vec3 p = ((const vkey *)a)->p, q = ((const vkey *)b)->p;
+    return p.x != q.x ? (p.x < q.x ? -1 : 1)
+           : p.y != q.y ? (p.y < q.y ? -1 : 1)
+           : p.z != q.z ? (p.z < q.z ? -1 : 1)
+                        : ((const vkey *)a)->v - ((const vkey *)b)->v;
+}
+
+static int same_point(const vkey *a, const vkey *b)
+{
+    return a->p.x == b->p.x && a->p.y == b->p.y && a->p.z == b->p.z;
+}
+
+/* May surfaces a and b (their first elements) be smoothed across? */
+static int smooth_pair(const rad_mesh *m, int a, int b, double cos_crease)
+{
+    const rad_element *x = &m->elements[m->surface_first[a]];
+    const rad_element *y = &m->elements[m->surface_first[b]];
+    return v3_dot(x->normal, y->normal) >= cos_crease &&
+           memcmp(x->reflect, y->reflect, sizeof x->reflect) == 0 &&
+           memcmp(x->emit, y->emit, sizeof x->emit) == 0;
+}
+
+rad_status rad_smooth_across(const rad_mesh *m, double crease_degrees, double *Bv,
+                             rad_error *err)
+{
+    if (!(crease_degrees > 0) || m->nvertices == 0)
+        return RAD_OK;
+    const size_t nv = (size_t)m->nvertices;
+    const double cos_crease = cos(fmin(crease_degrees, 180) * M_PI / 180);
+    vkey *key = malloc(sizeof *key * nv);
+    double *w = calloc(nv, sizeof *w), *out = malloc(sizeof *out * nv * RAD_BANDS);
+    if (!key || !w || !out) {
+        free(key);
+        free(w);
+        free(out);
+        return radi_fail(err, RAD_ERR_NOMEM, "out of memory to smooth %zu vertices", nv);
+    }
+    for (int e = 0; e < m->nelements; e++) /* each vertex's weight: its elements' area */
+        for (int k = 0; k < m->elements[e].nverts; k++)
+            w[m->vindex[m->elements[e].first + k]] += m->elements[e].area;
+    for (int s = 0; s < m->nsurfaces; s++)
+        for (int v = m->surface_vfirst[s]; v < m->surface_vfirst[s + 1]; v++)
+            key[v] = (vkey){m->vertices[v], v, s};
+    qsort(key, nv, sizeof *key, by_point);
+    memcpy(out, Bv, sizeof *out * nv * RAD_BANDS);
+    for (size_t g = 0, h; g < nv; g = h) {
+        for (h = g + 1; h < nv && same_point(&key[g], &key[h]); h++)
+            ; /* [g, h): one point */
+        for (size_t i = g; h - g > 1 && i < h; i++) {
+            double sum[RAD_BANDS] = {0}, wsum = 0;
+            for (size_t j = g; j < h; j++) {
+                if (j != i && !smooth_pair(m, key[i].surface, key[j].surface, cos_crease))
+                    continue;
+                wsum += w[key[j].v];
+                for (int b = 0; b < RAD_BANDS; b++)
+                    sum[b] += w[key[j].v] * Bv[(size_t)key[j].v + (size_t)b * nv];
+            }
+            for (int b = 0; wsum > 0 && b < RAD_BANDS; b++)
+                out[(size_t)key[i].v + (size_t)b * nv] = sum[b] / wsum;
+        }
+    }
+    memcpy(Bv, out, sizeof *out * nv * RAD_BANDS);
+    free(key);
+    free(w);
+    free(out);
+    return RAD_OK;
+}
