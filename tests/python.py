@@ -231,22 +231,24 @@ class Binding(unittest.TestCase):
 
     def test_crease(self):
         """crease=30: the two triangles of each wall meet smoothly, walls at 90 degrees do not"""
+        # each wall's triangles share their diagonal, which each cuts from
+        # its own end: its points agree to an ulp, not to the bit
         tris = "".join(
-            "polygon %s 3  %s  %s  %s\npolygon %s 3  %s  %s  %s\n" % (m, a, b, c, m, a, c, d)
+            "polygon %s 3  %s  %s  %s\npolygon %s 3  %s  %s  %s\n" % (m, a, b, d, m, c, d, b)
             for m, a, b, c, d in [
                 ("w", "0 0 0", "1 0 0", "1 1 0", "0 1 0"), ("l", "0 0 1", "0 1 1", "1 1 1", "1 0 1"),
                 ("w", "0 0 0", "0 1 0", "0 1 1", "0 0 1"), ("w", "1 0 0", "1 0 1", "1 1 1", "1 1 0"),
                 ("w", "0 0 0", "0 0 1", "1 0 1", "1 0 0"), ("w", "0 1 0", "1 1 0", "1 1 1", "0 1 1")])
         s = radiosity.load_scene("material w reflect 0.5\nmaterial l reflect 0.2 emit 1\n" + tris)
-        v = radiosity.vertices(s, mesh=(3, 3))
-        n = radiosity.elements(s, mesh=(3, 3))
+        v = radiosity.vertices(s, mesh=(7, 7))
+        n = radiosity.elements(s, mesh=(7, 7))
         # each vertex's surface, and the copies of each point
         surf = np.empty(len(v), int)
         for e, c in enumerate(n["corners"]):
             surf[c] = n["surface"][e]
-        _, group = np.unique(v, axis=0, return_inverse=True)
-        _, Bv0 = radiosity.solve(s, mesh=(3, 3), vertices=True)
-        _, Bv = radiosity.solve(s, mesh=(3, 3), vertices=True, crease=30)
+        _, group = np.unique(np.round(v * 2**20), axis=0, return_inverse=True)
+        _, Bv0 = radiosity.solve(s, mesh=(7, 7), vertices=True)
+        _, Bv = radiosity.solve(s, mesh=(7, 7), vertices=True, crease=30)
         same_wall = different = 0
         ok_same, ok_diff = True, True
         for g in np.unique(group):
@@ -266,6 +268,15 @@ class Binding(unittest.TestCase):
                              if surf[i] // 2 == surf[j] // 2))
         # the merged value is a mean of the copies: within their range
         self.assertTrue(np.all(Bv <= Bv0.max(axis=0) + 1e-15) and np.all(Bv >= Bv0.min(axis=0) - 1e-15))
+        # the two sides of a sheet never merge, even at 180 degrees
+        sheet = radiosity.load_scene("material w reflect 0.5\nmaterial l reflect 0 emit 1\n"
+                                     "polygon w 3  0 0 0  1 0 0  0 1 0\n"
+                                     "polygon w 3  0 0 0  0 1 0  1 0 0\n"
+                                     "polygon l 3  0 0 1  0 1 1  1 0 1\n")
+        _, Bs = radiosity.solve(sheet, vertices=True, crease=180)
+        self.assertTrue(Bs[:3].min() > 0 and Bs[3:6].max() == 0)
+        with self.assertRaises(ValueError):
+            radiosity.solve(sheet, crease=30)
 
     # ---- the solve -----------------------------------------------------------
     def test_furnace(self):

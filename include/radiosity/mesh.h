@@ -77,10 +77,12 @@ typedef enum rad_vertex_rule {
 RAD_API void rad_smooth_vertices_rule(const rad_mesh *mesh, const double *B, double *Bv,
                                       rad_vertex_rule rule);
 /* Smooth across surfaces: where surfaces of the same material
- * whose normals differ by at most crease_degrees meet at a vertex (the
- * same point), each of their vertices there takes the mean of their Bv,
- * weighted by the area of each one's elements at the point.  0 (or less)
- * leaves Bv as it is: surfaces never mix, as Goral et al. 1984 smooth. */
+ * whose normals differ by less than crease_degrees meet at a vertex (the
+ * same point, to 2^-30 of the scene's size), each of their vertices there
+ * takes the mean of their Bv, weighted by the area of each one's elements
+ * at the point.  0 (or less) leaves Bv as it is: surfaces never mix, as
+ * Goral et al. 1984 smooth.  Not for a mesh with hanging vertices (an
+ * adaptive one): they would no longer lie on their edges' values. */
 RAD_API rad_status rad_smooth_across(const rad_mesh *mesh, double crease_degrees, double *Bv,
                                      rad_error *err);
 /* "extrapolate", "corner", or NULL. */

@@ -38,11 +38,13 @@ typedef struct rad_pipeline_options {
     int keep_form_factors;      /* 1: leave F in the result (--form-factors;
                                    needs the dense matrix) */
     rad_matrix_mode matrix;     /* stored F or not (default auto) */
-    double crease;              /* degrees: smooth vertex radiosity across
-                                   surfaces of one material meeting at less
-                                   (rad_smooth_across); 0: never (default) */
     rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
                                      (default: extrapolate) */
+    double crease;              /* degrees: smooth vertex radiosity across
+                                   surfaces of one material meeting at less
+                                   (rad_smooth_across); 0: never (default);
+                                   not with adaptive subdivision, whose
+                                   hanging vertices follow their edges */
 } rad_pipeline_options;
 
 RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);

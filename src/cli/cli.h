@@ -339,7 +339,8 @@ typedef struct cli_solve {
     "      --crease DEG        smooth vertex radiosity across surfaces of one\n"\
     "                          material that meet at a point with normals\n"   \
     "                          less than DEG degrees apart (the faces of a\n"  \
-    "                          model; default 0: never across surfaces)\n"
+    "                          model; default 0: never across surfaces; not\n" \
+    "                          with --adaptive)\n"
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */
 typedef struct cli_run {

@@ -168,6 +168,9 @@ int cli_solve_check(const cli_solve *s)
         bad = "--subdivide-threshold, --subdivide-test and --max-depth apply to --adaptive";
     else if (s->solve.adaptive && (v != RAD_SOLVER_PROGRESSIVE || s->given_bounces))
         bad = "--adaptive applies to --solver progressive";
+    else if (s->solve.adaptive && s->crease > 0)
+        bad = "--crease moves vertices that --adaptive's hanging vertices must follow: give "
+              "one of them";
     else if (s->solve.adaptive && (s->solve.patches || s->solve.patch_p))
         bad = "--adaptive: the mesh's elements are the patches that shoot; give --mesh, "
               "not --patches";

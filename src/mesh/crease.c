@@ -8,12 +8,15 @@
  * many triangles, each its own surface, and shading that stops at every
  * triangle's edge shows the facets.  Renderers smooth across faces whose
  * normals differ by less than a crease angle (Gouraud 1971; the "auto
- * smooth" angle of modelling tools).  Here: mesh vertices at the same
- * point (the same bits: shared corners of an exporter's faces are written
- * once and read alike) on surfaces of the same material (reflectance and
- * emission) whose unit normals make an angle of at most the crease angle
- * take the mean of their values, each weighted by the area of its
- * surface's elements that meet there.  The angle test is made for each
+ * smooth" angle of modelling tools).  Here: mesh vertices at one point
+ * on surfaces of the same material (reflectance and emission) whose unit
+ * normals make an angle of less than the crease angle (so never the two
+ * sides of a sheet) take the mean of their values, each weighted by the
+ * area of its surface's elements that meet there.  One point: the same
+ * cell of a grid 2^-30 of the scene's size, far above the rounding of a
+ * point computed along an edge from either end (an ulp) and far below any
+ * element (a point within a few ulps of a cell's side may fall on the
+ * other; at 1e-7 of a scene's size that is left to chance).  The angle test is made for each
  * vertex against each other one, so a fan of faces turning gradually
  * round a point is smoothed pairwise, never across a sharp edge.
  */
@@ -29,32 +32,57 @@
 #include "util/util.h"
 
 typedef struct vkey {
-    rad_vec3 p;
+    long long q[3];             /* the point on a grid of cells 2^-30 of the scene */
     int v, surface;
 } vkey;
 
 static int by_point(const void *a, const void *b)
 {
-    const rad_vec3 p = ((const vkey *)a)->p, q = ((const vkey *)b)->p;
-    return p.x != q.x ? (p.x < q.x ? -1 : 1)
-           : p.y != q.y ? (p.y < q.y ? -1 : 1)
-           : p.z != q.z ? (p.z < q.z ? -1 : 1)
-                        : ((const vkey *)a)->v - ((const vkey *)b)->v;
+    const vkey *x = a, *y = b;
+    for (int k = 0; k < 3; k++)
+        if (x->q[k] != y->q[k])
+            return x->q[k] < y->q[k] ? -1 : 1;
+    return x->v - y->v;
 }
 
 static int same_point(const vkey *a, const vkey *b)
 {
-    return a->p.x == b->p.x && a->p.y == b->p.y && a->p.z == b->p.z;
+    return a->q[0] == b->q[0] && a->q[1] == b->q[1] && a->q[2] == b->q[2];
 }
 
-/* May surfaces a and b (their first elements) be smoothed across? */
+/* May surfaces a and b (their first elements) be smoothed across: one
+ * material, normals less than the crease angle apart? */
 static int smooth_pair(const rad_mesh *m, int a, int b, double cos_crease)
 {
     const rad_element *x = &m->elements[m->surface_first[a]];
     const rad_element *y = &m->elements[m->surface_first[b]];
-    return v3_dot(x->normal, y->normal) >= cos_crease &&
+    return v3_dot(x->normal, y->normal) > cos_crease &&
            memcmp(x->reflect, y->reflect, sizeof x->reflect) == 0 &&
            memcmp(x->emit, y->emit, sizeof x->emit) == 0;
+}
+
+/* The keys of the vertices of surfaces with elements and finite points;
+ * returns how many. */
+static size_t make_keys(const rad_mesh *m, vkey *key)
+{
+    rad_vec3 lo, hi;
+    v3_bounds(m->vertices, m->nvertices, &lo, &hi);
+    const double size = v3_maxabs(v3_sub(hi, lo));
+    const double cell = size > 0 && isfinite(size) ? ldexp(size, -30) : 1;
+    size_t n = 0;
+    for (int s = 0; s < m->nsurfaces; s++) {
+        if (m->surface_first[s + 1] == m->surface_first[s])
+            continue;
+        for (int v = m->surface_vfirst[s]; v < m->surface_vfirst[s + 1]; v++) {
+            const rad_vec3 p = v3_sub(m->vertices[v], lo);
+            const double c[3] = {p.x / cell, p.y / cell, p.z / cell};
+            if (!(isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2])))
+                continue;
+            key[n] = (vkey){{llround(c[0]), llround(c[1]), llround(c[2])}, v, s};
+            n++;
+        }
+    }
+    return n;
 }
 
 rad_status rad_smooth_across(const rad_mesh *m, double crease_degrees, double *Bv,
@@ -75,13 +103,11 @@ rad_status rad_smooth_across(const rad_mesh *m, double crease_degrees, double *B
     for (int e = 0; e < m->nelements; e++) /* each vertex's weight: its elements' area */
         for (int k = 0; k < m->elements[e].nverts; k++)
             w[m->vindex[m->elements[e].first + k]] += m->elements[e].area;
-    for (int s = 0; s < m->nsurfaces; s++)
-        for (int v = m->surface_vfirst[s]; v < m->surface_vfirst[s + 1]; v++)
-            key[v] = (vkey){m->vertices[v], v, s};
-    qsort(key, nv, sizeof *key, by_point);
+    const size_t nk = make_keys(m, key);
+    qsort(key, nk, sizeof *key, by_point);
     memcpy(out, Bv, sizeof *out * nv * RAD_BANDS);
-    for (size_t g = 0, h; g < nv; g = h) {
-        for (h = g + 1; h < nv && same_point(&key[g], &key[h]); h++)
+    for (size_t g = 0, h; g < nk; g = h) {
+        for (h = g + 1; h < nk && same_point(&key[g], &key[h]); h++)
             ; /* [g, h): one point */
         for (size_t i = g; h - g > 1 && i < h; i++) {
             double sum[RAD_BANDS] = {0}, wsum = 0;

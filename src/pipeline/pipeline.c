@@ -177,6 +177,9 @@ static rad_status run_adaptive(rad_result *r, const rad_pipeline_options *opt, d
 {
     rad_solve_options so = opt->solve;
     rad_adapt_out out;
+    if (opt->crease > 0) /* it would move corners under hanging vertices */
+        return radi_fail(err, RAD_ERR_INVALID, "a crease angle cannot be used with adaptive "
+                                               "subdivision");
     if (!so.progress) {
         so.progress = opt->ff.progress;
         so.progress_user = opt->ff.progress_user;
@@ -197,7 +200,7 @@ static rad_status run_adaptive(rad_result *r, const rad_pipeline_options *opt, d
     r->splits = out.splits;
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
-    return rad_smooth_across(&r->mesh, opt->crease, r->Bv, err);
+    return RAD_OK;
 }
 
 /* A scene with absent objects is solved without them (radiosity-scene(5)):

@@ -348,8 +348,11 @@ PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
                                      &a.method, &a.resolution, &a.threads, &a.strict,
                                      &a.progress, &vertices, &a.max_size, &crease))
         return NULL;
-    if (!(crease >= 0 && crease <= 180)) {
-        PyErr_Format(PyExc_ValueError, "crease must be 0 to 180 degrees");
+    if (!(crease >= 0 && crease <= 180) || (crease > 0 && !vertices)) {
+        PyErr_SetString(PyExc_ValueError, crease > 0 && crease <= 180
+                                              ? "crease smooths the vertex radiosity: ask for "
+                                                "it with vertices=True"
+                                              : "crease must be 0 to 180 degrees");
         return NULL;
     }
     return run_solve(module, &a, solver, bounces, vertices, crease);
