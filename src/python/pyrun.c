@@ -414,24 +414,33 @@ static PyObject *corner_table(const rad_mesh *mesh)
     return out;
 }
 
-PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
+/* The mesh that f(scene, *, mesh=None, max_element_size=0) asks for
+ * (format: "O|$Od:f"), and the scene it was made of; -1 with an
+ * exception. */
+static int mesh_of_args(PyObject *module, PyObject *args, PyObject *kw, const char *format,
+                        rad_scene *sc, rad_mesh *mesh)
 {
     static char *kwlist[] = {"scene", "mesh", "max_element_size", NULL};
-    static const char *const names[] = {"surface", "area", "centroid", "normal", "reflect",
-                                        "emit"};
     PyObject *scene, *mesh_obj = Py_None;
     double max_size = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Od:elements", kwlist, &scene, &mesh_obj,
-                                     &max_size))
-        return NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, format, kwlist, &scene, &mesh_obj, &max_size) ||
+        radi_py_run_scene(module, scene, mesh_obj, max_size, sc) != 0)
+        return -1;
+    if (build_mesh(module, sc, 0, mesh) != 0) {
+        rad_scene_free(sc);
+        return -1;
+    }
+    return 0;
+}
+
+PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
+{
+    static const char *const names[] = {"surface", "area", "centroid", "normal", "reflect",
+                                        "emit"};
     rad_scene sc;
     rad_mesh mesh;
-    if (radi_py_run_scene(module, scene, mesh_obj, max_size, &sc) != 0)
+    if (mesh_of_args(module, args, kw, "O|$Od:elements", &sc, &mesh) != 0)
         return NULL;
-    if (build_mesh(module, &sc, 0, &mesh) != 0) {
-        rad_scene_free(&sc);
-        return NULL;
-    }
     PyObject *dict = PyDict_New();
     for (size_t k = 0; dict && k < sizeof names / sizeof *names; k++) {
         PyObject *col = column(&mesh, names[k]);
@@ -462,20 +471,10 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
 
 PyObject *radi_py_vertices(PyObject *module, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"scene", "mesh", "max_element_size", NULL};
-    PyObject *scene, *mesh_obj = Py_None;
-    double max_size = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$Od:vertices", kwlist, &scene, &mesh_obj,
-                                     &max_size))
-        return NULL;
     rad_scene sc;
     rad_mesh mesh;
-    if (radi_py_run_scene(module, scene, mesh_obj, max_size, &sc) != 0)
+    if (mesh_of_args(module, args, kw, "O|$Od:vertices", &sc, &mesh) != 0)
         return NULL;
-    if (build_mesh(module, &sc, 0, &mesh) != 0) {
-        rad_scene_free(&sc);
-        return NULL;
-    }
     const npy_intp dims[2] = {mesh.nvertices, 3};
     PyObject *out = PyArray_EMPTY(2, dims, NPY_FLOAT64, 0);
     if (out) {
