@@ -50,6 +50,9 @@ typedef struct rad_mesh {
  * is not a normal double: the areas are in the user's units. */
 RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
 RAD_API void rad_mesh_free(rad_mesh *mesh);
+/* Elements with rows and columns in the reported form factors: all but
+ * those of obstruction surfaces (View3D's O lines), which come last. */
+RAD_API int rad_mesh_reported(const rad_scene *scene, const rad_mesh *mesh);
 /* The vertex v (0..nverts-1) of element e. */
 RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
 /* Elements the scene's mesh specification makes (a double: it may exceed

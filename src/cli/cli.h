@@ -122,11 +122,6 @@ int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st);
 #define CLI_PROGRAM "radiosity"
 #endif
 
-/* The elements that the reported factors keep: those before the
- * obstruction surfaces' (View3D's O lines, which come after every other
- * surface, so their elements are the last), or all of them. */
-int cli_reported_elements(const rad_scene *scene, const rad_mesh *mesh);
-
 /* CLI_PROGRAM ": " + message on standard error. */
 void cli_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void cli_error_rec(const rad_error *err);

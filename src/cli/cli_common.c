@@ -328,14 +328,6 @@ int cli_ff_verdict(const cli_common *c, const rad_ff_stats *st)
     return c->strict;
 }
 
-int cli_reported_elements(const rad_scene *scene, const rad_mesh *mesh)
-{
-    int n = mesh->nelements;
-    while (n > 0 && scene->surfaces[mesh->elements[n - 1].surface].obstruction)
-        n--;
-    return n;
-}
-
 /* One line per kind of repair the reader made (OBJ). */
 static void say_repairs(const rad_scene *scene)
 {

@@ -341,7 +341,7 @@ int cmd_compare(int argc, char **argv)
     if (cli_outputs_check(o, 2) ||
         load_mesh(&a, argv[optind], &scene, &mesh, a.elements ? 4 : 3))
         return 1;
-    const int status = run(&a, argv + optind, &mesh, cli_reported_elements(&scene, &mesh), o, 2);
+    const int status = run(&a, argv + optind, &mesh, rad_mesh_reported(&scene, &mesh), o, 2);
     rad_mesh_free(&mesh);
     rad_scene_free(&scene);
     return status;

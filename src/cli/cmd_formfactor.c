@@ -195,7 +195,7 @@ int cmd_formfactor(int argc, char **argv)
         goto done;
     /* View3D's O surfaces block but have no rows or columns: the element
      * outputs keep the leading block (column-major, compacted in place) */
-    const size_t kept = surfaces ? n : (size_t)cli_reported_elements(&scene, &mesh);
+    const size_t kept = surfaces ? n : (size_t)rad_mesh_reported(&scene, &mesh);
     for (size_t j = 0; kept < n && j < kept; j++)
         for (size_t i = 0; i < kept; i++) {
             F[i + j * kept] = F[i + j * n];

@@ -136,15 +136,7 @@ static void mesh_quad(rad_mesh *m, const rad_scene *scene, int s, int *ne, int *
             idx[3] = idx[0] + (N + 1);
             for (int k = 0; k < 4; k++)
                 p[k] = m->vertices[idx[k]];
-            e->surface = s;
-            e->gi = gi;
-            e->gj = gj;
-            e->nverts = 4;
-            e->first = *ni;
-            e->normal = nrm;
-            radi_mesh_area_centroid(p, 4, nrm, &e->area, &e->centroid);
-            memcpy(e->reflect, mat->reflect, sizeof e->reflect);
-            memcpy(e->emit, mat->emit, sizeof e->emit);
+            radi_mesh_element_set(e, s, gi, gj, p, 4, *ni, nrm, mat);
             *ni += 4;
         }
 }
@@ -155,19 +147,12 @@ static void mesh_polygon(rad_mesh *m, const rad_scene *scene, int s, int *ne, in
     const rad_surface *f = &scene->surfaces[s];
     const rad_material *mat = &scene->materials[f->material];
     rad_element *e = &m->elements[(*ne)++];
-    const rad_vec3 nrm = radi_mesh_unit_normal(f->verts, f->nverts);
-    e->surface = s;
-    e->gi = e->gj = 0;
-    e->nverts = f->nverts;
-    e->first = *ni;
-    e->normal = nrm;
+    radi_mesh_element_set(e, s, 0, 0, f->verts, f->nverts, *ni,
+                          radi_mesh_unit_normal(f->verts, f->nverts), mat);
     for (int k = 0; k < f->nverts; k++) {
         m->vindex[(*ni)++] = *nv;
         m->vertices[(*nv)++] = f->verts[k];
     }
-    radi_mesh_area_centroid(f->verts, f->nverts, nrm, &e->area, &e->centroid);
-    memcpy(e->reflect, mat->reflect, sizeof e->reflect);
-    memcpy(e->emit, mat->emit, sizeof e->emit);
 }
 
 /* Every element's area must be a normal double: it is written in the
@@ -251,6 +236,14 @@ void rad_mesh_free(rad_mesh *m)
     free(m->surface_n);
     free(m->surface_m);
     memset(m, 0, sizeof *m);
+}
+
+int rad_mesh_reported(const rad_scene *scene, const rad_mesh *mesh)
+{
+    int n = mesh->nelements;
+    while (n > 0 && scene->surfaces[mesh->elements[n - 1].surface].obstruction)
+        n--;
+    return n;
 }
 
 rad_vec3 rad_mesh_vertex(const rad_mesh *m, int e, int v)

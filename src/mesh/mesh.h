@@ -76,6 +76,12 @@ void radi_mesh_fan(rad_mesh *m, const rad_scene *scene, int s, rad_vec3 nrm, int
 rad_vec3 radi_mesh_shrink(rad_vec3 p, rad_vec3 o, int e);
 rad_vec3 radi_mesh_unit_normal(const rad_vec3 *p, int n);
 
+/* Element e: (gi, gj) of surface s, its n corners p (vertex indices from
+ * vindex[first]), the surface's unit normal, its own area and centroid,
+ * the material's reflectance and emission. */
+void radi_mesh_element_set(rad_element *e, int s, int gi, int gj, const rad_vec3 *p, int n,
+                           int first, rad_vec3 nrm, const rad_material *mat);
+
 /* Area and centroid of the planar polygon p (n vertices, unit normal nrm)
  * as rad_mesh_build computes an element's. */
 void radi_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,

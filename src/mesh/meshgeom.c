@@ -9,9 +9,12 @@
 #include <config.h>
 
 #include <math.h>
+#include <string.h>
 
 #include "mesh/mesh.h"
 #include "radiosity/base.h"
+#include "radiosity/mesh.h"
+#include "radiosity/scene.h"
 #include "util/util.h"
 
 /* 2^e with 2^(e-1) <= the largest |coordinate| of p[k] - p[0] < 2^e, or 0
@@ -52,6 +55,20 @@ rad_vec3 radi_mesh_unit_normal(const rad_vec3 *p, int n)
 /* Area and centroid of a planar polygon: fan of triangles from p[0], on
  * the polygon scaled by 2^-e; the area is scaled back by 2^2e (inf or
  * subnormal when it is out of the double range: the caller refuses it). */
+void radi_mesh_element_set(rad_element *e, int s, int gi, int gj, const rad_vec3 *p, int n,
+                           int first, rad_vec3 nrm, const rad_material *mat)
+{
+    e->surface = s;
+    e->gi = gi;
+    e->gj = gj;
+    e->nverts = n;
+    e->first = first;
+    e->normal = nrm;
+    radi_mesh_area_centroid(p, n, nrm, &e->area, &e->centroid);
+    memcpy(e->reflect, mat->reflect, sizeof e->reflect);
+    memcpy(e->emit, mat->emit, sizeof e->emit);
+}
+
 void radi_mesh_area_centroid(const rad_vec3 *p, int n, rad_vec3 nrm, double *area,
                              rad_vec3 *centroid)
 {

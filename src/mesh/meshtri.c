@@ -150,15 +150,7 @@ void radi_mesh_fan(rad_mesh *m, const rad_scene *scene, int s, rad_vec3 nrm, int
                         m->vindex[*ni + k] = tri[h][k];
                         p[k] = m->vertices[tri[h][k]];
                     }
-                    e->surface = s;
-                    e->gi = t;
-                    e->gj = local++;
-                    e->nverts = 3;
-                    e->first = *ni;
-                    e->normal = nrm;
-                    radi_mesh_area_centroid(p, 3, nrm, &e->area, &e->centroid);
-                    memcpy(e->reflect, mat->reflect, sizeof e->reflect);
-                    memcpy(e->emit, mat->emit, sizeof e->emit);
+                    radi_mesh_element_set(e, s, t, local++, p, 3, *ni, nrm, mat);
                     *ni += 3;
                 }
             }

@@ -169,15 +169,6 @@ static int build_mesh(PyObject *module, const rad_scene *sc, int matrices, rad_m
     return -1;
 }
 
-/* Elements at the end that only block (View3D's O surfaces). */
-static int reported(const rad_scene *sc, const rad_mesh *mesh)
-{
-    int n = mesh->nelements;
-    while (n > 0 && sc->surfaces[mesh->elements[n - 1].surface].obstruction)
-        n--;
-    return n;
-}
-
 /* The leading k x k block of an n x n Fortran-ordered array, as a new
  * array (steals a reference to `full`). */
 static PyObject *leading_block(PyObject *full, npy_intp n, npy_intp k)
@@ -223,7 +214,7 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
         status = rad_ff_matrix(&mesh, &ff, f, e, &st, &err);
         Py_END_ALLOW_THREADS
     }
-    const int kept = reported(&sc, &mesh);
+    const int kept = rad_mesh_reported(&sc, &mesh);
     rad_mesh_free(&mesh);
     rad_scene_free(&sc);
     if (!F || (errors && !E) || PyErr_Occurred() || status != RAD_OK ||
@@ -456,7 +447,7 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
     PyObject *obstruction = dict ? PyArray_ZEROS(1, &n, NPY_BOOL, 0) : NULL;
     if (obstruction) {
         npy_bool *o = PyArray_DATA((PyArrayObject *)obstruction);
-        for (npy_intp i = reported(&sc, &mesh); i < n; i++)
+        for (npy_intp i = rad_mesh_reported(&sc, &mesh); i < n; i++)
             o[i] = 1;
     }
     if (dict && (!obstruction || PyDict_SetItemString(dict, "obstruction", obstruction) != 0))
