@@ -40,8 +40,7 @@ static void usage(FILE *out)
             "\n"
             "'radiosity COMMAND --help' describes each command.  The scene file\n"
             "format is described in radiosity-scene(5).\n"
-            "\n"
-            "Report bugs to the project's issue tracker.\n");
+            "\n" CLI_BUG_HELP);
 }
 
 /* Run subcommand fn with argv[0] = "radiosity CMD": getopt prefixes its

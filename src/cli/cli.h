@@ -61,6 +61,13 @@ enum {
     {"format", required_argument, NULL, OPT_FORMAT},              \
     {"help", no_argument, NULL, OPT_HELP}
 
+/* The last lines of every --help: where bugs go (GNU coding standards,
+ * --help).  The project publishes no address of its own. */
+#define CLI_BUG_HELP                                                             \
+    "Report bugs to the issue tracker of the repository the source came\n"     \
+    "from, with the command, the scene file and the output of --version;\n"    \
+    "README.md (installed beside the examples) says what else helps.\n"
+
 #define CLI_COMMON_HELP                                                          \
     "      --mesh NxM          mesh every quad into N x M elements, and every\n"\
     "                          triangle into max(N,M)^2 (a polygon: each of the\n"\

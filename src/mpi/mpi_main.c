@@ -68,7 +68,8 @@ static void help(void)
            "--mesh 100x100 data/goral1984-cube.scene -o cube.ply\n"
            "\n"
            "See radiosity-mpi(1) for running on a cluster.  Exit status: as for\n"
-           "'radiosity solve'.\n");
+           "'radiosity solve'.\n"
+           "\n" CLI_BUG_HELP);
 }
 
 static int check(const cli_solve *s)

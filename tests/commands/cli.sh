@@ -112,6 +112,11 @@ done
 "$RADIOSITY" -h | grep -q '^Usage: radiosity'; ok $? "-h"
 "$RADIOSITY" --version | head -n 1 | grep -q '^radiosity [0-9]'; ok $? "--version"
 "$RADIOSITY" --help | grep -q '^Usage: radiosity'; ok $? "--help"
+# where bugs go, and the README that says what to send is in the tarball
+"$RADIOSITY" --help | tail -n 3 | grep -q '^Report bugs to the issue tracker'
+ok $? "--help ends saying where to report bugs"
+grep -q '^## Reporting bugs' "${top_srcdir:-.}/README.md"
+ok $? "README.md says how to report a bug"
 "$RADIOSITY" frobnicate > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown command: exit 2"
 "$RADIOSITY" formfactor --no-such-option "$work/two.scene" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "unknown option: exit 2"
 "$RADIOSITY" formfactor --mesh 0x3 "$work/two.scene" > /dev/null 2>&1; [ $? -eq 2 ]; ok $? "bad --mesh: exit 2"

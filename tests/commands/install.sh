@@ -43,6 +43,8 @@ ok $? "rad_scene_dir() names where make install put the scenes ($(sed -n 2p "$wo
 example=$(find "$stage" -path '*/examples/solve_cube.c' | head -n 1)
 [ -n "$example" ] && ${CC:-cc} ${RADIOSITY_SANITIZE-} -o "$work/installed_example" "$example" $flags 2> "$work/cc.err"
 ok $? "the example is installed (${example#"$stage"}) and builds $(head -c 300 "$work/cc.err")"
+[ -n "$example" ] && grep -q '^## Reporting bugs' "$(dirname "$(dirname "$example")")/README.md"
+ok $? "README.md, which --help names for bug reports, is installed beside the examples"
 so=$(ls "$libdir"/libradiosity.so.* | head -n 1)
 nm -D --defined-only "$so" | awk '$2 != "A" { print $3 }' | sort -u > "$work/exported"
 incdir=$(pkg-config --variable=includedir radiosity)
