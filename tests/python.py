@@ -278,6 +278,46 @@ class Binding(unittest.TestCase):
         with self.assertRaises(ValueError):
             radiosity.solve(sheet, crease=30)
 
+    def test_crease_obj(self):
+        """an OBJ model is smoothed across the faces of one object by default, never across objects"""
+        # a floor of two unit squares (two triangles each) side by side under
+        # a lamp; the squares share their edge x = 1 (vertices 2 and 5)
+        def model(second):
+            return ("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+                    "v 0 0 1\nv 0 1 1\nv 2 1 1\nv 2 0 1\n"
+                    "o a\nusemtl w\nf 1 2 3\nf 1 3 4\n" + second + "usemtl w\nf 2 5 6\nf 2 6 3\n"
+                    "o lamp\nusemtl l\nf 7 8 9 10\n")
+        with open(self.path("m.mtl"), "w") as f:
+            f.write("newmtl w\nKd 0.5 0.5 0.5\nnewmtl l\nKd 0 0 0\nKe 1 1 1\n")
+        for second, joined in (("", True), ("o b\n", False)):
+            path = self.path("m.obj")
+            with open(path, "w") as f:
+                f.write(model(second))
+            s = radiosity.load_scene(path)
+            v = radiosity.vertices(s, mesh=(4, 4))
+            n = radiosity.elements(s, mesh=(4, 4))
+            surf = np.empty(len(v), int)
+            for e, c in enumerate(n["corners"]):
+                surf[c] = n["surface"][e]
+            _, Bv = radiosity.solve(s, mesh=(4, 4), vertices=True)
+            _, Bv0 = radiosity.solve(s, mesh=(4, 4), vertices=True, crease=0)
+            # the copies of each point of the shared edge x = 1, z = 0: one on
+            # a surface of the first square (0, 1), one of the second (2, 3)
+            on_edge = np.flatnonzero((np.abs(v[:, 0] - 1) < 1e-12) & (v[:, 2] == 0))
+            pairs = [(i, j) for i in on_edge for j in on_edge
+                     if surf[i] < 2 <= surf[j] and np.allclose(v[i], v[j], atol=1e-12)]
+            self.assertGreaterEqual(len(pairs), 5)
+            # unsmoothed, the two sides differ (each extrapolates its own elements)
+            self.assertTrue(any(not np.array_equal(Bv0[i], Bv0[j]) for i, j in pairs))
+            same = all(np.array_equal(Bv[i], Bv[j]) for i, j in pairs)
+            self.assertEqual(same, joined, "one object" if joined else "two objects")
+            # inside each square its two triangles always meet smoothly
+            diag = [(i, j) for i in range(len(v)) for j in range(len(v))
+                    if surf[i] == 0 and surf[j] == 1 and np.allclose(v[i], v[j], atol=1e-12)]
+            self.assertTrue(diag and all(np.array_equal(Bv[i], Bv[j]) for i, j in diag))
+        with self.assertRaises(TypeError):
+            radiosity.solve(s, vertices=True, crease=True)
+
     # ---- the solve -----------------------------------------------------------
     def test_furnace(self):
         """furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) of F's row sums"""

@@ -41,11 +41,17 @@ typedef struct rad_pipeline_options {
     rad_vertex_rule vertex_rule;  /* how boundary vertices are smoothed
                                      (default: extrapolate) */
     double crease;              /* degrees: smooth vertex radiosity across
-                                   surfaces of one material meeting at less
-                                   (rad_smooth_across); 0: never (default);
-                                   not with adaptive subdivision, whose
-                                   hanging vertices follow their edges */
+                                   surfaces of one object and material
+                                   meeting at less (rad_smooth_across); 0:
+                                   never; RAD_CREASE_AUTO (the default):
+                                   the scene's rad_crease_default.  Not
+                                   with adaptive subdivision, whose hanging
+                                   vertices follow their edges (AUTO is 0
+                                   there) */
 } rad_pipeline_options;
+
+/* rad_pipeline_options.crease: what the scene's format implies. */
+#define RAD_CREASE_AUTO (-1.0)
 
 RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);
 

@@ -83,6 +83,16 @@ typedef struct rad_scene_repairs {
 /* The material given to faces whose material is undefined. */
 #define RAD_DEFAULT_GREY "(default grey 0.5)"
 
+/* The formats a scene may be read in; AUTO picks by the name's ending as
+ * rad_scene_load does ("-" and other names: the native format). */
+typedef enum rad_scene_format {
+    RAD_SCENE_FORMAT_AUTO = 0,
+    RAD_SCENE_FORMAT_SCENE,     /* radiosity-scene(5) */
+    RAD_SCENE_FORMAT_OBJ,       /* Wavefront OBJ + MTL (mtllib relative to the
+                                   file, to the current folder for "-") */
+    RAD_SCENE_FORMAT_VS3        /* View3D 3.x input */
+} rad_scene_format;
+
 typedef struct rad_scene {
     char *filename;
     rad_material *materials;
@@ -93,6 +103,7 @@ typedef struct rad_scene {
     int nobjects;
     rad_camera camera;
     rad_scene_repairs repairs;  /* all 0 for the native format and View3D's */
+    rad_scene_format format;    /* what it was read as (never AUTO once read) */
 } rad_scene;
 
 /* Parse a scene file (format: radiosity-scene(5)).  "-" reads standard
@@ -101,15 +112,6 @@ typedef struct rad_scene {
  * case-insensitive; radiosity-scene(5) says what they map to).  On
  * failure *scene is left empty and err says FILE:LINE: why. */
 RAD_API rad_status rad_scene_load(rad_scene *scene, const char *path, rad_error *err);
-/* The formats a scene may be read in; AUTO picks by the name's ending as
- * rad_scene_load does ("-" and other names: the native format). */
-typedef enum rad_scene_format {
-    RAD_SCENE_FORMAT_AUTO = 0,
-    RAD_SCENE_FORMAT_SCENE,     /* radiosity-scene(5) */
-    RAD_SCENE_FORMAT_OBJ,       /* Wavefront OBJ + MTL (mtllib relative to the
-                                   file, to the current folder for "-") */
-    RAD_SCENE_FORMAT_VS3        /* View3D 3.x input */
-} rad_scene_format;
 /* rad_scene_load in a given format, whatever the name (standard input,
  * a file with another ending).  An OBJ file is read as mainstream
  * importers read it, its repairs counted in scene->repairs; with

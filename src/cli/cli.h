@@ -242,7 +242,8 @@ typedef struct cli_solve {
     rad_pipeline_fn pipeline;   /* NULL: rad_pipeline_run (radiosity-mpi
                                    sets its distributed one) */
     rad_vertex_rule vertex_rule;  /* --vertex-rule */
-    double crease;              /* --crease DEG, 0: never across surfaces */
+    double crease;              /* --crease DEG, 0: never across surfaces;
+                                   RAD_CREASE_AUTO when not given */
     int given_adaptive_option;  /* --subdivide-threshold, --max-depth or
                                    --subdivide-test */
 } cli_solve;
@@ -339,10 +340,11 @@ typedef struct cli_solve {
     "                          or corner ((vertex + nearest interior vertex)/2\n"\
     "                          = mean of the elements at the vertex)\n"         \
     "      --crease DEG        smooth vertex radiosity across surfaces of one\n"\
-    "                          material that meet at a point with normals\n"   \
-    "                          less than DEG degrees apart (the faces of a\n"  \
-    "                          model; default 0: never across surfaces; not\n" \
-    "                          with --adaptive)\n"
+    "                          object and material that meet at a point with\n"\
+    "                          normals less than DEG degrees apart (default:\n"\
+    "                          30 for an OBJ model, whose faces are parts of\n"\
+    "                          one shape, 0 (never) for scene and .vs3 files;\n"\
+    "                          not with --adaptive)\n"
 
 /* One run of the pipeline (pipeline.h) as a command sees it. */
 typedef struct cli_run {

@@ -32,6 +32,7 @@ void cli_solve_init(cli_solve *s)
     memset(s, 0, sizeof *s);
     cli_common_init(&s->common);
     rad_solve_options_init(&s->solve);
+    s->crease = RAD_CREASE_AUTO;
 }
 
 int cli_solve_option(cli_solve *s, int opt, const char *arg)

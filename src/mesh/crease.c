@@ -8,11 +8,18 @@
  * many triangles, each its own surface, and shading that stops at every
  * triangle's edge shows the facets.  Renderers smooth across faces whose
  * normals differ by less than a crease angle (Gouraud 1971; the "auto
- * smooth" angle of modelling tools).  Here: mesh vertices at one point
- * on surfaces of the same material (reflectance and emission) whose unit
- * normals make an angle of less than the crease angle (so never the two
- * sides of a sheet) take the mean of their values, each weighted by the
- * area of its surface's elements that meet there.  One point: the same
+ * smooth" angle of modelling tools, 30 degrees in Blender).  Here: mesh
+ * vertices at one point on surfaces of one object (the scene's `object`,
+ * an OBJ file's o or g; the surfaces outside every object are one more),
+ * of the same material (reflectance and emission), whose unit normals
+ * make an angle of less than the crease angle (so never the two sides of
+ * a sheet) take the mean of their values, each weighted by the area of
+ * its surface's elements that meet there.  Faces of one OBJ object that
+ * share a vertex meet at its point, so they are smoothed across; so are
+ * faces of the object that touch without sharing one (a vertex written
+ * twice), as a modelling tool's "merge by distance" would join them.
+ * Separate objects never mix: a box standing on a floor of its colour
+ * keeps its own edge.  One point: the same
  * cell of a grid 2^-30 of the scene's size, far above the rounding of a
  * point computed along an edge from either end (an ulp) and far below any
  * element (a point within a few ulps of a cell's side may fall on the
@@ -51,12 +58,14 @@ static int same_point(const vkey *a, const vkey *b)
 }
 
 /* May surfaces a and b (their first elements) be smoothed across: one
- * material, normals less than the crease angle apart? */
-static int smooth_pair(const rad_mesh *m, int a, int b, double cos_crease)
+ * object, one material, normals less than the crease angle apart? */
+static int smooth_pair(const rad_scene *scene, const rad_mesh *m, int a, int b,
+                       double cos_crease)
 {
     const rad_element *x = &m->elements[m->surface_first[a]];
     const rad_element *y = &m->elements[m->surface_first[b]];
-    return v3_dot(x->normal, y->normal) > cos_crease &&
+    return scene->surfaces[a].object == scene->surfaces[b].object &&
+           v3_dot(x->normal, y->normal) > cos_crease &&
            memcmp(x->reflect, y->reflect, sizeof x->reflect) == 0 &&
            memcmp(x->emit, y->emit, sizeof x->emit) == 0;
 }
@@ -85,11 +94,19 @@ static size_t make_keys(const rad_mesh *m, vkey *key)
     return n;
 }
 
-rad_status rad_smooth_across(const rad_mesh *m, double crease_degrees, double *Bv,
-                             rad_error *err)
+double rad_crease_default(const rad_scene *scene)
+{
+    return scene->format == RAD_SCENE_FORMAT_OBJ ? RAD_CREASE_OBJ : 0;
+}
+
+rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *m, double crease_degrees,
+                             double *Bv, rad_error *err)
 {
     if (!(crease_degrees > 0) || m->nvertices == 0)
         return RAD_OK;
+    if (m->nsurfaces != scene->nsurfaces)
+        return radi_fail(err, RAD_ERR_INVALID, "a mesh of %d surfaces smoothed with a scene "
+                                               "of %d", m->nsurfaces, scene->nsurfaces);
     const size_t nv = (size_t)m->nvertices;
     const double cos_crease = cos(fmin(crease_degrees, 180) * M_PI / 180);
     vkey *key = malloc(sizeof *key * nv);
@@ -112,7 +129,7 @@ rad_status rad_smooth_across(const rad_mesh *m, double crease_degrees, double *B
         for (size_t i = g; h - g > 1 && i < h; i++) {
             double sum[RAD_BANDS] = {0}, wsum = 0;
             for (size_t j = g; j < h; j++) {
-                if (j != i && !smooth_pair(m, key[i].surface, key[j].surface, cos_crease))
+                if (j != i && !smooth_pair(scene, m, key[i].surface, key[j].surface, cos_crease))
                     continue;
                 wsum += w[key[j].v];
                 for (int b = 0; b < RAD_BANDS; b++)

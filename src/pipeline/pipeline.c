@@ -38,6 +38,7 @@ void rad_pipeline_options_init(rad_pipeline_options *opt)
     memset(opt, 0, sizeof *opt);
     rad_ff_options_init(&opt->ff);
     rad_solve_options_init(&opt->solve);
+    opt->crease = RAD_CREASE_AUTO;
 }
 
 const char *rad_matrix_name(int mode)
@@ -139,21 +140,22 @@ static rad_status allocate(rad_result *r, rad_error *err)
 }
 
 /* Smooth B and count its negative values (a solved run). */
-static rad_status finish(rad_result *r, const rad_pipeline_options *opt, double t_solved,
-                         rad_error *err)
+static rad_status finish(const rad_scene *scene, rad_result *r,
+                         const rad_pipeline_options *opt, double t_solved, rad_error *err)
 {
+    const double crease = opt->crease < 0 ? rad_crease_default(scene) : opt->crease;
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
     rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-    rad_status st = rad_smooth_across(&r->mesh, opt->crease, r->Bv, err);
+    rad_status st = rad_smooth_across(scene, &r->mesh, crease, r->Bv, err);
     r->t_smooth = radi_seconds() - t_solved;
     return st;
 }
 
 /* --matrix none: the form factors are computed inside the solve, shot by
  * shot (solvefree.h); their statistics come with the solve. */
-static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt, double t1,
-                                  rad_error *err)
+static rad_status run_matrix_free(const rad_scene *scene, rad_result *r,
+                                  const rad_pipeline_options *opt, double t1, rad_error *err)
 {
     rad_solve_options so = opt->solve;
     if (!so.progress) {
@@ -165,7 +167,7 @@ static rad_status run_matrix_free(rad_result *r, const rad_pipeline_options *opt
     r->t_solve = t3 - t1;
     r->ff_done = r->solve_done = 1;
     if (st == RAD_OK)
-        st = finish(r, opt, t3, err);
+        st = finish(scene, r, opt, t3, err);
     return st;
 }
 
@@ -249,7 +251,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     if (st == RAD_OK && opt->solve.adaptive)
         return run_adaptive(r, opt, t1, err);
     if (st == RAD_OK && r->matrix == RAD_MATRIX_NONE)
-        return run_matrix_free(r, opt, t1, err);
+        return run_matrix_free(scene, r, opt, t1, err);
     if (st == RAD_OK)
         st = rad_ff_matrix(&r->mesh, &opt->ff, r->F, NULL, &r->ff, err);
     double t2 = radi_seconds();
@@ -268,7 +270,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
     r->t_solve = t3 - t2;
     r->solve_done = 1;
     if (st == RAD_OK)
-        st = finish(r, opt, t3, err);
+        st = finish(scene, r, opt, t3, err);
     if (!opt->keep_form_factors) {
         free(r->F);
         r->F = NULL;

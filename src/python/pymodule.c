@@ -41,7 +41,7 @@ PyDoc_STRVAR(solve_doc,
 "solve(scene, *, mesh=None, accuracy='default', solver=None, bounces=None,\n"
 "      quadrature=3, method='contour', resolution=64, threads=0,\n"
 "      strict=False, progress=None, vertices=False, max_element_size=0,\n"
-"      crease=0)\n"
+"      crease=None)\n"
 "      -> numpy.ndarray\n\n"
 "Mesh, form factors and the radiosity system (Goral et al. 1984, eq. 5)\n"
 "band by band: B as an n x 3 float64 array, row i the radiosity of element\n"
@@ -49,9 +49,10 @@ PyDoc_STRVAR(solve_doc,
 "'jacobi', 'gauss-seidel', 'cg' or 'progressive'; bounces=K gives exactly K\n"
 "reflections instead.  vertices=True returns (B, Bv), Bv the radiosity\n"
 "smoothed to each vertex of vertices(scene, mesh=...) (Goral et al. 1984,\n"
-"section 3); crease=DEG smooths Bv across surfaces of one material whose\n"
-"normals are less than DEG degrees apart where they meet (a model's\n"
-"faces).  Raises radiosity.Error on a singular system or an unmet\n"
+"section 3); crease=DEG smooths Bv across surfaces of one object and\n"
+"material whose normals are less than DEG degrees apart where they meet\n"
+"(None: 30 for an OBJ model, whose faces are parts of one shape, 0 for\n"
+"the other formats; 0: never).  Raises radiosity.Error on a singular system or an unmet\n"
 "promise with strict=True.");
 
 PyDoc_STRVAR(elements_doc,

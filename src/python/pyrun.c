@@ -332,14 +332,24 @@ PyObject *radi_py_solve(PyObject *module, PyObject *args, PyObject *kw)
     const char *solver = NULL; /* gauss, unless bounces are asked for */
     PyObject *bounces = Py_None;
     int vertices = 0;
-    double crease = 0;
+    PyObject *crease_arg = Py_None;
+    double crease = RAD_CREASE_AUTO; /* None: the scene's format decides */
     run_args_init(&a);
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOpdd:solve", kwlist, &a.scene,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OszOisiipOpdO:solve", kwlist, &a.scene,
                                      &a.mesh, &a.accuracy, &solver, &bounces, &a.quadrature,
                                      &a.method, &a.resolution, &a.threads, &a.strict,
-                                     &a.progress, &vertices, &a.max_size, &crease))
+                                     &a.progress, &vertices, &a.max_size, &crease_arg))
         return NULL;
-    if (!(crease >= 0 && crease <= 180) || (crease > 0 && !vertices)) {
+    if (crease_arg != Py_None) {
+        if (PyBool_Check(crease_arg)) {
+            PyErr_SetString(PyExc_TypeError, "crease is an angle in degrees, not a bool");
+            return NULL;
+        }
+        crease = PyFloat_AsDouble(crease_arg);
+        if (crease == -1 && PyErr_Occurred())
+            return NULL;
+    }
+    if (crease_arg != Py_None && (!(crease >= 0 && crease <= 180) || (crease > 0 && !vertices))) {
         PyErr_SetString(PyExc_ValueError, crease > 0 && crease <= 180
                                               ? "crease smooths the vertex radiosity: ask for "
                                                 "it with vertices=True"

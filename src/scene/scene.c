@@ -491,14 +491,22 @@ static char comment_of(scene_format f)
 static rad_status read_format(rad_scene *scene, rad_lines *r, const char *name,
                               scene_format f, unsigned flags)
 {
+    rad_status st;
     switch (f) {
     case FORMAT_OBJ:
-        return radi_obj_read(scene, r, NULL, 0, flags);
+        st = radi_obj_read(scene, r, NULL, 0, flags);
+        break;
     case FORMAT_VS3:
-        return radi_vs3_read(scene, r);
+        st = radi_vs3_read(scene, r);
+        break;
     default:
-        return parse_lines(scene, r, name);
+        st = parse_lines(scene, r, name);
     }
+    if (st == RAD_OK)
+        scene->format = f == FORMAT_OBJ   ? RAD_SCENE_FORMAT_OBJ
+                        : f == FORMAT_VS3 ? RAD_SCENE_FORMAT_VS3
+                                          : RAD_SCENE_FORMAT_SCENE;
+    return st;
 }
 
 rad_status rad_scene_parse(rad_scene *scene, const char *text, size_t len,

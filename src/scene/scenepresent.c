@@ -50,6 +50,7 @@ rad_status rad_scene_present_copy(const rad_scene *in, const unsigned char *pres
 {
     memset(out, 0, sizeof *out);
     out->camera = in->camera;
+    out->format = in->format;
     out->filename = strdup(in->filename ? in->filename : "-");
     out->materials = dup_bytes(in->materials, sizeof *in->materials * (size_t)in->nmaterials);
     out->objects = dup_bytes(in->objects, sizeof *in->objects * (size_t)in->nobjects);

@@ -51,6 +51,50 @@ awk -v q0="$q0" -v q1="$q1" -v q2="$q2" -v t0="$t0" -v t1="$t1" 'function abs(x)
       4 / 3 * abs(q0 - q1), 4 / 3 * abs(q1 - q2) > "/dev/stderr"
     exit !(e0 <= 4 / 3 * abs(q0 - q1) && e1 <= 4 / 3 * abs(q1 - q2) && e0 >= 3 * e1) }' 2> "$work/why"
 ok $? "triangles converge to the quads' limit within the quads' own error, at second order: $(cat "$work/why")"
+# ---- the room as a modelling tool exports it: OBJ, 8 shared vertices ---------
+cat > "$work/room.mtl" <<'END'
+newmtl w
+Kd 0.5 0.5 0.5
+newmtl l
+Kd 0.2 0.2 0.2
+Ke 1 1 1
+END
+awk 'BEGIN { print "mtllib room.mtl"; print "o room" }
+  $1 == "quad" { for (k = 0; k < 4; k++) { p = $(3 + 3 * k) " " $(4 + 3 * k) " " $(5 + 3 * k)
+                   if (!(p in id)) { id[p] = ++n; print "v " p }; c[k] = id[p] }
+                 printf "usemtl %s\nf %d %d %d\nf %d %d %d\n", $2, c[0], c[1], c[2], c[0], c[2], c[3] }' \
+  "$work/quads.scene" > "$work/room.obj"
+o0=$(floor_b "$work/room.obj" --max-element-size 0.25)
+awk -v a="$o0" -v b="$t0" 'BEGIN { d = a - b; exit !(a != "" && d * d <= 1e-24) }'
+ok $? "the OBJ room's floor B is the triangle scene's ($o0, $t0): the same faces"
+# It renders smooth: the quads' picture is continuous (their elements share
+# vertices, Gouraud-shaded), so its largest step between neighbouring
+# pixels across the back wall is the field's own slope; the OBJ room's two
+# triangles per wall, smoothed across their diagonal by default (one
+# object, one material, coplanar), must stay within twice that.  Without
+# smoothing (--crease 0) the diagonal is a visible step, which the same
+# measure must catch.  Camera inside the room, the scanline across the
+# back wall (y = 1) and its diagonal; columns 160-350 are that wall.
+cam="--eye 0.5,0.02,0.5 --at 0.5,1,0.4 --up 0,0,1 --fov 100 --scanline 256"
+step() { # step SCENE OPTIONS...: the largest red step between neighbouring pixels on the wall
+  s=$1; shift
+  "$RADIOSITY" render -q "$s" $cam --max-element-size 0.125 "$@" -o "$work/p.png" \
+    --profile "$work/p.tsv" 2> "$work/err" &&
+    awk -F '\t' 'NR > 2 && $1 >= 160 && $1 <= 350 { d = $2 - p; if (d < 0) d = -d; if (d > m) m = d }
+      NR > 1 { p = $2 } END { printf "%.3g\n", m }' "$work/p.tsv"
+}
+sq=$(step "$work/quads.scene"); so=$(step "$work/room.obj"); s0=$(step "$work/room.obj" --crease 0)
+awk -v q="$sq" -v o="$so" 'BEGIN { exit !(q > 0 && o <= 2 * q) }'
+ok $? "the OBJ room renders smooth: largest step $so, the quads' $sq $(head -c 200 "$work/err")"
+awk -v q="$sq" -v o="$s0" 'BEGIN { exit !(q > 0 && o > 4 * q) }'
+ok $? "with --crease 0 its triangles' diagonal shows: step $s0 against the quads' $sq"
+# one object only: the same room with its back wall a separate object keeps
+# the diagonal smooth (both triangles in it) but not its edges with the floor
+awk '/^f 4 3 7$/ { print "o back" } { print }' "$work/room.obj" > "$work/room2.obj"
+s2=$(step "$work/room2.obj")
+awk -v q="$sq" -v o="$s2" 'BEGIN { exit !(q > 0 && o <= 2 * q) }'
+ok $? "a wall that is its own object is smooth inside: step $s2"
+
 # --crease: accepted from 0 to 180 degrees
 "$RADIOSITY" solve -q --crease 30 --max-element-size 0.5 -o "$work/c.ply" "$work/tris.scene" 2> "$work/err"
 ok $? "solve --crease 30 runs on the room of triangles $(head -c 120 "$work/err")"
