@@ -286,6 +286,8 @@ static void plot_title(const render_args *a, const cli_solve *s, char *buf, size
     if (k > 0 && (size_t)k < n && s->common.mesh_n > 0)
         k += snprintf(buf + k, n - (size_t)k, ", mesh %dx%d", s->common.mesh_n,
                       s->common.mesh_m);
+    if (k > 0 && (size_t)k < n && s->common.max_size > 0)
+        k += snprintf(buf + k, n - (size_t)k, ", elements <= %g", s->common.max_size);
     if (k > 0 && (size_t)k < n && s->solve.bounces >= 0 && !ends_with_ply(a->input))
         snprintf(buf + k, n - (size_t)k, ", %d bounce%s", s->solve.bounces,
                  s->solve.bounces == 1 ? "" : "s");
