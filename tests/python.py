@@ -318,6 +318,41 @@ class Binding(unittest.TestCase):
         with self.assertRaises(TypeError):
             radiosity.solve(s, vertices=True, crease=True)
 
+    def test_crease_edges(self):
+        """faces cut into different parts along a shared edge meet without a step"""
+        # two floor triangles share the edge y = 0 from x = 0 to 1; at
+        # max_element_size 0.5 the first is cut in 2 parts per edge, the
+        # second in 4 (nested: its extra points are hanging) or in 7 (not
+        # nested: only the ends are common)
+        for apex, parts in (("0.5 -1.8 0", 4), ("0.5 -3 0", 7)):
+            s = radiosity.load_scene(
+                "material w reflect 0.5\nmaterial l reflect 0 emit 1\n"
+                "polygon w 3  0 0 0  1 0 0  0.5 0.3 0\npolygon w 3  1 0 0  0 0 0  " + apex + "\n"
+                "quad l  -1 -4 2  -1 2 2  2 2 2  2 -4 2\n")
+            v = radiosity.vertices(s, max_element_size=0.5)
+            n = radiosity.elements(s, max_element_size=0.5)
+            surf = np.empty(len(v), int)
+            for e, c in enumerate(n["corners"]):
+                surf[c] = n["surface"][e]
+            edge = np.flatnonzero((np.abs(v[:, 1]) < 1e-12) & (v[:, 2] == 0) & (surf < 2))
+            self.assertEqual(len(edge), 3 + parts + 1)
+            _, Bv0 = radiosity.solve(s, max_element_size=0.5, vertices=True, crease=0)
+            _, Bv = radiosity.solve(s, max_element_size=0.5, vertices=True, crease=30)
+            x = v[edge, 0]
+
+            def along(B, side):
+                """side's values along the edge as a function of x (its own points, linear)"""
+                k = edge[surf[edge] == side]
+                order = np.argsort(v[k, 0])
+                return lambda q: np.interp(q, v[k[order], 0], B[k[order], 0])
+            # unsmoothed, the two sides disagree somewhere along the edge
+            self.assertGreater(np.max(np.abs(along(Bv0, 0)(x) - along(Bv0, 1)(x))), 1e-4)
+            # smoothed, they agree at every point of either side (to rounding)
+            self.assertLess(np.max(np.abs(along(Bv, 0)(x) - along(Bv, 1)(x))), 1e-15)
+            if parts == 4:  # nested: the coarse side's middle point keeps its merged value
+                mid = edge[(surf[edge] == 0) & (np.abs(x - 0.5) < 1e-12)]
+                self.assertNotAlmostEqual(Bv[mid[0], 0], (along(Bv, 0)(0) + along(Bv, 0)(1)) / 2, 12)
+
     # ---- the solve -----------------------------------------------------------
     def test_furnace(self):
         """furnace: B = E / (1 - rho) per band, within rho delta / (1 - rho) of F's row sums"""

@@ -19,7 +19,10 @@
  * faces of the object that touch without sharing one (a vertex written
  * twice), as a modelling tool's "merge by distance" would join them.
  * Separate objects never mix: a box standing on a floor of its colour
- * keeps its own edge.  One point: the same
+ * keeps its own edge.  Where two such surfaces share an edge cut into different
+ * parts (--max-element-size cuts each face by its own size), the points
+ * one side lacks then follow the points both have (creaseedge.c), so the
+ * two sides agree all along the edge.  One point: the same
  * cell of a grid 2^-30 of the scene's size, far above the rounding of a
  * point computed along an edge from either end (an ulp) and far below any
  * element (a point within a few ulps of a cell's side may fall on the
@@ -124,12 +127,13 @@ static void mean_all(const vkey *key, size_t k, const double *w, const double *B
 
 /* The keys of the vertices of surfaces with elements and finite points;
  * returns how many. */
-static size_t make_keys(const rad_mesh *m, vkey *key)
+static size_t make_keys(const rad_mesh *m, vkey *key, double *cell_out)
 {
     rad_vec3 lo, hi;
     v3_bounds(m->vertices, m->nvertices, &lo, &hi);
     const double size = v3_maxabs(v3_sub(hi, lo));
     const double cell = size > 0 && isfinite(size) ? ldexp(size, -30) : 1;
+    *cell_out = cell;
     size_t n = 0;
     for (int s = 0; s < m->nsurfaces; s++) {
         if (m->surface_first[s + 1] == m->surface_first[s])
@@ -149,6 +153,81 @@ static size_t make_keys(const rad_mesh *m, vkey *key)
 double rad_crease_default(const rad_scene *scene)
 {
     return scene->format == RAD_SCENE_FORMAT_OBJ ? RAD_CREASE_OBJ : 0;
+}
+
+typedef struct join_ctx {
+    const rad_scene *scene;
+    const rad_mesh *m;
+    double cos_crease;
+} join_ctx;
+
+static int may_join(const void *ctx, int s, int t)
+{
+    const join_ctx *j = ctx;
+    return smooth_pair(j->scene, j->m, s, t, j->cos_crease);
+}
+
+/* The values at each point (sorted keys [0, nk)) merged into out. */
+static void merge_points(const rad_scene *scene, const rad_mesh *m, const vkey *key, size_t nk,
+                         double cos_crease, const double *w, const double *Bv, double *out)
+{
+    const size_t nv = (size_t)m->nvertices;
+    for (size_t g = 0, h; g < nk; g = h) {
+        for (h = g + 1; h < nk && same_point(&key[g], &key[h]); h++)
+            ; /* [g, h): one point */
+        if (h - g > 2 && all_pairs(scene, m, key + g, h - g, cos_crease)) {
+            mean_all(key + g, h - g, w, Bv, nv, out);
+            continue;
+        }
+        for (size_t i = g; h - g > 1 && i < h; i++) {
+            double sum[RAD_BANDS] = {0}, wsum = 0;
+            for (size_t j = g; j < h; j++) {
+                if (j != i && !smooth_pair(scene, m, key[i].surface, key[j].surface, cos_crease))
+                    continue;
+                wsum += w[key[j].v];
+                for (int b = 0; b < RAD_BANDS; b++)
+                    sum[b] += w[key[j].v] * Bv[(size_t)key[j].v + (size_t)b * nv];
+            }
+            for (int b = 0; wsum > 0 && b < RAD_BANDS; b++)
+                out[(size_t)key[i].v + (size_t)b * nv] = sum[b] / wsum;
+        }
+    }
+}
+
+/* creaseedge.c on the points of the sorted keys: hanging points of edges
+ * that two surfaces cut differently follow the points both have.  The
+ * tolerance, 4 cells, is well above the rounding of a point computed
+ * from either end of its edge and far below any element. */
+static rad_status follow_edges(const rad_scene *scene, const rad_mesh *m, const vkey *key,
+                               size_t nk, double cos_crease, double cell, double *out,
+                               rad_error *err)
+{
+    const size_t nv = (size_t)m->nvertices;
+    int *point_of = malloc(sizeof *point_of * nv), *surface = malloc(sizeof *surface * (nk + 1));
+    size_t *first = malloc(sizeof *first * (nk + 1));
+    rad_status st = RAD_OK;
+    if (!point_of || !surface || !first) {
+        st = radi_fail(err, RAD_ERR_NOMEM, "out of memory to smooth %zu vertices", nv);
+        goto done;
+    }
+    for (size_t v = 0; v < nv; v++)
+        point_of[v] = -1;
+    size_t np = 0;
+    for (size_t g = 0; g < nk; g++) {
+        if (g == 0 || !same_point(&key[g - 1], &key[g]))
+            first[np++] = g;
+        point_of[key[g].v] = (int)(np - 1);
+        surface[g] = key[g].surface;
+    }
+    first[np] = nk;
+    const join_ctx ctx = {scene, m, cos_crease};
+    const radi_crease_points cp = {point_of, first, surface, may_join, &ctx};
+    st = radi_crease_edges(m, &cp, 4 * cell, out, err);
+done:
+    free(point_of);
+    free(surface);
+    free(first);
+    return st;
 }
 
 rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *m, double crease_degrees,
@@ -172,32 +251,16 @@ rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *m, double c
     for (int e = 0; e < m->nelements; e++) /* each vertex's weight: its elements' area */
         for (int k = 0; k < m->elements[e].nverts; k++)
             w[m->vindex[m->elements[e].first + k]] += m->elements[e].area;
-    const size_t nk = make_keys(m, key);
+    double cell;
+    const size_t nk = make_keys(m, key, &cell);
     qsort(key, nk, sizeof *key, by_point);
     memcpy(out, Bv, sizeof *out * nv * RAD_BANDS);
-    for (size_t g = 0, h; g < nk; g = h) {
-        for (h = g + 1; h < nk && same_point(&key[g], &key[h]); h++)
-            ; /* [g, h): one point */
-        if (h - g > 2 && all_pairs(scene, m, key + g, h - g, cos_crease)) {
-            mean_all(key + g, h - g, w, Bv, nv, out);
-            continue;
-        }
-        for (size_t i = g; h - g > 1 && i < h; i++) {
-            double sum[RAD_BANDS] = {0}, wsum = 0;
-            for (size_t j = g; j < h; j++) {
-                if (j != i && !smooth_pair(scene, m, key[i].surface, key[j].surface, cos_crease))
-                    continue;
-                wsum += w[key[j].v];
-                for (int b = 0; b < RAD_BANDS; b++)
-                    sum[b] += w[key[j].v] * Bv[(size_t)key[j].v + (size_t)b * nv];
-            }
-            for (int b = 0; wsum > 0 && b < RAD_BANDS; b++)
-                out[(size_t)key[i].v + (size_t)b * nv] = sum[b] / wsum;
-        }
-    }
-    memcpy(Bv, out, sizeof *out * nv * RAD_BANDS);
+    merge_points(scene, m, key, nk, cos_crease, w, Bv, out);
+    rad_status st = follow_edges(scene, m, key, nk, cos_crease, cell, out, err);
+    if (st == RAD_OK)
+        memcpy(Bv, out, sizeof *out * nv * RAD_BANDS);
     free(key);
     free(w);
     free(out);
-    return RAD_OK;
+    return st;
 }

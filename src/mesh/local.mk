@@ -4,6 +4,7 @@
 
 src_libradcore_la_SOURCES += \
 	%reldir%/crease.c \
+	%reldir%/creaseedge.c \
 	%reldir%/mesh.c %reldir%/mesh.h \
 	%reldir%/meshgeom.c \
 	%reldir%/meshtri.c \

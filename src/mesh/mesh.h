@@ -65,6 +65,21 @@ int radi_mesh_is_fan(const rad_mesh *m, int s);
  * returns their count (out may be NULL to ask it). */
 int radi_mesh_outline(const rad_mesh *m, int s, rad_vec3 *out);
 
+/* creaseedge.c: the points where crease.c found vertices of several
+ * surfaces, and whether two surfaces may be smoothed across; then, on
+ * each outline edge, the points one side has and the other lacks take
+ * the interpolation of the points both have (tol: the distance within
+ * which a vertex lies on an edge) */
+typedef struct radi_crease_points {
+    const int *point_of;        /* per vertex: its point, -1: none */
+    const size_t *first;        /* point p's members: [first[p], first[p+1]) */
+    const int *surface;         /* each member's surface */
+    int (*may_join)(const void *ctx, int s, int t);
+    const void *ctx;
+} radi_crease_points;
+rad_status radi_crease_edges(const rad_mesh *m, const radi_crease_points *cp, double tol,
+                             double *out, rad_error *err);
+
 /* meshtri.c: a K-gon cut into triangles with n > 1 parts per edge (its
  * surface_n is n, its surface_m 0) */
 void radi_mesh_fan_count(int K, int n, size_t *ne, size_t *nv);
