@@ -46,6 +46,9 @@ typedef struct rad_surface {
     int obstruction;            /* 1: blocks the view but is left out of the
                                    reported form factors (View3D's O lines,
                                    which come after every other surface) */
+    int combine;                /* index of the earlier surface whose row this
+                                   one's factors join in the reported form
+                                   factors (View3D's CMB); -1: its own row */
 } rad_surface;
 
 /* A named group of surfaces that a change may move, add or remove (the

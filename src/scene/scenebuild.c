@@ -190,6 +190,7 @@ rad_status radi_build_add_surface(rad_scene_build *b, int line, rad_surface_kind
     f->mesh_n = mesh_n;
     f->mesh_m = mesh_m;
     f->line = line;
+    f->combine = -1;
     return RAD_OK;
 }
 

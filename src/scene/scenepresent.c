@@ -37,6 +37,17 @@ int rad_scene_has_absent(const rad_scene *scene)
     return 0;
 }
 
+/* The copy's index of the surface that surface s combines with (-1: none,
+ * or that surface is absent); index[] maps the surfaces before s. */
+static int renumbered(const rad_scene *in, const unsigned char *present, const int *index,
+                      int s)
+{
+    const int c = in->surfaces[s].combine;
+    if (c < 0 || c >= s || !surface_present(in, present, c))
+        return -1;
+    return index[c];
+}
+
 static void *dup_bytes(const void *p, size_t n)
 {
     void *q = malloc(n ? n : 1);
@@ -55,7 +66,8 @@ rad_status rad_scene_present_copy(const rad_scene *in, const unsigned char *pres
     out->materials = dup_bytes(in->materials, sizeof *in->materials * (size_t)in->nmaterials);
     out->objects = dup_bytes(in->objects, sizeof *in->objects * (size_t)in->nobjects);
     out->surfaces = calloc((size_t)in->nsurfaces + 1, sizeof *out->surfaces);
-    int ok = out->filename && out->materials && out->objects && out->surfaces;
+    int *index = malloc(sizeof *index * ((size_t)in->nsurfaces + 1)); /* in's -> out's */
+    int ok = out->filename && out->materials && out->objects && out->surfaces && index;
     out->nmaterials = in->nmaterials;
     out->nobjects = in->nobjects;
     for (int o = 0; ok && present && o < in->nobjects; o++)
@@ -66,9 +78,12 @@ rad_status rad_scene_present_copy(const rad_scene *in, const unsigned char *pres
         rad_surface *f = &out->surfaces[out->nsurfaces];
         *f = in->surfaces[s];
         f->verts = dup_bytes(in->surfaces[s].verts, sizeof *f->verts * (size_t)f->nverts);
+        f->combine = renumbered(in, present, index, s);
         ok = f->verts != NULL;
+        index[s] = out->nsurfaces;
         out->nsurfaces += ok;
     }
+    free(index);
     if (!ok) {
         rad_scene_free(out);
         return radi_fail(err, RAD_ERR_NOMEM, "out of memory copying the scene");

@@ -21,9 +21,15 @@
  *       its front, which is View3D's active side too.  EMIT, the
  *       emissivity e from 0 to 1, becomes a grey material of reflectance
  *       1 - e without emission (one material per value).  BASE must be 0:
- *       subsurfaces are refused.  CMB (combine with an earlier surface) is
- *       checked as View3D checks it and otherwise ignored: factors are
- *       reported per input surface.  NAME is not kept;
+ *       subsurfaces are refused.  CMB > 0 combines the surface with the
+ *       earlier surface CMB, checked as View3D checks it (CMB < N, and CMB
+ *       itself combines with none: no chains) and kept as the surface's
+ *       `combine` (CMB - 1, the scene's index of S CMB; -1 for CMB = 0):
+ *       the reported form factors then have one row and column for the
+ *       union, as View3D's Combine (viewpp.c) makes them -- interchange
+ *       areas A F added, areas summed (rad_mesh_reported, mesh.h).  The
+ *       surfaces are still meshed, lit and solved apart.  NAME is not
+ *       kept;
  *   O   N V1 V2 V3 V4 ...: an obstruction-only surface, after every S: a
  *       black surface (reflectance 0, no emission) that blocks like any
  *       other, flagged `obstruction`, so that `formfactor` and `compare`
@@ -287,8 +293,12 @@ static rad_status vs3_surface(vs3_state *s, int obstruction)
     s->nsurf = n;
     st = radi_build_add_surface(&s->b, r->line, nv == 4 ? RAD_SURFACE_QUAD : RAD_SURFACE_POLYGON,
                                 mat, -1, v, nv, 1, 1);
-    if (st == RAD_OK)
-        s->b.s.surfaces[s->b.s.nsurfaces - 1].obstruction = obstruction;
+    if (st == RAD_OK) {
+        rad_surface *f = &s->b.s.surfaces[s->b.s.nsurfaces - 1];
+        f->obstruction = obstruction;
+        /* S surfaces are the scene's first, in order: S k is surface k - 1 */
+        f->combine = obstruction || s->cmb[n - 1] == 0 ? -1 : s->cmb[n - 1] - 1;
+    }
     return st;
 }
 

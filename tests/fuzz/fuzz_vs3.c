@@ -37,6 +37,11 @@ static void check_scene(const rad_scene *s)
             (f->nverts != 3 && f->nverts != 4) ||
             (f->kind == RAD_SURFACE_QUAD) != (f->nverts == 4))
             abort();
+        /* a combination names an earlier S surface that combines with none */
+        if (f->combine != -1 && (f->combine < 0 || f->combine >= k || f->obstruction ||
+                                 s->surfaces[f->combine].combine != -1 ||
+                                 s->surfaces[f->combine].obstruction))
+            abort();
         for (int b = 0; b < RAD_BANDS; b++) {
             const rad_material *m = &s->materials[f->material];
             if (!(m->reflect[b] >= 0 && m->reflect[b] <= 1) || m->emit[b] != 0)

@@ -97,6 +97,10 @@ static void mapping(void)
            "O surfaces are black, dark surfaces (material '%s')", o->name);
     tap_ok(s.surfaces[0].line == 13 && s.surfaces[4].line == 19 && s.surfaces[0].object == -1,
            "lines kept (%d, %d); no objects", s.surfaces[0].line, s.surfaces[4].line);
+    tap_ok(s.surfaces[2].combine == 0 && s.surfaces[0].combine == -1 &&
+               s.surfaces[1].combine == -1 && s.surfaces[3].combine == -1 &&
+               s.surfaces[4].combine == -1,
+           "CMB 1 is kept as combine 0 (the scene's index of S 1), CMB 0 and O as -1");
     rad_scene_set_mesh(&s, 2, 3);
     tap_ok(s.surfaces[0].mesh_n == 2 && s.surfaces[0].mesh_m == 3 &&
                s.surfaces[2].mesh_n == 3 && s.surfaces[3].mesh_m == 3,
