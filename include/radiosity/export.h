@@ -57,6 +57,10 @@ RAD_API rad_status rad_export_matrix_market(FILE *out, const double *F, int n, c
  * format in parallel (OpenMP) and write the bytes the serial printf loop
  * wrote. */
 RAD_API rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int n);
+/* The same table with the pairs i = i as well, n^2 lines: for factors
+ * whose rows may see themselves (a union of surfaces, rad_mesh_reduce). */
+RAD_API rad_status rad_export_ff_table_diagonal(FILE *out, const double *F, const double *E,
+                                                int n);
 /* Surface-to-surface form factors, every ordered pair S, K
  * including S = K: header "S K F error S_line K_line S_area"; S and K are
  * 0-based surface indices in file order, S_line and K_line the scene-file

@@ -50,9 +50,36 @@ typedef struct rad_mesh {
  * is not a normal double: the areas are in the user's units. */
 RAD_API rad_status rad_mesh_build(rad_mesh *mesh, const rad_scene *scene, rad_error *err);
 RAD_API void rad_mesh_free(rad_mesh *mesh);
-/* Elements with rows and columns in the reported form factors: all but
- * those of obstruction surfaces (View3D's O lines), which come last. */
-RAD_API int rad_mesh_reported(const rad_scene *scene, const rad_mesh *mesh);
+/* ---- the reported form factors ------------------------------------------ */
+
+/* The rows (and columns) of the form factors as `radiosity formfactor`
+ * and `compare` report them, View3D's shape for its files (View3D 3.2's
+ * Combine routine; NISTIR 6925): row[e] (mesh->nelements
+ * ints) receives element e's reported row, and the count k of rows is
+ * returned.  Elements of obstruction surfaces (View3D's O lines) have
+ * none (-1).  A surface S whose `combine` names an earlier surface T
+ * (View3D's CMB; honoured when T is not an obstruction and its own
+ * `combine` is negative) joins T's group: every element of T and of each
+ * such S shares one row, numbered where T's first element is.  Every
+ * other element has a row of its own.  Rows keep the elements' order
+ * (row[e] <= e), so without obstructions and combinations row[e] = e. */
+RAD_API int rad_mesh_reported(const rad_scene *scene, const rad_mesh *mesh, int *row);
+/* The n x n element matrix F (column-major, F[i + j*n] = F_ij, n =
+ * mesh->nelements) reduced in place to the k x k reported one (its first
+ * k*k doubles, F[I + J*k] = F_IJ), rows as rad_mesh_reported gave them,
+ * by additivity (Siegel & Howell, the factor from a sum of areas; View3D
+ * adds the interchange areas A F alike):
+ *     F_IJ = (1/A_I) sum_{i in I} sum_{j in J} A_i F_ij,
+ *     A_I  = sum_{i in I} A_i,
+ * so that a union's factor to a column is the sum of its members' and its
+ * self factor F_II is what the union sends to itself.  A row of one
+ * element keeps its values bit for bit (no area is multiplied in).  E,
+ * the estimated absolute errors, unless NULL, is reduced the same way: a
+ * bound on F_IJ's error when each |dF_ij| <= E_ij (triangle inequality).
+ * area (k doubles) receives A_I.  RAD_ERR_NOMEM (err filled, F and E
+ * untouched) when its scratch does not fit. */
+RAD_API rad_status rad_mesh_reduce(const rad_mesh *mesh, const int *row, int k, double *F,
+                                   double *E, double *area, rad_error *err);
 /* The vertex v (0..nverts-1) of element e. */
 RAD_API rad_vec3 rad_mesh_vertex(const rad_mesh *mesh, int e, int v);
 /* Elements the scene's mesh specification makes (a double: it may exceed

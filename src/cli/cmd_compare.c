@@ -44,6 +44,9 @@ static void help(void)
            "table of 'radiosity formfactor' (header 'i j F'), or NIST View3D's\n"
            "view-factor file (text or binary format).  Row i is from element i:\n"
            "G_ij is the fraction of what leaves element i that arrives at element j.\n"
+           "For a View3D file MATRIX may have View3D's shape (no rows for O\n"
+           "surfaces, one for each union of surfaces combined by CMB, as\n"
+           "'radiosity formfactor' writes it): ours is reduced to it.\n"
            "\n"
            "The error of an entry is e_ij = |G_ij - F_ij| / max(|F_ij|, FLOOR), G\n"
            "theirs, F ours: relative where F_ij >= FLOOR, the difference in units of\n"
@@ -211,24 +214,54 @@ static int read_theirs(const compare_args *a, const char *path, const rad_mesh *
     return 0;
 }
 
-/* A scene with View3D's O surfaces (their elements the last, from `kept`
- * on): their matrix may leave those rows and columns out, as View3D
- * does.  Try that shape first, into S (kept x kept); *embedded 1 when it
- * was read so, 0 when the whole matrix was (into G).  0, or 1 (printed). */
-static int read_kept(const compare_args *a, const char *path, const rad_mesh *mesh, int kept,
+/* What View3D's shape (rad_mesh_reported) does to the scene: k rows for
+ * n elements, `obstructed` of them left out, `joined` surfaces combined
+ * with earlier ones. */
+typedef struct reported_shape {
+    int k, obstructed, joined;
+    int *row;                   /* n: each element's row, -1 none */
+} reported_shape;
+
+/* The shape's rows: 0, or 1 (printed). */
+static int shape_of(const rad_scene *scene, const rad_mesh *mesh, reported_shape *sh)
+{
+    const int n = mesh->nelements;
+    memset(sh, 0, sizeof *sh);
+    sh->row = malloc(sizeof *sh->row * ((size_t)n + 1));
+    if (!sh->row) {
+        cli_error("out of memory for %d elements", n);
+        return 1;
+    }
+    sh->k = rad_mesh_reported(scene, mesh, sh->row);
+    for (int e = 0; e < n; e++)
+        sh->obstructed += sh->row[e] < 0;
+    for (int s = 0; s < scene->nsurfaces; s++)
+        sh->joined += scene->surfaces[s].combine >= 0;
+    return 0;
+}
+
+/* A scene that View3D reports in fewer rows (O surfaces left out,
+ * combined surfaces joined): their matrix may have that shape, as
+ * View3D's has.  Try it first, into S (k x k); *embedded 1 when it was
+ * read so, 0 when the whole matrix was (into G).  0, or 1 (printed). */
+static int read_kept(const char *path, const rad_mesh *mesh, const reported_shape *sh,
                      double *G, double *S, const char **format, int *embedded)
 {
     rad_error err, whole;
     *embedded = 0;
-    if (radi_ff_read(path, kept, S, format, &err) == RAD_OK) {
+    if (radi_ff_read(path, sh->k, S, format, &err) == RAD_OK) {
         *embedded = 1;
         return 0;
     }
     if (radi_ff_read(path, mesh->nelements, G, format, &whole) == RAD_OK)
         return 0;
-    (void)a;
-    cli_error("%s (the scene's %d O surfaces' elements left out, as View3D does, or not: "
-              "%d elements)", err.message, mesh->nelements - kept, mesh->nelements);
+    char o[64] = "", j[64] = "";
+    if (sh->obstructed)
+        snprintf(o, sizeof o, ", its O surfaces' %d elements left out", sh->obstructed);
+    if (sh->joined)
+        snprintf(j, sizeof j, ", its %d combined surfaces joined", sh->joined);
+    cli_error("%s (View3D's shape for the scene: %d rows%s%s; or one per element: %d)",
+              err.message, sh->k, o, j, mesh->nelements);
     return 1;
 }
 
@@ -249,63 +282,95 @@ static int ours(compare_args *a, const rad_mesh *mesh, double *F, double **E)
     return cli_ff_verdict(&a->c, &st);
 }
 
+/* Ours reduced to View3D's shape (rad_mesh_reduce), their k x k block
+ * from W into G, A the rows' areas and *view a mesh of one element a row
+ * (the first of its elements, with the row's area: the report's
+ * geometry).  0, or 1 (printed). */
+static int reduce_ours(const rad_mesh *mesh, const reported_shape *sh, double *G,
+                       const double *W, double *F, double *E, double *A, rad_mesh *view)
+{
+    const size_t k = (size_t)sh->k;
+    rad_error err;
+    rad_element *el = malloc(sizeof *el * (k + 1));
+    if (!el) {
+        cli_error("out of memory for %zu rows", k);
+        return 1;
+    }
+    if (rad_mesh_reduce(mesh, sh->row, sh->k, F, E, A, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        free(el);
+        return 1;
+    }
+    memcpy(G, W, sizeof *G * k * k);
+    for (int e = mesh->nelements - 1; e >= 0; e--)
+        if (sh->row[e] >= 0)
+            el[sh->row[e]] = mesh->elements[e];
+    for (size_t I = 0; I < k; I++)
+        el[I].area = A[I];
+    view->nelements = sh->k;
+    view->elements = el;
+    return 0;
+}
+
+/* What the reduction left out and joined, on standard error. */
+static void say_shape(const reported_shape *sh)
+{
+    if (sh->obstructed)
+        fprintf(stderr, CLI_PROGRAM ": their matrix leaves out the %d elements of the O "
+                        "surfaces, as View3D does: compared on the other %d\n",
+                sh->obstructed, sh->k);
+    if (sh->joined)
+        fprintf(stderr, CLI_PROGRAM ": their matrix has one row and column for each union of "
+                        "combined surfaces (%d joined, View3D's CMB), as View3D's has: "
+                        "compared on %d rows with the unions' areas\n", sh->joined, sh->k);
+}
+
 /* After the mesh: read, compute, compare, print; the exit status. */
-static int run(compare_args *a, char **paths, const rad_mesh *mesh, int kept,
+static int run(compare_args *a, char **paths, const rad_mesh *mesh, const reported_shape *sh,
                const cli_output *o, int no)
 {
     const size_t n = (size_t)mesh->nelements, nn = n > 0 ? n * n : 1;
     double *G = malloc(sizeof *G * nn), *F = malloc(sizeof *F * nn);
-    const int obstructed = kept < (int)n;
+    const int reduced = sh->k < (int)n;
     double *E = malloc(sizeof *E * nn);
-    double *W = a->elements || obstructed ? malloc(sizeof *W * nn) : NULL;
+    double *W = a->elements || reduced ? malloc(sizeof *W * nn) : NULL;
     int embedded = 0;
     double *A = malloc(sizeof *A * (n + 1));
     rad_ffcmp cmp = {.floor = a->floor, .nworst = a->worst};
+    rad_mesh view = *mesh;
     compare_ctx ctx = {paths[0], paths[1], "", a->elements, mesh, &cmp, a->c.ff.accuracy,
                        a->has_tolerance, a->tolerance, a->worst, 0, 0};
     rad_error err;
     int status = 1;
-    if (!G || !F || !E || !A || ((a->elements || obstructed) && !W)) {
+    if (!G || !F || !E || !A || ((a->elements || reduced) && !W)) {
         cli_error("out of memory for %zu x %zu form factors", n, n);
         goto done;
     }
-    if (obstructed && a->elements) {
-        cli_error("--elements: a scene with View3D O surfaces keeps View3D's order");
+    if (reduced && a->elements) {
+        cli_error("--elements: a scene with View3D O or combined surfaces keeps View3D's "
+                  "order");
         status = EXIT_USAGE;
         goto done;
     }
     double t0 = cli_seconds();
-    if (obstructed ? read_kept(a, paths[1], mesh, kept, G, W, &ctx.format, &embedded)
-                   : read_theirs(a, paths[1], mesh, G, W, &ctx.format))
+    if (reduced ? read_kept(paths[1], mesh, sh, G, W, &ctx.format, &embedded)
+                : read_theirs(a, paths[1], mesh, G, W, &ctx.format))
         goto done;
     double t1 = cli_seconds();
     if (ours(a, mesh, F, &E))
         goto done;
-    size_t m = n; /* the elements compared */
-    rad_mesh view = *mesh;
     if (embedded) {
-        /* their kept x kept block against ours (compacted in place,
-         * column-major: each entry moves to or before where it was) */
-        m = (size_t)kept;
-        memcpy(G, W, sizeof *G * m * m);
-        for (size_t j = 0; j < m; j++)
-            for (size_t i = 0; i < m; i++) {
-                F[i + j * m] = F[i + j * n];
-                if (E)
-                    E[i + j * m] = E[i + j * n];
-            }
-        view.nelements = kept;
+        if (reduce_ours(mesh, sh, G, W, F, E, A, &view))
+            goto done;
         ctx.mesh = &view;
         if (!a->c.quiet)
-            fprintf(stderr, CLI_PROGRAM ": their matrix leaves out the %zu elements of the O "
-                            "surfaces, as View3D does: compared on the other %d\n",
-                    n - (size_t)kept, kept);
-    }
+            say_shape(sh);
+    } else
+        for (size_t i = 0; i < n; i++)
+            A[i] = mesh->elements[i].area;
     ctx.seconds_read = t1 - t0;
     ctx.seconds_ff = cli_seconds() - t1;
-    for (size_t i = 0; i < m; i++)
-        A[i] = mesh->elements[i].area;
-    if (radi_ffcmp_run(&cmp, G, F, E, A, (int)m, &err) != RAD_OK) {
+    if (radi_ffcmp_run(&cmp, G, F, E, A, view.nelements, &err) != RAD_OK) {
         cli_error_rec(&err);
         goto done;
     }
@@ -318,6 +383,8 @@ static int run(compare_args *a, char **paths, const rad_mesh *mesh, int kept,
     status = compare_within(&ctx) ? 0 : 1;
 done:
     radi_ffcmp_free(&cmp);
+    if (view.elements != mesh->elements)
+        free(view.elements);
     free(G);
     free(F);
     free(E);
@@ -341,7 +408,9 @@ int cmd_compare(int argc, char **argv)
     if (cli_outputs_check(o, 2) ||
         load_mesh(&a, argv[optind], &scene, &mesh, a.elements ? 4 : 3))
         return 1;
-    const int status = run(&a, argv + optind, &mesh, rad_mesh_reported(&scene, &mesh), o, 2);
+    reported_shape sh;
+    const int status = shape_of(&scene, &mesh, &sh) ? 1 : run(&a, argv + optind, &mesh, &sh, o, 2);
+    free(sh.row);
     rad_mesh_free(&mesh);
     rad_scene_free(&scene);
     return status;

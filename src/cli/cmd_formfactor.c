@@ -16,7 +16,6 @@
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
 #include "radiosity/export.h"
-#include "radiosity/export.h"
 #include "fill/fill.h"
 #include "mesh/mesh.h"
 
@@ -28,12 +27,16 @@ static void help(void)
            "'i j F error': F is the form factor from element i to element j\n"
            "(0-based, in mesh order), error its estimated absolute error (NaN\n"
            "where the accuracy mode gives no estimate: classic, and the hemicube).\n"
+           "A View3D file's factors have View3D's shape: its O surfaces have no\n"
+           "rows or columns, and surfaces combined by CMB share one, the union's\n"
+           "(area-weighted rows, summed columns; the table then lists i = j too).\n"
            "\n"
            "With --per-surface, the factors between whole surfaces instead:\n"
            "F_SK = (1/A_S) sum over elements i of S and j of K of A_i F_ij, one\n"
            "row per ordered pair of surfaces (S = K included), header\n"
            "'S K F error S_line K_line S_area': S and K are 0-based in file\n"
-           "order, S_line and K_line the scene-file lines that define them.\n"
+           "order, S_line and K_line the scene-file lines that define them\n"
+           "(every surface, View3D's O and combined surfaces included).\n"
            "\n"
            "An output FILE whose name ends in .npy gets NumPy's binary format\n"
            "(version 1.0, float64): the whole n x n matrix, row i = from element\n"
@@ -64,12 +67,14 @@ typedef struct table_ctx {
     const double *F, *E;        /* n x n: the element matrix and its errors */
     const double *FS, *ES, *AS; /* ns x ns, ns: the surfaces', or NULL */
     int n;
+    int diagonal;               /* 1: the table lists F_ii too (unions) */
 } table_ctx;
 
 static int write_table(FILE *out, const void *ctx)
 {
     const table_ctx *t = ctx;
-    return rad_export_ff_table(out, t->F, t->E, t->n);
+    return t->diagonal ? rad_export_ff_table_diagonal(out, t->F, t->E, t->n)
+                       : rad_export_ff_table(out, t->F, t->E, t->n);
 }
 
 static int write_matrix_npy(FILE *out, const void *ctx)
@@ -108,6 +113,50 @@ static int per_surface(table_ctx *t, double **FS, double **ES, double **AS)
     t->ES = *ES;
     t->AS = *AS;
     return 0;
+}
+
+/* Surfaces that join an earlier one's row (View3D's CMB). */
+static int combined(const rad_scene *scene)
+{
+    int c = 0;
+    for (int s = 0; s < scene->nsurfaces; s++)
+        c += scene->surfaces[s].combine >= 0;
+    return c;
+}
+
+/* View3D's shape (rad_mesh_reported): O surfaces block but have no rows
+ * or columns, combined surfaces share one; F and E reduced in place to
+ * *k x *k.  0, or 1 (printed). */
+static int reported(const rad_scene *scene, const rad_mesh *mesh, const cli_common *c,
+                    double *F, double *E, int *k)
+{
+    const int n = mesh->nelements, joined = combined(scene);
+    int *row = malloc(sizeof *row * ((size_t)n + 1));
+    double *area = malloc(sizeof *area * ((size_t)n + 1));
+    rad_error err;
+    int status = 1, obstructed = 0;
+    if (!row || !area) {
+        cli_error("out of memory for %d elements", n);
+        goto done;
+    }
+    *k = rad_mesh_reported(scene, mesh, row);
+    for (int e = 0; e < n; e++)
+        obstructed += row[e] < 0;
+    if (*k < n && rad_mesh_reduce(mesh, row, *k, F, E, area, &err) != RAD_OK) {
+        cli_error_rec(&err);
+        goto done;
+    }
+    if (obstructed && !c->quiet)
+        fprintf(stderr, CLI_PROGRAM ": %d obstruction elements block but are left out of the "
+                        "factors (View3D's O surfaces): %d x %d\n", obstructed, *k, *k);
+    if (joined && !c->quiet)
+        fprintf(stderr, CLI_PROGRAM ": %d surfaces combined with earlier ones (View3D's "
+                        "CMB), one row and column a union: %d x %d\n", joined, *k, *k);
+    status = 0;
+done:
+    free(row);
+    free(area);
+    return status;
 }
 
 int cmd_formfactor(int argc, char **argv)
@@ -193,19 +242,11 @@ int cmd_formfactor(int argc, char **argv)
     }
     if (cli_ff_verdict(&c, &st))
         goto done;
-    /* View3D's O surfaces block but have no rows or columns: the element
-     * outputs keep the leading block (column-major, compacted in place) */
-    const size_t kept = surfaces ? n : (size_t)rad_mesh_reported(&scene, &mesh);
-    for (size_t j = 0; kept < n && j < kept; j++)
-        for (size_t i = 0; i < kept; i++) {
-            F[i + j * kept] = F[i + j * n];
-            if (E)
-                E[i + j * kept] = E[i + j * n];
-        }
-    if (kept < n && !c.quiet)
-        fprintf(stderr, CLI_PROGRAM ": %zu obstruction elements block but are left out of the "
-                        "factors (View3D's O surfaces): %zu x %zu\n", n - kept, kept, kept);
-    table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, (int)kept};
+    int kept = (int)n;
+    if (!surfaces && reported(&scene, &mesh, &c, F, E, &kept))
+        goto done;
+    table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, kept, 0};
+    t.diagonal = combined(&scene) > 0;
     const int npy = rad_export_is_npy(output);
     if (surfaces && per_surface(&t, &FS, &ES, &AS))
         goto done;

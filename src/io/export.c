@@ -168,13 +168,15 @@ typedef struct ff_table {
     const double *F, *E;
     size_t n;
     const char *index;          /* "j\t" of every j, INDEX_W bytes each */
+    int diagonal;               /* 1: the pairs i = i too */
 } ff_table;
 
 /* The longest index (10 digits) and its tab, rounded up for fixed copies. */
 enum { INDEX_W = 16 };
 
-/* Row i of the table: "i\tj\tF\terror\n" for every j != i.  A line has at
- * most 10 + 10 + 24 + 24 bytes and four separators, and radi_fmt_g may use
+/* Row i of the table: "i\tj\tF\terror\n" for every j != i (every j with
+ * t->diagonal: at most n lines either way).  A line has at most 10 + 10 +
+ * 24 + 24 bytes and four separators, and radi_fmt_g may use
  * RAD_FMT_G_MAX bytes where it writes: 96 a line is room enough.  The
  * indices' text is made once (the last byte of each slot holds its
  * length), every row copies it. */
@@ -187,7 +189,7 @@ static size_t ff_table_row(char *buf, const void *ctx, size_t i)
     const char *is = t->index + i * INDEX_W;
     const size_t il = (size_t)is[INDEX_W - 1];
     for (size_t j = 0; j < t->n; j++) {
-        if (j == i)
+        if (j == i && !t->diagonal)
             continue;
         const size_t k = i + j * t->n;
         const char *js = t->index + j * INDEX_W;
@@ -202,7 +204,8 @@ static size_t ff_table_row(char *buf, const void *ctx, size_t i)
     return (size_t)(p - buf);
 }
 
-rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
+static rad_status ff_table_write(FILE *out, const double *F, const double *E, int n,
+                                 int diagonal)
 {
     if (fputs("i\tj\tF\terror\n", out) == EOF)
         return RAD_ERR_IO;
@@ -218,10 +221,20 @@ rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int 
         s[len] = '\t';
         s[INDEX_W - 1] = (char)(len + 1);
     }
-    const ff_table t = {F, E, m, index};
+    const ff_table t = {F, E, m, index, diagonal};
     const int status = write_items(out, m, m * FF_LINE_MAX + INDEX_W, ff_table_row, &t);
     free(index);
     return as_status(status);
+}
+
+rad_status rad_export_ff_table(FILE *out, const double *F, const double *E, int n)
+{
+    return ff_table_write(out, F, E, n, 0);
+}
+
+rad_status rad_export_ff_table_diagonal(FILE *out, const double *F, const double *E, int n)
+{
+    return ff_table_write(out, F, E, n, 1);
 }
 
 typedef struct mm_column {

@@ -9,4 +9,5 @@ src_libradcore_la_SOURCES += \
 	%reldir%/meshgeom.c \
 	%reldir%/meshtri.c \
 	%reldir%/patchgrid.c %reldir%/patchgrid.h \
+	%reldir%/reported.c \
 	%reldir%/smooth.c

@@ -238,14 +238,6 @@ void rad_mesh_free(rad_mesh *m)
     memset(m, 0, sizeof *m);
 }
 
-int rad_mesh_reported(const rad_scene *scene, const rad_mesh *mesh)
-{
-    int n = mesh->nelements;
-    while (n > 0 && scene->surfaces[mesh->elements[n - 1].surface].obstruction)
-        n--;
-    return n;
-}
-
 rad_vec3 rad_mesh_vertex(const rad_mesh *m, int e, int v)
 {
     return m->vertices[m->vindex[m->elements[e].first + v]];

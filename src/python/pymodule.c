@@ -31,7 +31,8 @@ PyDoc_STRVAR(form_factors_doc,
 "method='hemicube' computes each row by a hemicube of resolution pixels.\n"
 "errors=True returns (F, E), E the estimated absolute error of each entry\n"
 "(NaN where none is known).  Obstruction surfaces (View3D's O lines) block\n"
-"but have no rows or columns.  Entries that miss the mode's promise are\n"
+"but have no rows or columns; surfaces combined (View3D's CMB) share one\n"
+"row and column, elements()['row'].  Entries that miss the mode's promise are\n"
 "said by a RuntimeWarning, or raise radiosity.Error with strict=True.\n"
 "progress(stage, done, total) is called now and then; an exception it\n"
 "raises, or Ctrl-C, stops the fill and is raised; a true return stops it\n"
@@ -62,7 +63,9 @@ PyDoc_STRVAR(elements_doc,
 "absent objects left out, as the program's tables number them), 'area',\n"
 "'centroid' and 'normal' (n x 3), 'reflect' and 'emit' (n x 3, per band),\n"
 "'corners' (n x K int: vertex indices, counter-clockwise, padded with -1),\n"
-"'obstruction' (bool: left out of form_factors' rows; they come last).");
+"'obstruction' (bool: left out of form_factors' rows; they come last),\n"
+"'row' (int: the element's row in form_factors, -1 for an obstruction;\n"
+"View3D's combined surfaces share one).");
 
 PyDoc_STRVAR(vertices_doc,
 "vertices(scene, *, mesh=None, max_element_size=0) -> numpy.ndarray\n\n"

@@ -169,22 +169,40 @@ static int build_mesh(PyObject *module, const rad_scene *sc, int matrices, rad_m
     return -1;
 }
 
-/* The leading k x k block of an n x n Fortran-ordered array, as a new
- * array (steals a reference to `full`). */
-static PyObject *leading_block(PyObject *full, npy_intp n, npy_intp k)
+/* The first k x k doubles of an n x n Fortran-ordered array (where
+ * rad_mesh_reduce leaves the reported matrix), as a new array (steals a
+ * reference to `full`). */
+static PyObject *reported_block(PyObject *full, npy_intp n, npy_intp k)
 {
     if (!full || k == n)
         return full;
     npy_intp dims[2] = {k, k};
     PyObject *out = PyArray_EMPTY(2, dims, NPY_FLOAT64, 1);
-    if (out) {
-        const double *src = PyArray_DATA((PyArrayObject *)full);
-        double *dst = PyArray_DATA((PyArrayObject *)out);
-        for (npy_intp j = 0; j < k; j++)
-            memcpy(dst + j * k, src + j * n, sizeof *dst * (size_t)k);
-    }
+    if (out)
+        memcpy(PyArray_DATA((PyArrayObject *)out), PyArray_DATA((PyArrayObject *)full),
+               sizeof(double) * (size_t)k * (size_t)k);
     Py_DECREF(full);
     return out;
+}
+
+/* F (and E) reduced in place to the reported rows (rad_mesh_reported:
+ * View3D's shape); their count in *k. */
+static rad_status reduce(const rad_scene *sc, const rad_mesh *mesh, PyObject *F, PyObject *E,
+                         int *k, rad_error *err)
+{
+    const int n = mesh->nelements;
+    int *row = malloc(sizeof *row * ((size_t)n + 1));
+    double *area = malloc(sizeof *area * ((size_t)n + 1));
+    rad_status st = RAD_OK;
+    if (!row || !area) {
+        st = err->status = RAD_ERR_NOMEM;
+        snprintf(err->message, sizeof err->message, "out of memory for %d elements", n);
+    } else if ((*k = rad_mesh_reported(sc, mesh, row)) < n)
+        st = rad_mesh_reduce(mesh, row, *k, PyArray_DATA((PyArrayObject *)F),
+                             E ? PyArray_DATA((PyArrayObject *)E) : NULL, area, err);
+    free(row);
+    free(area);
+    return st;
 }
 
 /* ---- form_factors ------------------------------------------------------- */
@@ -214,7 +232,9 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
         status = rad_ff_matrix(&mesh, &ff, f, e, &st, &err);
         Py_END_ALLOW_THREADS
     }
-    const int kept = rad_mesh_reported(&sc, &mesh);
+    int kept = (int)n;
+    if (F && (E || !errors) && status == RAD_OK)
+        status = reduce(&sc, &mesh, F, E, &kept, &err);
     rad_mesh_free(&mesh);
     rad_scene_free(&sc);
     if (!F || (errors && !E) || PyErr_Occurred() || status != RAD_OK ||
@@ -225,10 +245,10 @@ static PyObject *fill(PyObject *module, const run_args *a, int errors)
             radi_py_raise(module, &err);
         return NULL;
     }
-    F = leading_block(F, n, kept);
+    F = reported_block(F, n, kept);
     if (!errors)
         return F;
-    E = leading_block(E, n, kept);
+    E = reported_block(E, n, kept);
     if (!F || !E) {
         Py_XDECREF(F);
         Py_XDECREF(E);
@@ -454,15 +474,21 @@ PyObject *radi_py_elements(PyObject *module, PyObject *args, PyObject *kw)
     if (dict && (!corners || PyDict_SetItemString(dict, "corners", corners) != 0))
         Py_CLEAR(dict);
     Py_XDECREF(corners);
-    PyObject *obstruction = dict ? PyArray_ZEROS(1, &n, NPY_BOOL, 0) : NULL;
+    /* each element's row in form_factors (View3D's shape), -1: none */
+    PyObject *row = dict ? PyArray_EMPTY(1, &n, NPY_INT, 0) : NULL;
+    PyObject *obstruction = row ? PyArray_ZEROS(1, &n, NPY_BOOL, 0) : NULL;
     if (obstruction) {
+        int *r = PyArray_DATA((PyArrayObject *)row);
         npy_bool *o = PyArray_DATA((PyArrayObject *)obstruction);
-        for (npy_intp i = rad_mesh_reported(&sc, &mesh); i < n; i++)
-            o[i] = 1;
+        rad_mesh_reported(&sc, &mesh, r);
+        for (npy_intp i = 0; i < n; i++)
+            o[i] = r[i] < 0;
     }
-    if (dict && (!obstruction || PyDict_SetItemString(dict, "obstruction", obstruction) != 0))
+    if (dict && (!obstruction || PyDict_SetItemString(dict, "obstruction", obstruction) != 0 ||
+                 PyDict_SetItemString(dict, "row", row) != 0))
         Py_CLEAR(dict);
     Py_XDECREF(obstruction);
+    Py_XDECREF(row);
     rad_mesh_free(&mesh);
     rad_scene_free(&sc);
     return dict;
