@@ -424,6 +424,28 @@ class Binding(unittest.TestCase):
         self.assertLessEqual(abs(F[0, 1]), 1e-12)
         self.assertEqual(list(radiosity.elements(s)["obstruction"]), [False, False, True])
 
+    # ---- View3D's combined surfaces -------------------------------------------
+    def test_combine(self):
+        """S 3 combines with S 2 (CMB): one row for the union, F by the closed form C-11"""
+        vs3 = self.path("cmb.vs3")
+        with open(vs3, "w") as f:
+            f.write("T a unit square under another, the upper one in two halves\n"
+                    "V 1 0 0 0\nV 2 1 0 0\nV 3 1 1 0\nV 4 0 1 0\nV 5 0 0 1\nV 6 0 1 1\n"
+                    "V 7 1 1 1\nV 8 1 0 1\nV 9 .5 0 1\nV 10 .5 1 1\n"
+                    "S 1  1 2 3 4  0 0 0.9 bottom\nS 2  5 6 10 9  0 0 0.9 top-a\n"
+                    "S 3  9 10 7 8  0 2 0.9 top-b\nE\n")
+        # Howell C-11, directly opposed unit squares 1 apart
+        x = math.sqrt(2)
+        want = 2 / math.pi * (math.log(math.sqrt(4 / 3)) + 2 * x * math.atan(1 / x) - math.pi / 2)
+        s = radiosity.load_scene(vs3)
+        F, E = radiosity.form_factors(s, accuracy="reference", errors=True)
+        self.assertEqual(F.shape, (2, 2))
+        self.assertEqual(E.shape, (2, 2))
+        self.assertAlmostEqual(F[0, 1], want, delta=1e-9 * want)
+        self.assertAlmostEqual(F[1, 0], want, delta=1e-9 * want)
+        self.assertEqual(list(radiosity.elements(s)["row"]), [0, 1, 1])
+        self.assertEqual(radiosity.form_factors(s, mesh=(2, 2)).shape, (5, 5))
+
     # ---- OBJ repairs ----------------------------------------------------------
     def test_obj_repairs(self):
         """OBJ: each repair a RuntimeWarning with its line, kept in .repairs; strict refuses"""
