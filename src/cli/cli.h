@@ -61,8 +61,9 @@ enum {
     {"format", required_argument, NULL, OPT_FORMAT},              \
     {"help", no_argument, NULL, OPT_HELP}
 
-/* The last lines of every --help: where bugs go (GNU coding standards,
- * --help).  The project publishes no address of its own. */
+/* The last lines of the programs' --help (radiosity, radiosity-mpi):
+ * where bugs go (GNU coding standards, --help).  The project publishes
+ * no address of its own. */
 #define CLI_BUG_HELP                                                             \
     "Report bugs to the issue tracker of the repository the source came\n"     \
     "from, with the command, the scene file and the output of --version;\n"    \

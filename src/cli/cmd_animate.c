@@ -326,6 +326,7 @@ static int reference(anim_run *r, int frame, const rad_mesh *full)
     rad_result res;
     rad_error err;
     rad_pipeline_options_init(&po);
+    po.crease = 0; /* no vertex values are used here */
     po.ff = r->args->common.ff;
     double t0 = cli_seconds();
     rad_status st = rad_pipeline_run(&r->fscene, &po, &res, &err);

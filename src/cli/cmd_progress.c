@@ -455,6 +455,7 @@ static int prepare(progress_args *a, pipeline *p)
     rad_error err;
     rad_pipeline_options po;
     rad_pipeline_options_init(&po);
+    po.crease = 0; /* no vertex values are used here */
     cli_progress_attach(&a->common);
     po.ff = a->common.ff;
     if (a->adaptive.solve.adaptive) {

@@ -265,6 +265,7 @@ static int run_one(rad_scene *scene, int n, const rad_ff_options *ff, int solver
     rad_status st = RAD_OK;
     rad_scene_set_mesh(scene, n, n);
     rad_pipeline_options_init(&po);
+    po.crease = 0; /* no vertex values are used here */
     po.ff = *ff;
     po.solve.solver = (rad_solver)solver;
     po.solve.tolerance = 1e-13;

@@ -53,8 +53,8 @@ PyDoc_STRVAR(solve_doc,
 "section 3); crease=DEG smooths Bv across surfaces of one object and\n"
 "material whose normals are less than DEG degrees apart where they meet\n"
 "(None: 30 for an OBJ model, whose faces are parts of one shape, 0 for\n"
-"the other formats; 0: never).  Raises radiosity.Error on a singular system or an unmet\n"
-"promise with strict=True.");
+"the other formats; 0: never).  Raises radiosity.Error on a singular\n"
+"system or an unmet promise with strict=True.");
 
 PyDoc_STRVAR(elements_doc,
 "elements(scene, *, mesh=None, max_element_size=0) -> dict\n\n"

@@ -300,7 +300,7 @@ static PyObject *run_solve(PyObject *module, const run_args *a, const char *solv
     if (s < 0 || ff_options(a, &po.ff) != 0)
         return NULL;
     po.solve.solver = (rad_solver)s;
-    po.crease = crease;
+    po.crease = vertices ? crease : 0; /* no Bv asked: nothing to smooth */
     if (bounces != Py_None) {
         const long k = PyBool_Check(bounces) ? -2 : PyLong_AsLong(bounces);
         if (k == -1 && PyErr_Occurred())

@@ -88,12 +88,33 @@ awk -v q="$sq" -v o="$so" 'BEGIN { exit !(q > 0 && o <= 2 * q) }'
 ok $? "the OBJ room renders smooth: largest step $so, the quads' $sq $(head -c 200 "$work/err")"
 awk -v q="$sq" -v o="$s0" 'BEGIN { exit !(q > 0 && o > 4 * q) }'
 ok $? "with --crease 0 its triangles' diagonal shows: step $s0 against the quads' $sq"
-# one object only: the same room with its back wall a separate object keeps
-# the diagonal smooth (both triangles in it) but not its edges with the floor
+# a wall that is its own object is still smooth inside (its two triangles)
 awk '/^f 4 3 7$/ { print "o back" } { print }' "$work/room.obj" > "$work/room2.obj"
 s2=$(step "$work/room2.obj")
 awk -v q="$sq" -v o="$s2" 'BEGIN { exit !(q > 0 && o <= 2 * q) }'
 ok $? "a wall that is its own object is smooth inside: step $s2"
+# Separate objects never mix: the floor's two triangles as two objects keep
+# their own values along the diagonal they share, as one object they take
+# one value there.  The PLY's vertices at each point of the floor's
+# diagonal (z = 0, x = y, the room's corners left out, where walls meet it
+# at 90 degrees): how many points hold different values.
+split_points() { # split_points SCENE OPTIONS...
+  s=$1; shift
+  "$RADIOSITY" solve -q --max-element-size 0.25 "$@" -o "$work/v.ply" "$s" 2> "$work/err" &&
+    awk '/^end_header/ { body = 1; next } body && NF == 9 && $3 == 0 && $1 == $2 && $1 > 0 && $1 < 1 {
+           k = sprintf("%.9f", $1); if (k in v && v[k] != $4) d[k] = 1; v[k] = $4 }
+         END { n = 0; for (k in d) n++; print n }' "$work/v.ply"
+}
+awk '/^f 1 3 4$/ { print "o floor2" } { print }' "$work/room.obj" > "$work/room3.obj"
+one=$(split_points "$work/room.obj"); two=$(split_points "$work/room3.obj")
+[ "$one" = 0 ] && [ "${two:-0}" -gt 0 ]
+ok $? "one object: one value per point of the floor's diagonal ($one differ); two objects: their own ($two differ)"
+# a scene file is never smoothed across surfaces unless asked: its PLY is
+# the one --crease 0 writes
+"$RADIOSITY" solve -q --max-element-size 0.25 -o "$work/d.ply" "$work/tris.scene" &&
+  "$RADIOSITY" solve -q --max-element-size 0.25 --crease 0 -o "$work/z.ply" "$work/tris.scene" &&
+  cmp -s "$work/d.ply" "$work/z.ply" && [ "$(split_points "$work/tris.scene")" -gt 0 ]
+ok $? "a scene file's default is --crease 0 (the same PLY, its diagonals split)"
 
 # --crease: accepted from 0 to 180 degrees
 "$RADIOSITY" solve -q --crease 30 --max-element-size 0.5 -o "$work/c.ply" "$work/tris.scene" 2> "$work/err"
