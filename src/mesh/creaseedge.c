@@ -133,7 +133,9 @@ rad_status radi_crease_edges(const rad_mesh *m, const radi_crease_points *cp, do
         const int c = radi_mesh_outline(m, s, NULL);
         maxk = c > maxk ? c : maxk;
     }
-    enum { OTHERS = 64 }; /* surfaces along one edge: a model's edge has 2 */
+    /* surfaces met along one edge: a model's edge has 2; past 64 (a fan
+     * of fins on one line) the rest keep their merged values */
+    enum { OTHERS = 64 };
     edge_pt *pt = malloc(sizeof *pt * (size_t)(maxv ? maxv : 1));
     rad_vec3 *c = malloc(sizeof *c * (size_t)(maxk ? maxk : 1));
     if (!pt || !c) {

@@ -78,6 +78,35 @@ ok $? ".npy: the 2 x 2 matrix too"
 [ "$(($(wc -l < "$work/ps.tsv") - 1))" -eq 9 ]
 ok $? "--per-surface keeps every input surface (3 x 3), as it keeps O surfaces"
 
+# Unequal parts (0.3 and 0.7 of the upper square): the union's row is the
+# area-weighted mean of its members' rows (a plain mean is not C-11 here),
+# and so is its error estimate, which bounds the mean's error by the
+# triangle inequality; its column is the members' sum, errors too.  The
+# members' own entries come from the same file without the CMB.
+sed -e 's/^V 9 .5 0 1$/V 9 .3 0 1/' -e 's/^V 10 .5 1 1$/V 10 .3 1 1/' "$work/par.vs3" > "$work/par2.vs3"
+sed 's/ 0 2 0.9 top-b$/ 0 0 0.9 top-b/' "$work/par2.vs3" > "$work/par2u.vs3"
+"$RADIOSITY" formfactor -q --accuracy reference "$work/par2.vs3" > "$work/c.tsv" &&
+  "$RADIOSITY" formfactor -q --accuracy reference "$work/par2u.vs3" > "$work/u.tsv"
+ok $? "unequal halves, combined and not: formfactor runs"
+f01=$(entry "$work/c.tsv" 0 1) f10=$(entry "$work/c.tsv" 1 0)
+close_to "$f01" "$want" 1e-9 && close_to "$f10" "$want" 1e-9
+ok $? "0.3 + 0.7: square -> union $f01, union -> square $f10, C-11 $want within 1e-9"
+err() { awk -F '\t' -v i="$2" -v j="$3" 'NR > 1 && $1 == i && $2 == j { print $4 }' "$1"; }
+why=$(awk -v c10="$(err "$work/c.tsv" 1 0)" -v c01="$(err "$work/c.tsv" 0 1)" \
+  -v a="$(err "$work/u.tsv" 1 0)" -v b="$(err "$work/u.tsv" 2 0)" \
+  -v p="$(err "$work/u.tsv" 0 1)" -v q="$(err "$work/u.tsv" 0 2)" 'BEGIN {
+    r = 0.3 * a + 0.7 * b; c = p + q
+    printf "union -> square %s (0.3 x %s + 0.7 x %s = %.3g), square -> union %s (%.3g)", c10, a, b, r, c01, c
+    # the table prints 3 digits: equal within 1% of each
+    exit !(r > 0 && c > 0 && (c10 - r) ^ 2 <= (0.01 * r) ^ 2 && (c01 - c) ^ 2 <= (0.01 * c) ^ 2) }')
+ok $? "the error estimates reduce as the factors do: $why"
+printf 'View3D 3.2 0 0 0 2\n1 1\n0.000000 0.199825\n0.199825 0.000000\n0.900 0.900\n' > "$work/par2.vf"
+"$RADIOSITY" compare -q --tolerance 1e-5 --report "$work/r.json" "$work/par2.vs3" "$work/par2.vf"
+ok $? "compare takes View3D's 2 x 2 matrix for the unequal halves"
+r=$(sed -n 's/.*"reciprocity_abs": \([^,]*\),.*/\1/p' "$work/r.json")
+awk -v r="$r" 'BEGIN { exit !(r != "" && r + 0 <= 1e-12) }'
+ok $? "its reciprocity uses the union's area 1, not its first part's 0.3 (|A_i G_ij - A_j G_ji| = $r)"
+
 # Any mesh: the union is one row wherever its elements are (at its first
 # element), every other element its own.  --mesh 2x2: the square's 4
 # elements, then the union: 5 x 5; the union's row to the 4 is C-11.
