@@ -19,16 +19,18 @@
  * faces of the object that touch without sharing one (a vertex written
  * twice), as a modelling tool's "merge by distance" would join them.
  * Separate objects never mix: a box standing on a floor of its colour
- * keeps its own edge.  Where two such surfaces share an edge cut into different
- * parts (--max-element-size cuts each face by its own size), the points
- * one side lacks then follow the points both have (creaseedge.c), so the
- * two sides agree all along the edge.  One point: the same
- * cell of a grid 2^-30 of the scene's size, far above the rounding of a
- * point computed along an edge from either end (an ulp) and far below any
- * element (a point within a few ulps of a cell's side may fall on the
- * other; at 1e-7 of a scene's size that is left to chance).  The angle test is made for each
- * vertex against each other one, so a fan of faces turning gradually
- * round a point is smoothed pairwise, never across a sharp edge.
+ * keeps its own edge.  Where two such surfaces share an edge cut into
+ * different parts (--max-element-size cuts each face by its own size),
+ * the points one side lacks then follow the points both have
+ * (creaseedge.c), so the two sides agree all along the edge.
+ *
+ * One point: the same cell of a grid 2^-30 of the scene's size, far
+ * above the rounding of a point computed along an edge from either end
+ * (an ulp) and far below any element (a point within a few ulps of a
+ * cell's side may fall on the other; at 1e-7 of a scene's size that is
+ * left to chance).  The angle test is made for each vertex against each
+ * other one, so a fan of faces turning gradually round a point is
+ * smoothed pairwise, never across a sharp edge.
  */
 #include <config.h>
 
