@@ -111,10 +111,11 @@ RAD_API void rad_smooth_vertices_rule(const rad_mesh *mesh, const double *B, dou
  * count as one), of the same material, whose normals differ by less than
  * crease_degrees meet at a vertex (the same point, to 2^-30 of the
  * scene's size), each of their vertices there takes the mean of their
- * Bv, weighted by the area of each one's elements at the point.  0 (or
- * less) leaves Bv as it is: surfaces never mix, as Goral et al. 1984
- * smooth.  Not for a mesh with hanging vertices (an adaptive one): they
- * would no longer lie on their edges' values. */
+ * Bv, weighted by the area of each one's elements at the point.  0
+ * leaves Bv as it is: surfaces never mix, as Goral et al. 1984 smooth;
+ * less than 0 (RAD_CREASE_AUTO) takes rad_crease_default(scene).  Not
+ * for a mesh with hanging vertices (an adaptive one): they would no
+ * longer lie on their edges' values. */
 RAD_API rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *mesh,
                                      double crease_degrees, double *Bv, rad_error *err);
 /* The crease angle a scene's format implies: RAD_CREASE_OBJ degrees for
@@ -122,6 +123,9 @@ RAD_API rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *mes
  * tools smooth them), 0 for the native format and View3D's (each surface
  * is a surface of its own). */
 #define RAD_CREASE_OBJ 30.0
+/* A crease angle (rad_smooth_across, rad_pipeline_options.crease) that
+ * asks for what the scene's format implies. */
+#define RAD_CREASE_AUTO (-1.0)
 RAD_API double rad_crease_default(const rad_scene *scene);
 /* "extrapolate", "corner", or NULL. */
 RAD_API const char *rad_vertex_rule_name(int rule);

@@ -50,9 +50,6 @@ typedef struct rad_pipeline_options {
                                    there) */
 } rad_pipeline_options;
 
-/* rad_pipeline_options.crease: what the scene's format implies. */
-#define RAD_CREASE_AUTO (-1.0)
-
 RAD_API void rad_pipeline_options_init(rad_pipeline_options *opt);
 
 /* What one run produced.  Filled as far as the run got: after a failed

@@ -199,6 +199,15 @@ void cli_staged_abort(cli_staged *s);
 
 /* Load the scene and apply --mesh; prints the error and returns 1 on
  * failure. */
+/* What View3D's shape (rad_mesh_reported) does to the scene: k rows for
+ * n elements, `obstructed` of them left out, `joined` surfaces combined
+ * with earlier ones; row (free it) each element's row, -1 none.  0, or 1
+ * (printed). */
+typedef struct cli_shape {
+    int k, obstructed, joined;
+    int *row;
+} cli_shape;
+int cli_shape_of(const rad_scene *scene, const rad_mesh *mesh, cli_shape *sh);
 int cli_load_scene(const char *path, const cli_common *c, rad_scene *scene);
 
 /* Wall-clock seconds (CLOCK_MONOTONIC), for the summary's timings. */

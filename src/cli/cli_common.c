@@ -369,6 +369,23 @@ double cli_seconds(void)
     return radi_seconds();
 }
 
+int cli_shape_of(const rad_scene *scene, const rad_mesh *mesh, cli_shape *sh)
+{
+    const int n = mesh->nelements;
+    memset(sh, 0, sizeof *sh);
+    sh->row = malloc(sizeof *sh->row * ((size_t)n + 1));
+    if (!sh->row) {
+        cli_error("out of memory for %d elements", n);
+        return 1;
+    }
+    sh->k = rad_mesh_reported(scene, mesh, sh->row);
+    for (int e = 0; e < n; e++)
+        sh->obstructed += sh->row[e] < 0;
+    for (int s = 0; s < scene->nsurfaces; s++)
+        sh->joined += scene->surfaces[s].combine >= 0;
+    return 0;
+}
+
 int cli_progress(void *user, const char *stage, double done, double total)
 {
     progress_state *p = user;

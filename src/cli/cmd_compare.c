@@ -214,37 +214,11 @@ static int read_theirs(const compare_args *a, const char *path, const rad_mesh *
     return 0;
 }
 
-/* What View3D's shape (rad_mesh_reported) does to the scene: k rows for
- * n elements, `obstructed` of them left out, `joined` surfaces combined
- * with earlier ones. */
-typedef struct reported_shape {
-    int k, obstructed, joined;
-    int *row;                   /* n: each element's row, -1 none */
-} reported_shape;
-
-/* The shape's rows: 0, or 1 (printed). */
-static int shape_of(const rad_scene *scene, const rad_mesh *mesh, reported_shape *sh)
-{
-    const int n = mesh->nelements;
-    memset(sh, 0, sizeof *sh);
-    sh->row = malloc(sizeof *sh->row * ((size_t)n + 1));
-    if (!sh->row) {
-        cli_error("out of memory for %d elements", n);
-        return 1;
-    }
-    sh->k = rad_mesh_reported(scene, mesh, sh->row);
-    for (int e = 0; e < n; e++)
-        sh->obstructed += sh->row[e] < 0;
-    for (int s = 0; s < scene->nsurfaces; s++)
-        sh->joined += scene->surfaces[s].combine >= 0;
-    return 0;
-}
-
 /* A scene that View3D reports in fewer rows (O surfaces left out,
  * combined surfaces joined): their matrix may have that shape, as
  * View3D's has.  Try it first, into S (k x k); *embedded 1 when it was
  * read so, 0 when the whole matrix was (into G).  0, or 1 (printed). */
-static int read_kept(const char *path, const rad_mesh *mesh, const reported_shape *sh,
+static int read_kept(const char *path, const rad_mesh *mesh, const cli_shape *sh,
                      double *G, double *S, const char **format, int *embedded)
 {
     rad_error err, whole;
@@ -286,7 +260,7 @@ static int ours(compare_args *a, const rad_mesh *mesh, double *F, double **E)
  * from W into G, A the rows' areas and *view a mesh of one element a row
  * (the first of its elements, with the row's area: the report's
  * geometry).  0, or 1 (printed). */
-static int reduce_ours(const rad_mesh *mesh, const reported_shape *sh, double *G,
+static int reduce_ours(const rad_mesh *mesh, const cli_shape *sh, double *G,
                        const double *W, double *F, double *E, double *A, rad_mesh *view)
 {
     const size_t k = (size_t)sh->k;
@@ -313,7 +287,7 @@ static int reduce_ours(const rad_mesh *mesh, const reported_shape *sh, double *G
 }
 
 /* What the reduction left out and joined, on standard error. */
-static void say_shape(const reported_shape *sh)
+static void say_shape(const cli_shape *sh)
 {
     if (sh->obstructed)
         fprintf(stderr, CLI_PROGRAM ": their matrix leaves out the %d elements of the O "
@@ -326,7 +300,7 @@ static void say_shape(const reported_shape *sh)
 }
 
 /* After the mesh: read, compute, compare, print; the exit status. */
-static int run(compare_args *a, char **paths, const rad_mesh *mesh, const reported_shape *sh,
+static int run(compare_args *a, char **paths, const rad_mesh *mesh, const cli_shape *sh,
                const cli_output *o, int no)
 {
     const size_t n = (size_t)mesh->nelements, nn = n > 0 ? n * n : 1;
@@ -408,8 +382,8 @@ int cmd_compare(int argc, char **argv)
     if (cli_outputs_check(o, 2) ||
         load_mesh(&a, argv[optind], &scene, &mesh, a.elements ? 4 : 3))
         return 1;
-    reported_shape sh;
-    const int status = shape_of(&scene, &mesh, &sh) ? 1 : run(&a, argv + optind, &mesh, &sh, o, 2);
+    cli_shape sh;
+    const int status = cli_shape_of(&scene, &mesh, &sh) ? 1 : run(&a, argv + optind, &mesh, &sh, o, 2);
     free(sh.row);
     rad_mesh_free(&mesh);
     rad_scene_free(&scene);

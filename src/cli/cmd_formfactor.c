@@ -115,46 +115,38 @@ static int per_surface(table_ctx *t, double **FS, double **ES, double **AS)
     return 0;
 }
 
-/* Surfaces that join an earlier one's row (View3D's CMB). */
-static int combined(const rad_scene *scene)
-{
-    int c = 0;
-    for (int s = 0; s < scene->nsurfaces; s++)
-        c += scene->surfaces[s].combine >= 0;
-    return c;
-}
-
-/* View3D's shape (rad_mesh_reported): O surfaces block but have no rows
- * or columns, combined surfaces share one; F and E reduced in place to
- * *k x *k.  0, or 1 (printed). */
+/* View3D's shape (cli_shape_of): O surfaces block but have no rows or
+ * columns, combined surfaces share one; F and E reduced in place to
+ * *k x *k, *joined the surfaces combined.  0, or 1 (printed). */
 static int reported(const rad_scene *scene, const rad_mesh *mesh, const cli_common *c,
-                    double *F, double *E, int *k)
+                    double *F, double *E, int *k, int *joined)
 {
-    const int n = mesh->nelements, joined = combined(scene);
-    int *row = malloc(sizeof *row * ((size_t)n + 1));
-    double *area = malloc(sizeof *area * ((size_t)n + 1));
+    cli_shape sh;
+    if (cli_shape_of(scene, mesh, &sh))
+        return 1;
+    double *area = malloc(sizeof *area * ((size_t)sh.k + 1));
     rad_error err;
-    int status = 1, obstructed = 0;
-    if (!row || !area) {
-        cli_error("out of memory for %d elements", n);
+    int status = 1;
+    *k = sh.k;
+    *joined = sh.joined;
+    if (!area) {
+        cli_error("out of memory for %d rows", sh.k);
         goto done;
     }
-    *k = rad_mesh_reported(scene, mesh, row);
-    for (int e = 0; e < n; e++)
-        obstructed += row[e] < 0;
-    if (*k < n && rad_mesh_reduce(mesh, row, *k, F, E, area, &err) != RAD_OK) {
+    if (sh.k < mesh->nelements &&
+        rad_mesh_reduce(mesh, sh.row, sh.k, F, E, area, &err) != RAD_OK) {
         cli_error_rec(&err);
         goto done;
     }
-    if (obstructed && !c->quiet)
+    if (sh.obstructed && !c->quiet)
         fprintf(stderr, CLI_PROGRAM ": %d obstruction elements block but are left out of the "
-                        "factors (View3D's O surfaces): %d x %d\n", obstructed, *k, *k);
-    if (joined && !c->quiet)
+                        "factors (View3D's O surfaces): %d x %d\n", sh.obstructed, sh.k, sh.k);
+    if (sh.joined && !c->quiet)
         fprintf(stderr, CLI_PROGRAM ": %d surfaces combined with earlier ones (View3D's "
-                        "CMB), one row and column a union: %d x %d\n", joined, *k, *k);
+                        "CMB), one row and column a union: %d x %d\n", sh.joined, sh.k, sh.k);
     status = 0;
 done:
-    free(row);
+    free(sh.row);
     free(area);
     return status;
 }
@@ -242,11 +234,11 @@ int cmd_formfactor(int argc, char **argv)
     }
     if (cli_ff_verdict(&c, &st))
         goto done;
-    int kept = (int)n;
-    if (!surfaces && reported(&scene, &mesh, &c, F, E, &kept))
+    int kept = (int)n, joined = 0;
+    if (!surfaces && reported(&scene, &mesh, &c, F, E, &kept, &joined))
         goto done;
     table_ctx t = {&scene, &mesh, F, E, NULL, NULL, NULL, kept, 0};
-    t.diagonal = combined(&scene) > 0;
+    t.diagonal = joined > 0;
     const int npy = rad_export_is_npy(output);
     if (surfaces && per_surface(&t, &FS, &ES, &AS))
         goto done;

@@ -62,17 +62,29 @@ static int same_point(const vkey *a, const vkey *b)
     return a->q[0] == b->q[0] && a->q[1] == b->q[1] && a->q[2] == b->q[2];
 }
 
-/* May surfaces a and b (their first elements) be smoothed across: one
- * object, one material, normals less than the crease angle apart? */
-static int smooth_pair(const rad_scene *scene, const rad_mesh *m, int a, int b,
-                       double cos_crease)
+/* Are surfaces a and b (their first elements) of one object and one
+ * material? */
+static int same_kind(const rad_scene *scene, const rad_mesh *m, int a, int b)
 {
     const rad_element *x = &m->elements[m->surface_first[a]];
     const rad_element *y = &m->elements[m->surface_first[b]];
     return scene->surfaces[a].object == scene->surfaces[b].object &&
-           v3_dot(x->normal, y->normal) > cos_crease &&
            memcmp(x->reflect, y->reflect, sizeof x->reflect) == 0 &&
            memcmp(x->emit, y->emit, sizeof x->emit) == 0;
+}
+
+/* The unit normal of surface s (its first element's). */
+static rad_vec3 normal_of(const rad_mesh *m, int s)
+{
+    return m->elements[m->surface_first[s]].normal;
+}
+
+/* May surfaces a and b be smoothed across: one object, one material,
+ * normals less than the crease angle apart? */
+static int smooth_pair(const rad_scene *scene, const rad_mesh *m, int a, int b,
+                       double cos_crease)
+{
+    return same_kind(scene, m, a, b) && v3_dot(normal_of(m, a), normal_of(m, b)) > cos_crease;
 }
 
 /* Does every pair of the k vertices at one point pass smooth_pair?  Then
@@ -90,21 +102,15 @@ static int all_pairs(const rad_scene *scene, const rad_mesh *m, const vkey *key,
     const double cos_half = sqrt(0.5 * (1 + cos_crease)); /* cos(a/2), a <= 180 */
     rad_vec3 u = {0, 0, 0};
     for (size_t j = 0; j < k; j++) {
-        const int a = key[0].surface, b = key[j].surface;
-        const rad_element *x = &m->elements[m->surface_first[a]];
-        const rad_element *y = &m->elements[m->surface_first[b]];
-        if (scene->surfaces[a].object != scene->surfaces[b].object ||
-            memcmp(x->reflect, y->reflect, sizeof x->reflect) != 0 ||
-            memcmp(x->emit, y->emit, sizeof x->emit) != 0)
+        if (!same_kind(scene, m, key[0].surface, key[j].surface))
             return 0;
-        u = v3_add(u, y->normal);
+        u = v3_add(u, normal_of(m, key[j].surface));
     }
     const double len = sqrt(v3_dot(u, u));
     if (!(len > 0))
         return 0;
     for (size_t j = 0; j < k; j++) {
-        const rad_vec3 n = m->elements[m->surface_first[key[j].surface]].normal;
-        if (!(v3_dot(n, u) / len > cos_half))
+        if (!(v3_dot(normal_of(m, key[j].surface), u) / len > cos_half))
             return 0;
     }
     return 1;
@@ -235,6 +241,8 @@ done:
 rad_status rad_smooth_across(const rad_scene *scene, const rad_mesh *m, double crease_degrees,
                              double *Bv, rad_error *err)
 {
+    if (crease_degrees < 0) /* RAD_CREASE_AUTO */
+        crease_degrees = rad_crease_default(scene);
     if (!(crease_degrees > 0) || m->nvertices == 0)
         return RAD_OK;
     if (m->nsurfaces != scene->nsurfaces)

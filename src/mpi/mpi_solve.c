@@ -586,8 +586,7 @@ static rad_status run_present(const rad_scene *scene, const rad_pipeline_options
         for (size_t k = 0; k < n * RAD_BANDS; k++)
             r->b_negative += r->B[k] < 0;
         rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-        const double crease = opt->crease < 0 ? rad_crease_default(scene) : opt->crease;
-        st = rad_smooth_across(scene, &r->mesh, crease, r->Bv, err);
+        st = rad_smooth_across(scene, &r->mesh, opt->crease, r->Bv, err);
         r->t_smooth = radi_seconds() - t3;
     }
     return st;

@@ -143,11 +143,10 @@ static rad_status allocate(rad_result *r, rad_error *err)
 static rad_status finish(const rad_scene *scene, rad_result *r,
                          const rad_pipeline_options *opt, double t_solved, rad_error *err)
 {
-    const double crease = opt->crease < 0 ? rad_crease_default(scene) : opt->crease;
     for (size_t k = 0; k < (size_t)r->mesh.nelements * RAD_BANDS; k++)
         r->b_negative += r->B[k] < 0;
     rad_smooth_vertices_rule(&r->mesh, r->B, r->Bv, opt->vertex_rule);
-    rad_status st = rad_smooth_across(scene, &r->mesh, crease, r->Bv, err);
+    rad_status st = rad_smooth_across(scene, &r->mesh, opt->crease, r->Bv, err);
     r->t_smooth = radi_seconds() - t_solved;
     return st;
 }
