@@ -5,7 +5,7 @@
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 rad=$1
 echo "[COMMANDS]"
-for c in solve render formfactor analytic sweep progress animate compare; do
+for c in solve render formfactor analytic sweep progress animate compare view; do
   echo ".SS \"radiosity $c\""
   echo ".nf"
   # the help is 80 columns wide: it starts at the margin to fit the page

@@ -6,7 +6,7 @@ set -e
 pkgs="build-essential autoconf automake libtool autoconf-archive pkg-config
   libcgal-dev libgmp-dev libmpfr-dev liblapack-dev libopenblas-dev
   libcairo2-dev help2man python3 python3-mpmath python3-dev python3-numpy valgrind
-  assimp-testmodels
+  assimp-testmodels libmicrohttpd-dev chromium
   libscalapack-openmpi-dev libopenmpi-dev openmpi-bin"
 missing=
 for p in $pkgs; do

@@ -12,6 +12,14 @@ skip() { # skip WHY: one check that cannot run here
   tap_n=$((tap_n + 1)); echo "ok $tap_n # SKIP $*"
 }
 diag() { printf '# %s\n' "$*"; }
+replay() { # replay FILE: the TAP lines another program wrote, as our checks
+  while IFS= read -r line; do
+    case $line in
+      "ok "*) ok 0 "${line#* - }" ;;
+      "not ok "*) ok 1 "${line#* - }" ;;
+    esac
+  done < "$1"
+}
 done_testing() { echo "1..$tap_n"; [ "$tap_failed" -eq 0 ]; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

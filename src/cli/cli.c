@@ -33,6 +33,7 @@ static void usage(FILE *out)
             "  animate SCENE CHANGES   redistribution through frames (George et al. 1990)\n"
             "  analytic CASE ARGS...   closed-form form factors\n"
             "  compare SCENE MATRIX    another solver's form factors against ours\n"
+            "  view SCENE              watch progressive refinement in a browser\n"
             "\n"
             "Options:\n"
             "  -h, --help              show this help and exit\n"
@@ -64,7 +65,7 @@ static int dispatch(int argc, char **argv)
         {"solve", cmd_solve},           {"render", cmd_render},
         {"progress", cmd_progress},     {"sweep", cmd_sweep},
         {"animate", cmd_animate},
-        {"compare", cmd_compare},
+        {"compare", cmd_compare},       {"view", cmd_view},
     };
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {

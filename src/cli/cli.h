@@ -416,6 +416,7 @@ int cmd_formfactor(int argc, char **argv);
 int cmd_solve(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_progress(int argc, char **argv);
+int cmd_view(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
 int cmd_analytic(int argc, char **argv);
 int cmd_animate(int argc, char **argv);

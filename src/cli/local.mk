@@ -17,6 +17,7 @@ CLI_SOURCES += \
 	%reldir%/cmd_render.c \
 	%reldir%/cmd_solve.c \
 	%reldir%/cmd_sweep.c \
+	%reldir%/cmd_view.c \
 	%reldir%/compare_print.c %reldir%/compare_print.h \
 	%reldir%/progress_adaptive.c %reldir%/progress_adaptive.h \
 	%reldir%/progress_snap.c %reldir%/progress_snap.h

@@ -799,3 +799,158 @@ done:
     free(area);
     return st;
 }
+
+/* ---- one step at a time (the live view) ----------------------------------- */
+
+struct radi_stepper {
+    int method, n, steps, last;
+    shooter sh;                 /* the shooting methods */
+    ambient amb;                /* sorted_ambient */
+    const double *F;
+    double *rho, *E, *area, *B, *shown, *work;
+    double emitted;             /* sum A E over the bands */
+};
+
+void radi_stepper_free(radi_stepper *s)
+{
+    if (!s)
+        return;
+    shooter_free(&s->sh);
+    free(s->rho);
+    free(s->E);
+    free(s->area);
+    free(s->B);
+    free(s->shown);
+    free(s->work);
+    free(s);
+}
+
+/* What is shown: B, or B with the ambient term (eq. 13). */
+static void stepper_show(radi_stepper *s)
+{
+    const size_t n3 = (size_t)s->n * NB;
+    if (s->method != RAD_RACE_SORTED_AMBIENT) {
+        memcpy(s->shown, s->B, sizeof *s->B * n3);
+        return;
+    }
+    double U[NB], a[NB];
+    unshot_power(&s->sh, U);
+    ambient_value(&s->amb, U, a);
+    ambient_display(s->n, s->B, s->rho, a, s->shown);
+}
+
+rad_status radi_stepper_new(radi_stepper **out, const rad_mesh *m, const double *F, int method,
+                            rad_error *err)
+{
+    const int n = m->nelements;
+    const size_t n3 = (size_t)(n ? n : 1) * NB;
+    *out = NULL;
+    if (method < 0 || method > RAD_STEP_JACOBI)
+        return radi_fail(err, RAD_ERR_INVALID, "no step method %d", method);
+    radi_stepper *s = calloc(1, sizeof *s);
+    if (!s)
+        return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the stepper");
+    s->method = method;
+    s->n = n;
+    s->F = F;
+    s->last = -1;
+    s->rho = malloc(sizeof *s->rho * n3);
+    s->E = malloc(sizeof *s->E * n3);
+    s->B = malloc(sizeof *s->B * n3);
+    s->shown = malloc(sizeof *s->shown * n3);
+    s->work = malloc(sizeof *s->work * n3);
+    s->area = element_areas(m);
+    if (!s->rho || !s->E || !s->B || !s->shown || !s->work || !s->area) {
+        radi_stepper_free(s);
+        return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the stepper");
+    }
+    for (int i = 0; i < n; i++)
+        for (int b = 0; b < NB; b++) {
+            s->rho[(size_t)i + (size_t)b * n] = m->elements[i].reflect[b];
+            s->E[(size_t)i + (size_t)b * n] = m->elements[i].emit[b];
+            s->emitted += s->area[i] * m->elements[i].emit[b];
+        }
+    memcpy(s->B, s->E, sizeof *s->B * (size_t)n * NB);
+    if (method == RAD_RACE_SHOOTING || method == RAD_RACE_SORTED ||
+        method == RAD_RACE_SORTED_AMBIENT) {
+        const rad_shoot_source src = {F, NULL};
+        rad_status st = shooter_init(&s->sh, m, &src, NULL, s->rho, s->E, s->area, 0,
+                                     method != RAD_RACE_SHOOTING, s->B, err);
+        if (st != RAD_OK) {
+            radi_stepper_free(s);
+            return st;
+        }
+        s->amb = ambient_init(n, s->area, s->rho);
+    }
+    stepper_show(s);
+    *out = s;
+    return RAD_OK;
+}
+
+/* One Jacobi sweep: B <- E + rho F B, every row from the last sweep's B. */
+static void jacobi_sweep(radi_stepper *s)
+{
+    const size_t n = (size_t)s->n;
+    for (int b = 0; b < NB; b++) {
+        const double *Bb = s->B + b * n;
+        double *h = s->work + b * n;
+        memset(h, 0, sizeof *h * n);
+        for (size_t j = 0; j < n; j++) /* column j of F: F_ij for every i */
+            for (size_t i = 0; i < n; i++)
+                h[i] += s->F[i + j * n] * Bb[j];
+        for (size_t i = 0; i < n; i++)
+            h[i] = s->E[i + b * n] + s->rho[i + b * n] * h[i];
+    }
+    memcpy(s->B, s->work, sizeof *s->B * n * NB);
+}
+
+rad_status radi_stepper_step(radi_stepper *s, rad_error *err)
+{
+    if (s->n == 0)
+        return RAD_OK;
+    if (s->method == RAD_RACE_GATHERING) {
+        const int i = s->steps % s->n; /* Gauss-Seidel, one element row */
+        gather_row(s->n, s->F + i, (size_t)s->n, s->rho, s->E, s->B, i);
+        s->last = i;
+    } else if (s->method == RAD_STEP_JACOBI) {
+        jacobi_sweep(s);
+        s->last = -1;
+    } else {
+        double shot[NB];
+        s->sh.err = err;
+        const int k = shooter_pick(&s->sh);
+        rad_status st = shooter_shoot(&s->sh, k, shot);
+        if (st != RAD_OK)
+            return st;
+        s->last = k;
+    }
+    s->steps++;
+    stepper_show(s);
+    return RAD_OK;
+}
+
+const double *radi_stepper_shown(const radi_stepper *s)
+{
+    return s->shown;
+}
+
+int radi_stepper_last(const radi_stepper *s)
+{
+    return s->last;
+}
+
+int radi_stepper_steps(const radi_stepper *s)
+{
+    return s->steps;
+}
+
+double radi_stepper_unshot(const radi_stepper *s)
+{
+    if (s->method == RAD_RACE_GATHERING || s->method == RAD_STEP_JACOBI || !(s->emitted > 0))
+        return NAN;
+    double U[NB], u = 0;
+    unshot_power(&s->sh, U);
+    for (int b = 0; b < NB; b++)
+        u += U[b];
+    return u / s->emitted;
+}

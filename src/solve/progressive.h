@@ -86,4 +86,26 @@ rad_status radi_race_run_source(const rad_mesh *mesh, const rad_shoot_source *sr
                                const double *Bref, const rad_race_options *opt, double *rms,
                                int *reached, rad_error *err);
 
+/* One method at a time, one step at a time, for a live view (the race's
+ * methods, and Jacobi sweeps for contrast): from B = E on the dense F, each
+ * radi_stepper_step is one shot (shooting, sorted, sorted_ambient), one
+ * element row gathered (gathering: Gauss-Seidel) or one sweep of every row
+ * from the last sweep's B (jacobi).  radi_stepper_shown is the radiosity
+ * the method displays (n x RAD_BANDS: with the ambient term for
+ * sorted_ambient, eq. 13), radi_stepper_last the element that shot or was
+ * gathered last (-1: none, or a sweep), radi_stepper_unshot the unshot
+ * power over the emitted power (NaN for the gathering methods).  F must
+ * outlive the stepper. */
+#define RAD_STEP_JACOBI RAD_RACE_METHODS
+#define RAD_STEP_METHODS (RAD_RACE_METHODS + 1)
+typedef struct radi_stepper radi_stepper;
+rad_status radi_stepper_new(radi_stepper **s, const rad_mesh *mesh, const double *F, int method,
+                            rad_error *err);
+rad_status radi_stepper_step(radi_stepper *s, rad_error *err);
+const double *radi_stepper_shown(const radi_stepper *s);
+int radi_stepper_last(const radi_stepper *s);
+int radi_stepper_steps(const radi_stepper *s);
+double radi_stepper_unshot(const radi_stepper *s);
+void radi_stepper_free(radi_stepper *s);
+
 #endif /* RAD_PROGRESSIVE_H */

@@ -23,12 +23,7 @@ fi
 "$RADIOSITY_PYTHON" "$top_srcdir/tests/python.py" > "$work/py.out" 2> "$work/py.err"
 status=$?
 ok $status "python.py exits 0 $(tail -c 300 "$work/py.err")"
-while IFS= read -r line; do
-  case $line in
-    "ok "*) ok 0 "${line#* - }" ;;
-    "not ok "*) ok 1 "${line#* - }" ;;
-  esac
-done < "$work/py.out"
+replay "$work/py.out"
 grep -q '^1\.\.[1-9]' "$work/py.out"; ok $? "python.py ran to its end"
 # the example: its closure and its two walls against Howell's C-11
 (cd "$work" && "$RADIOSITY_PYTHON" "$top_srcdir/examples/notebook.py" \

@@ -1,0 +1,970 @@
+/* view.js -- the browser side of `radiosity view`: draws the scene with
+ * WebGL as `radiosity render` would, and follows the solver's state.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The picture copies the rules of src/render/render.c (its camera, culling,
+ * z-buffer, smooth shading and tone mapping) so that a still at the scene's
+ * camera matches `radiosity render`'s PNG within 8-bit rounding:
+ *
+ *   - camera: fwd = unit(at - eye), right = unit(fwd x up), up' = right x fwd;
+ *     f = (height/2) / tan(fov/2); the image point of camera-space (x, y, z)
+ *     is (cx + f x/z, cy - f y/z), y down from the top, pixel centres at
+ *     (i + 0.5, j + 0.5) (render.c make_view, face_setup);
+ *   - one-sided faces: counter-clockwise seen from the front, back faces
+ *     culled; the nearest face wins, ties keep the face drawn first (faces
+ *     go in model order, depth test LESS); black background;
+ *   - smooth shading, per pixel: the ray through the pixel centre
+ *     (gl_FragCoord) meets the face's plane, and the point is located in
+ *     the face's plane frame (render.c draw_face, shade).  A quad element
+ *     is bilinear in its own (u, v), found by inverting the bilinear map
+ *     (render.c inverse_bilinear); other polygons are a fan of triangles
+ *     from vertex 0, barycentric (render.c fan_weights).  The GPU's own
+ *     interpolation would shift the shading by a fraction of a pixel (its
+ *     vertices snap to a sub-pixel grid), and its coverage rule differs
+ *     from render.c's (pixel centres on an edge are drawn by both faces);
+ *     so each triangle is drawn 1/8 pixel larger, and a pixel is kept when
+ *     its centre lies in the face (within PIXEL_TOLERANCE): no cracks at
+ *     T-junctions, and the silhouettes of render.c;
+ *   - element edges (the outlines): pixels whose centre lies within 0.55
+ *     pixel of an edge line of the face drawn there, black (render.c
+ *     EDGE_HALF_WIDTH, near_edge);
+ *   - emitters are drawn like every face (face_emits only chooses the
+ *     automatic exposure, which the server sends);
+ *   - tone: byte = floor(255 srgb(exposure B) + 0.5), per pixel, from the
+ *     interpolated linear radiosity (render.c rad_tone_byte; the curve of
+ *     IEC 61966-2-1:1999 eq. (5.2), rad_srgb_encode).
+ *
+ * Coordinates go to the GPU relative to the centre C of the scene's
+ * bounding box, so that a scene far from its origin keeps its precision.
+ *
+ * ?still=1: no panel, no event stream; fetch the scene and the state once,
+ * draw, then set the title to "ready" and add an element id="ready".
+ */
+'use strict';
+
+(function () {
+
+const STILL = new URLSearchParams(location.search).get('still') === '1';
+if (STILL)
+    document.documentElement.classList.add('still');
+
+const $ = (id) => document.getElementById(id);
+const canvas = $('scene');
+
+/* ---- small vector helpers (arrays [x, y, z]) ---------------------------- */
+
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+const scale = (a, s) => [a[0] * s, a[1] * s, a[2] * s];
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                         a[0] * b[1] - a[1] * b[0]];
+const norm = (a) => Math.sqrt(dot(a, a));
+const unit = (a) => scale(a, 1 / norm(a));
+const clamp = (x, lo, hi) => Math.min(hi, Math.max(lo, x));
+
+/* ---- the shaders -------------------------------------------------------- */
+
+/* Faces: every GL vertex carries its triangle's face constants (all
+ * relative to C): the unit normal n, the plane axis a1 (a2 = n x a1) and
+ * vertex 0's offsets along them; the triangle's corners 1 to 3 in the
+ * plane frame (corner 0 is its origin); their radiosity, 4 x (r, g, b)
+ * packed in 3 vec4.  A quad element is one bilinear patch over both its
+ * triangles (slots 0 1 2 3 = its corners); a fan triangle (0, i, i+1)
+ * uses slots 0 1 2.  aPos.w = 8 slot + kind: the slot of this vertex;
+ * the kind 4 for a quad, else the fan triangle's boundary edges besides
+ * 1-2: +1 for edge 0-1, +2 for edge 2-0. */
+const FACE_VS = `
+attribute vec4 aPos;   // position - C; w = 8 slot + kind
+attribute vec4 aNrm;   // n; w = (P0 - C).n
+attribute vec4 aAx1;   // a1; w = (P0 - C).a1
+attribute vec4 aQa;    // corners 1 and 2 in the plane frame
+attribute vec4 aQb;    // corner 3; z = (P0 - C).a2
+attribute vec4 aCa, aCb, aCc;   // linear radiosity of the 4 corners
+uniform mat4 uMVP;
+uniform vec2 uViewHalf;    // half the viewport, pixels
+varying vec4 vNrm, vAx1, vQa, vQb, vCa, vCb, vCc;
+
+/* Pixels each edge moves out: more than the rasteriser's snapping of
+ * vertices (1/16 pixel and less); the fragment shader cuts the face. */
+const float GROW = 0.125;
+
+vec2 corner(float k) {
+    return k < 0.5 ? vec2(0.0) : k < 1.5 ? aQa.xy : k < 2.5 ? aQa.zw : aQb.xy;
+}
+
+/* Window position (pixels from the centre, y up) of a plane-frame point. */
+vec4 project(vec2 q) {
+    vec3 a2 = cross(aNrm.xyz, aAx1.xyz);
+    vec3 p0 = aNrm.xyz * aNrm.w + aAx1.xyz * aAx1.w + a2 * aQb.z;
+    vec4 c = uMVP * vec4(p0 + aAx1.xyz * q.x + a2 * q.y, 1.0);
+    return vec4(c.xy / c.w * uViewHalf, c.w, 0.0);
+}
+
+/* The offset that moves both edges at corner s (between p and n) out by
+ * GROW, the polygon counter-clockwise on the screen: a mitre, at most
+ * GROW sqrt(2/1e-3) = 5.6 pixels long at the sharpest corners of faces
+ * seen edge-on (what it adds outside the face is cut anyway). */
+vec2 grow(vec2 p, vec2 s, vec2 n) {
+    vec2 e1 = s - p, e2 = n - s;
+    if (!(dot(e1, e1) > 0.0 && dot(e2, e2) > 0.0))
+        return vec2(0.0);
+    vec2 n1 = normalize(vec2(e1.y, -e1.x)), n2 = normalize(vec2(e2.y, -e2.x));
+    return GROW * (n1 + n2) / max(1.0 + dot(n1, n2), 1e-3);
+}
+
+void main() {
+    float slot = floor(aPos.w / 8.0), kind = aPos.w - 8.0 * slot;
+    float m = kind > 3.5 ? 4.0 : 3.0;
+    vec4 s = project(corner(slot));
+    vec4 p = project(corner(mod(slot + m - 1.0, m))), n = project(corner(mod(slot + 1.0, m)));
+    vec4 pos = uMVP * vec4(aPos.xyz, 1.0);
+    if (s.z > 0.0 && p.z > 0.0 && n.z > 0.0)   /* wholly before the eye */
+        pos.xy += grow(p.xy, s.xy, n.xy) / uViewHalf * pos.w;
+    gl_Position = pos;
+    vNrm = aNrm;
+    vAx1 = aAx1;
+    vQa = aQa;
+    vQb = vec4(aQb.xyz, kind);
+    vCa = aCa;
+    vCb = aCb;
+    vCc = aCc;
+}`;
+
+const FACE_FS = `
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+precision highp float;
+#else
+precision mediump float;
+#endif
+uniform float uExposure;
+uniform vec3 uEye, uFwd, uRight, uUp;   // eye - C; render.c's camera frame
+uniform vec2 uHalf;                     // the image centre (cx, cy), pixels
+uniform float uF;                       // focal length, pixels
+uniform float uEdges;                   // 1: draw the element edges
+varying vec4 vNrm, vAx1, vQa, vQb, vCa, vCb, vCc;
+
+const float PIXEL_TOLERANCE = 1e-3;     // pixels: coverage, beyond rounding
+const float EDGE_HALF_WIDTH = 0.55;     // pixels: render.c's edge lines
+
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
+/* The point of the face's plane under the pixel centre, in the plane
+ * frame: the ray fwd + right (x - cx)/f + up (cy - y_top)/f meets the
+ * plane at depth t = n.(P0 - eye) / n.ray (render.c pixel_ray, draw_face);
+ * gl_FragCoord.y counts from the bottom, so cy - y_top = y - cy.  Also
+ * its derivatives along the screen's x and y (J[0], J[1]), which turn
+ * plane distances into pixels. */
+vec2 planePoint(out mat2 J) {
+    vec3 dx = uRight / uF, dy = uUp / uF;
+    vec3 r = uFwd + dx * (gl_FragCoord.x - uHalf.x) + dy * (gl_FragCoord.y - uHalf.y);
+    vec3 n = vNrm.xyz, a1 = vAx1.xyz, a2 = cross(n, a1);
+    float nr = dot(n, r), t = (vNrm.w - dot(uEye, n)) / nr;
+    float tx = -t * dot(n, dx) / nr, ty = -t * dot(n, dy) / nr;
+    vec2 ra = vec2(dot(r, a1), dot(r, a2));
+    J[0] = tx * ra + t * vec2(dot(dx, a1), dot(dx, a2));
+    J[1] = ty * ra + t * vec2(dot(dy, a1), dot(dy, a2));
+    return vec2(t * ra.x - (vAx1.w - dot(uEye, a1)), t * ra.y - (vQb.z - dot(uEye, a2)));
+}
+
+/* Signed distance in pixels from the pixel centre to the screen line of
+ * the edge a -> b, positive inside (the face is counter-clockwise in its
+ * plane frame); the plane distance over its screen gradient. */
+float edgePixels(vec2 p, mat2 J, vec2 a, vec2 b) {
+    vec2 d = b - a;
+    float len = length(d);
+    if (!(len > 0.0))
+        return 1e9;
+    vec2 m = vec2(-d.y, d.x) / len;
+    float g = length(vec2(dot(J[0], m), dot(J[1], m)));
+    return g > 0.0 ? dot(p - a, m) / g : 1e9;
+}
+
+/* The smallest signed pixel distance to the face's boundary edges that
+ * this triangle knows: a quad's four; a fan triangle's edge 1-2 and
+ * those of 0-1 and 2-0 that bound the polygon (the kind's flags). */
+float boundaryPixels(vec2 p, mat2 J, float kind) {
+    vec2 q0 = vec2(0.0), q1 = vQa.xy, q2 = vQa.zw, q3 = vQb.xy;
+    float e = edgePixels(p, J, q1, q2);
+    if (kind > 3.5)
+        return min(min(e, edgePixels(p, J, q0, q1)),
+                   min(edgePixels(p, J, q2, q3), edgePixels(p, J, q3, q0)));
+    if (mod(kind, 2.0) > 0.5)
+        e = min(e, edgePixels(p, J, q0, q1));
+    if (kind > 1.5)
+        e = min(e, edgePixels(p, J, q2, q0));
+    return e;
+}
+
+/* how far r lies outside [0, 1] */
+float outside01(float r) { return r < 0.0 ? -r : (r > 1.0 ? r - 1.0 : 0.0); }
+
+/* (u, v) of p in the quad P(u,v) = (1-u)(1-v) 0 + u(1-v) q1 + uv q2 + (1-u)v q3:
+ * the rule of render.c inverse_bilinear.  p = u e + v f + uv g; crossing
+ * with (e + v g) leaves k2 v^2 + k1 v + k0 = 0, solved in the
+ * cancellation-free form of Numerical Recipes (2nd ed., sec. 5.6); the root
+ * nearer [0, 1] is kept, then u by projection on e + v g. */
+vec2 inverseBilinear(vec2 p, vec2 q1, vec2 q2, vec2 q3) {
+    vec2 e = q1, f = q3, g = q2 - q1 - q3;
+    float k2 = cross2(g, f);
+    float k1 = cross2(e, f) + cross2(p, g);
+    float k0 = cross2(p, e);
+    float v;
+    if (k2 == 0.0) {
+        v = k1 != 0.0 ? -k0 / k1 : 0.0;
+    } else {
+        float s = sqrt(max(k1 * k1 - 4.0 * k0 * k2, 0.0));
+        float q = -0.5 * (k1 + (k1 >= 0.0 ? s : -s));
+        float r1 = q / k2;
+        float r2 = q != 0.0 ? k0 / q : r1;
+        v = outside01(r2) <= outside01(r1) ? r2 : r1;
+    }
+    v = clamp(v, 0.0, 1.0);
+    vec2 d = e + v * g, n = p - v * f;
+    float dd = dot(d, d);
+    float u = clamp(dd > 0.0 ? dot(n, d) / dd : 0.0, 0.0, 1.0);
+    return vec2(u, v);
+}
+
+/* Barycentric weights of p in the triangle (0, a, b), negative ones
+ * clamped to 0 and the rest renormalised (render.c fan_weights). */
+vec3 fanWeights(vec2 p, vec2 a, vec2 b) {
+    float d = cross2(a, b);
+    float wi = d != 0.0 ? cross2(p, b) / d : 0.0;
+    float wj = d != 0.0 ? cross2(a, p) / d : 0.0;
+    vec3 w = max(vec3(1.0 - wi - wj, wi, wj), 0.0);
+    float s = w.x + w.y + w.z;
+    return s > 0.0 ? w / s : vec3(1.0, 0.0, 0.0);
+}
+
+/* IEC 61966-2-1:1999 eq. (5.2), as render.c rad_srgb_encode */
+float srgbEncode(float c) {
+    if (!(c > 0.0)) return 0.0;
+    if (c >= 1.0) return 1.0;
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+/* render.c rad_tone_byte: floor(255 s + 0.5), as a fraction of 255 */
+float tone(float b) {
+    return floor(255.0 * srgbEncode(b * uExposure) + 0.5) / 255.0;
+}
+
+void main() {
+    vec3 c0 = vCa.xyz, c1 = vec3(vCa.w, vCb.xy), c2 = vec3(vCb.zw, vCc.x), c3 = vCc.yzw;
+    mat2 J;
+    vec2 p = planePoint(J);
+    float kind = vQb.w, inside = boundaryPixels(p, J, kind);
+    if (inside < -PIXEL_TOLERANCE)
+        discard;                       /* outside the face: render.c's coverage */
+    if (uEdges > 0.5 && abs(inside) < EDGE_HALF_WIDTH) {
+        gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
+        return;
+    }
+    vec3 b;
+    if (kind > 3.5) {
+        vec2 uv = inverseBilinear(p, vQa.xy, vQa.zw, vQb.xy);
+        float u = uv.x, v = uv.y;
+        b = (1.0 - u) * (1.0 - v) * c0 + u * (1.0 - v) * c1 + u * v * c2 + (1.0 - u) * v * c3;
+    } else {
+        vec3 w = fanWeights(p, vQa.xy, vQa.zw);
+        b = w.x * c0 + w.y * c1 + w.z * c2;
+    }
+    gl_FragColor = vec4(tone(b.r), tone(b.g), tone(b.b), 1.0);
+}`;
+
+/* Lines: the shooter's outline; uShift moves the line
+ * by a fraction of the viewport (NDC) to draw it thicker. */
+const LINE_VS = `
+attribute vec3 aPos;
+uniform mat4 uMVP;
+uniform vec2 uShift;
+void main() {
+    vec4 p = uMVP * vec4(aPos, 1.0);
+    p.xy += uShift * p.w;
+    gl_Position = p;
+}`;
+
+const LINE_FS = `
+precision mediump float;
+uniform vec4 uColour;
+void main() { gl_FragColor = uColour; }`;
+
+/* 8 attributes: the least WebGL 1 promises */
+const FACE_ATTRIBS = ['aPos', 'aNrm', 'aAx1', 'aQa', 'aQb', 'aCa', 'aCb', 'aCc'];
+const GEOM_FLOATS = 20;       // floats per GL vertex: aPos .. aQb
+const COLOUR_FLOATS = 12;     // 4 corners x (r, g, b)
+
+/* ---- what the page holds ------------------------------------------------ */
+
+const app = {
+    scene: null,          // /api/scene
+    geom: null,           // buildGeometry(scene)
+    state: null,          // the last state drawn
+    version: -Infinity,   // its version
+    pending: null,        // a newer state waiting for the next frame
+    gl: null, glp: null,  // the context and its programs and buffers
+    orbit: { yaw: 0, pitch: 0, zoom: 1 },
+    outlines: false,
+    showShooter: false,
+    frameQueued: false,
+    busy: false,          // a control request is on its way
+};
+
+/* ---- the camera (render.c make_view) ------------------------------------ */
+
+/* The camera of the picture: the scene's own, or orbited around `at`
+ * (yaw about the scene's up, pitch towards it, zoom along the view line).
+ * At the default view the scene's camera is returned untouched. */
+function currentCamera() {
+    const c = app.scene.camera, o = app.orbit;
+    if (o.yaw === 0 && o.pitch === 0 && o.zoom === 1)
+        return c;
+    const up = unit(c.up), off = sub(c.eye, c.at), dist = norm(off);
+    const h0 = unit(sub(off, scale(up, dot(off, up))));
+    const side = cross(up, h0);
+    const h = add(scale(h0, Math.cos(o.yaw)), scale(side, Math.sin(o.yaw)));
+    const el = elevation(c) + o.pitch;
+    const dir = add(scale(h, Math.cos(el)), scale(up, Math.sin(el)));
+    return { eye: add(c.at, scale(dir, dist * o.zoom)), at: c.at, up: c.up, fov: c.fov };
+}
+
+/* The angle of the scene camera's eye above the plane normal to up, at `at`. */
+function elevation(c) {
+    const off = sub(c.eye, c.at);
+    return Math.asin(clamp(dot(off, unit(c.up)) / norm(off), -1, 1));
+}
+
+/* The camera frame of render.c make_view: fwd, right = fwd x up, up' =
+ * right x fwd; f = (height/2) / tan(fov/2) in pixels; the eye relative
+ * to the scene's centre C. */
+function cameraFrame(c, width, height) {
+    const fwd = unit(sub(c.at, c.eye));
+    const right = unit(cross(fwd, c.up));
+    const up = cross(right, fwd);
+    const f = 0.5 * height / Math.tan(0.5 * c.fov * Math.PI / 180);
+    return { eye: sub(c.eye, app.geom.centre), fwd, right, up, f, width, height };
+}
+
+/* Near and far planes for the depth buffer: the scene's bounding box seen
+ * from the eye.  render.c clips at 1e-6 of the scene's size and keeps
+ * exact depths; a 24-bit z-buffer needs the near plane as far out as
+ * nothing visible is cut: half the box's distance times the cosine of
+ * the widest ray of the picture, and never below 1e-3 of the far plane. */
+function depthRange(v) {
+    const lo = sub(app.geom.lo, app.geom.centre), hi = sub(app.geom.hi, app.geom.centre);
+    let far = 0;
+    for (let k = 0; k < 8; k++) {
+        const p = [k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]];
+        far = Math.max(far, dot(sub(p, v.eye), v.fwd));
+    }
+    const out = [0, 1, 2].map((i) => Math.max(lo[i] - v.eye[i], 0, v.eye[i] - hi[i]));
+    const cosWidest = v.f / Math.hypot(v.f, v.width / 2, v.height / 2);
+    far = far > 0 ? far * 1.01 : 1;
+    const near = Math.max(0.5 * norm(out) * cosWidest, 1e-3 * far);
+    return { near, far: Math.max(far, 2 * near) };
+}
+
+/* Column-major clip matrix: clip x = (2f/W) x_c, clip y = (2f/H) y_c,
+ * clip w = z_c (camera space x right, y up, z forward as render.c
+ * to_camera), so x_s = W/2 + f x/z and y_s (from the top) = H/2 - f y/z. */
+function clipMatrix(v) {
+    const { near, far } = depthRange(v);
+    const a = (far + near) / (far - near), b = -2 * far * near / (far - near);
+    const row = (d, s) => [d[0] * s, d[1] * s, d[2] * s, -dot(d, v.eye) * s];
+    const r0 = row(v.right, 2 * v.f / v.width), r1 = row(v.up, 2 * v.f / v.height);
+    const r3 = row(v.fwd, 1), r2 = r3.map((x) => a * x);
+    r2[3] += b;
+    const m = new Float32Array(16);
+    [r0, r1, r2, r3].forEach((r, i) => r.forEach((x, j) => { m[4 * j + i] = x; }));
+    return m;
+}
+
+/* ---- geometry, uploaded once -------------------------------------------- */
+
+/* The vertex positions of a face, relative to the centre C. */
+function facePoints(face) {
+    const V = app.scene.vertices, C = app.geom.centre;
+    return face.map((i) => [V[3 * i] - C[0], V[3 * i + 1] - C[1], V[3 * i + 2] - C[2]]);
+}
+
+/* render.c's plane frame of a face: origin at vertex 0, a1 along edge 0-1,
+ * a2 = n x a1 with n the unit Newell normal (the sum of the fan's cross
+ * products, util/vec.h v3_newell); q: the vertices in that frame.  Null
+ * for a face with no area (render.c does not draw it). */
+function planeFrame(P) {
+    let n = [0, 0, 0];
+    for (let k = 1; k + 1 < P.length; k++)
+        n = add(n, cross(sub(P[k], P[0]), sub(P[k + 1], P[0])));
+    const nn = norm(n), e = sub(P[1], P[0]);
+    if (!(nn > 0) || !(norm(e) > 0))
+        return null;
+    n = scale(n, 1 / nn);
+    const a1 = unit(e), a2 = cross(n, a1);
+    const q = P.map((p) => [dot(sub(p, P[0]), a1), dot(sub(p, P[0]), a2)]);
+    return { n, a1, a2, q, o: [dot(P[0], n), dot(P[0], a1), dot(P[0], a2)] };
+}
+
+/* Every face as a fan of triangles from vertex 0, in model order (the
+ * z-buffer's tie rule).  corner[4 j + k] is the mesh vertex whose
+ * radiosity goes into colour slot k of GL vertex j (-1: none). */
+function buildGeometry(scene) {
+    let count = 0;
+    for (const f of scene.faces)
+        count += f.length >= 3 ? 3 * (f.length - 2) : 0;
+    const g = {
+        data: new Float32Array(GEOM_FLOATS * count),
+        corner: new Int32Array(4 * count).fill(-1),
+        count: 0,
+    };
+    app.geom = g;
+    boundingBox(g, scene.vertices);
+    scene.faces.forEach((face) => addFace(g, face));
+    g.colours = new Float32Array(COLOUR_FLOATS * g.count);
+    return g;
+}
+
+/* The triangles of one face, each vertex with its face constants. */
+function addFace(g, face) {
+    const n = face.length, P = n >= 3 ? facePoints(face) : null, fr = P && planeFrame(P);
+    if (!fr)
+        return;
+    const quad = n === 4, q = fr.q;
+    for (let i = 1; i + 1 < n; i++) {
+        const slots = quad ? [0, 1, 2, 3] : [0, i, i + 1];
+        const qa = [...q[slots[1]], ...q[slots[2]]], qb = quad ? q[3] : [0, 0];
+        const kind = quad ? 4 : (i === 1 ? 1 : 0) + (i + 2 === n ? 2 : 0);
+        for (const k of [0, i, i + 1]) {
+            const j = g.count++, slot = quad ? k : k === 0 ? 0 : k - i + 1;
+            g.data.set([...P[k], 8 * slot + kind, ...fr.n, fr.o[0], ...fr.a1, fr.o[1],
+                        ...qa, ...qb, fr.o[2], 0], GEOM_FLOATS * j);
+            slots.forEach((s, m) => { g.corner[4 * j + m] = face[s]; });
+        }
+    }
+}
+
+/* The bounding box of the vertices and its centre C. */
+function boundingBox(g, V) {
+    g.lo = [Infinity, Infinity, Infinity];
+    g.hi = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < V.length; i++) {
+        g.lo[i % 3] = Math.min(g.lo[i % 3], V[i]);
+        g.hi[i % 3] = Math.max(g.hi[i % 3], V[i]);
+    }
+    if (!(V.length > 0)) {
+        g.lo = [-1, -1, -1];
+        g.hi = [1, 1, 1];
+    }
+    g.centre = scale(add(g.lo, g.hi), 0.5);
+}
+
+/* The colour slots of every GL vertex from the vertex radiosity (r, g, b
+ * interleaved); a missing or null value counts as 0. */
+function fillColours(g, vb) {
+    const c = g.colours, corner = g.corner;
+    for (let s = 0; s < 4 * g.count; s++) {
+        const i = corner[s], o = 3 * s;
+        if (i >= 0 && 3 * i + 2 < vb.length) {
+            c[o] = vb[3 * i];
+            c[o + 1] = vb[3 * i + 1];
+            c[o + 2] = vb[3 * i + 2];
+        } else {
+            c[o] = c[o + 1] = c[o + 2] = 0;
+        }
+    }
+}
+
+/* ---- WebGL -------------------------------------------------------------- */
+
+function compile(gl, vs, fs, attribs) {
+    const prog = gl.createProgram();
+    for (const [type, src] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fs]]) {
+        const sh = gl.createShader(type);
+        gl.shaderSource(sh, src);
+        gl.compileShader(sh);
+        if (!gl.getShaderParameter(sh, gl.COMPILE_STATUS) && !gl.isContextLost())
+            throw new Error('shader: ' + gl.getShaderInfoLog(sh));
+        gl.attachShader(prog, sh);
+    }
+    attribs.forEach((name, i) => gl.bindAttribLocation(prog, i, name));
+    gl.linkProgram(prog);
+    if (!gl.getProgramParameter(prog, gl.LINK_STATUS) && !gl.isContextLost())
+        throw new Error('program: ' + gl.getProgramInfoLog(prog));
+    const u = (name) => gl.getUniformLocation(prog, name);
+    return { prog, u };
+}
+
+function buffer(gl, data, usage) {
+    const b = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, b);
+    gl.bufferData(gl.ARRAY_BUFFER, data, usage);
+    return b;
+}
+
+/* Programs and buffers; the geometry goes up once, the colours on every
+ * state.  Returns false when the browser has no WebGL. */
+function initGL() {
+    const opts = { antialias: false, alpha: false, depth: true,
+                   preserveDrawingBuffer: true, premultipliedAlpha: false };
+    const gl = canvas.getContext('webgl', opts) || canvas.getContext('experimental-webgl', opts);
+    if (!gl)
+        return false;
+    if (gl.getParameter(gl.MAX_VERTEX_ATTRIBS) < FACE_ATTRIBS.length)
+        throw new Error('too few vertex attributes');
+    const g = app.geom;
+    app.gl = gl;
+    app.glp = {
+        face: compile(gl, FACE_VS, FACE_FS, FACE_ATTRIBS),
+        line: compile(gl, LINE_VS, LINE_FS, ['aPos']),
+        geom: buffer(gl, g.data, gl.STATIC_DRAW),
+        colours: buffer(gl, g.colours, gl.DYNAMIC_DRAW),
+        shooter: buffer(gl, new Float32Array(0), gl.DYNAMIC_DRAW),
+        shooterCount: 0,
+    };
+    return true;
+}
+
+function attrib(gl, loc, buf, size, stride, offset) {
+    gl.bindBuffer(gl.ARRAY_BUFFER, buf);
+    gl.enableVertexAttribArray(loc);
+    gl.vertexAttribPointer(loc, size, gl.FLOAT, false, stride, offset);
+}
+
+/* Draw the picture with the current camera, state and overlays. */
+function draw() {
+    const gl = app.gl, p = app.glp;
+    if (!gl || gl.isContextLost() || !app.state)
+        return;
+    const v = cameraFrame(currentCamera(), canvas.width, canvas.height);
+    const mvp = clipMatrix(v);
+    gl.viewport(0, 0, canvas.width, canvas.height);
+    gl.clearColor(0, 0, 0, 1);         // render.c: background radiosity 0
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);             // strictly nearer wins, ties keep the first
+    gl.enable(gl.CULL_FACE);           // one-sided faces, CCW = front
+    gl.frontFace(gl.CCW);
+    gl.cullFace(gl.BACK);
+    drawFaces(gl, p, v, mvp);
+    for (let i = 1; i < FACE_ATTRIBS.length; i++) /* the lines use aPos alone */
+        gl.disableVertexAttribArray(i);
+    if (app.showShooter && p.shooterCount > 0)
+        drawLines(gl, p, mvp, p.shooter, p.shooterCount, [1, 0.1, 1, 1]);
+}
+
+function drawFaces(gl, p, v, mvp) {
+    const u = p.face.u;
+    gl.useProgram(p.face.prog);
+    gl.uniformMatrix4fv(u('uMVP'), false, mvp);
+    gl.uniform1f(u('uExposure'), app.scene.exposure);
+    gl.uniform3fv(u('uEye'), v.eye);
+    gl.uniform3fv(u('uFwd'), v.fwd);
+    gl.uniform3fv(u('uRight'), v.right);
+    gl.uniform3fv(u('uUp'), v.up);
+    gl.uniform2f(u('uHalf'), 0.5 * v.width, 0.5 * v.height);
+    gl.uniform2f(u('uViewHalf'), 0.5 * v.width, 0.5 * v.height);
+    gl.uniform1f(u('uF'), v.f);
+    gl.uniform1f(u('uEdges'), app.outlines ? 1 : 0);
+    for (let k = 0; k < 5; k++)
+        attrib(gl, k, p.geom, 4, 4 * GEOM_FLOATS, 16 * k);
+    for (let k = 0; k < 3; k++)
+        attrib(gl, 5 + k, p.colours, 4, 4 * COLOUR_FLOATS, 16 * k);
+    gl.drawArrays(gl.TRIANGLES, 0, app.geom.count);
+}
+
+/* The shooter's outline: segments in a colour, on top of everything (seen
+ * through what hides it), three pixels wide (shifted copies). */
+function drawLines(gl, p, mvp, buf, count, colour) {
+    gl.useProgram(p.line.prog);
+    gl.uniformMatrix4fv(p.line.u('uMVP'), false, mvp);
+    gl.uniform4fv(p.line.u('uColour'), colour);
+    attrib(gl, 0, buf, 3, 0, 0);
+    gl.disable(gl.DEPTH_TEST);
+    for (const [sx, sy] of [[0, 0], [-1, 0], [1, 0], [0, -1], [0, 1]]) {
+        gl.uniform2f(p.line.u('uShift'), 2 * sx / canvas.width, 2 * sy / canvas.height);
+        gl.drawArrays(gl.LINES, 0, count);
+    }
+}
+
+/* The new state's radiosity into the colour buffer, the shooter's
+ * outline into its own. */
+function uploadState(s) {
+    const gl = app.gl, p = app.glp, g = app.geom;
+    if (!gl || gl.isContextLost())
+        return;
+    fillColours(g, Array.isArray(s.vertex_b) ? s.vertex_b : []);
+    gl.bindBuffer(gl.ARRAY_BUFFER, p.colours);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, g.colours);
+    const f = shooterFace(s);
+    const pts = f ? facePoints(f) : [];
+    const seg = new Float32Array(6 * pts.length);
+    pts.forEach((q, k) => {
+        seg.set(q, 6 * k);
+        seg.set(pts[(k + 1) % pts.length], 6 * k + 3);
+    });
+    gl.bindBuffer(gl.ARRAY_BUFFER, p.shooter);
+    gl.bufferData(gl.ARRAY_BUFFER, seg, gl.DYNAMIC_DRAW);
+    p.shooterCount = 2 * pts.length;
+}
+
+/* The vertex indices of the element that shot last, or null. */
+function shooterFace(s) {
+    const i = s.shooter, faces = app.scene.faces;
+    return Number.isInteger(i) && i >= 0 && i < faces.length ? faces[i] : null;
+}
+
+/* ---- the picture's canvas and its mouse ---------------------------------- */
+
+/* width x height CSS pixels; the backing store follows devicePixelRatio
+ * outside still mode (the view is the same: f scales with the height). */
+function sizeCanvas() {
+    const w = app.scene.width, h = app.scene.height;
+    const dpr = STILL ? 1 : (window.devicePixelRatio || 1);
+    canvas.style.width = w + 'px';
+    canvas.style.height = h + 'px';
+    canvas.width = Math.round(w * dpr);
+    canvas.height = Math.round(h * dpr);
+}
+
+function requestDraw() {
+    if (app.frameQueued)
+        return;
+    app.frameQueued = true;
+    requestAnimationFrame(() => {
+        app.frameQueued = false;
+        if (app.pending) {
+            const s = app.pending;
+            app.pending = null;
+            applyState(s);
+        }
+        draw();
+    });
+}
+
+/* Drag to orbit around `at`, wheel to zoom. */
+function attachMouse() {
+    let drag = null;
+    canvas.addEventListener('pointerdown', (e) => {
+        drag = { x: e.clientX, y: e.clientY };
+        canvas.setPointerCapture(e.pointerId);
+    });
+    canvas.addEventListener('pointermove', (e) => {
+        if (!drag)
+            return;
+        const o = app.orbit, el0 = elevation(app.scene.camera), lim = 89 * Math.PI / 180;
+        o.yaw -= 0.01 * (e.clientX - drag.x);
+        o.pitch = clamp(el0 + o.pitch + 0.01 * (e.clientY - drag.y), -lim, lim) - el0;
+        drag = { x: e.clientX, y: e.clientY };
+        requestDraw();
+    });
+    const end = () => { drag = null; };
+    canvas.addEventListener('pointerup', end);
+    canvas.addEventListener('pointercancel', end);
+    canvas.addEventListener('wheel', (e) => {
+        e.preventDefault();
+        const dy = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
+        app.orbit.zoom = clamp(app.orbit.zoom * Math.exp(0.001 * dy), 0.02, 50);
+        requestDraw();
+    }, { passive: false });
+}
+
+function resetView() {
+    app.orbit = { yaw: 0, pitch: 0, zoom: 1 };
+    requestDraw();
+}
+
+/* ---- the state ------------------------------------------------------------ */
+
+/* A state from the stream or a fetch: only a newer one is drawn, at the
+ * next animation frame (a burst of messages draws once). */
+function receiveState(s) {
+    if (!s || typeof s !== 'object' || !(s.version >= app.version))
+        return;
+    app.version = s.version;
+    app.pending = s;
+    requestDraw();
+}
+
+function applyState(s) {
+    app.state = s;
+    uploadState(s);
+    if (!STILL) {
+        showReadouts(s);
+        drawPlot(s.rms_history || []);
+    }
+}
+
+/* ---- the panel ------------------------------------------------------------ */
+
+const fmt = (x, digits) => (typeof x === 'number' && isFinite(x) ? x.toPrecision(digits || 3)
+                                                                   : '\u2013');
+
+function showReadouts(s) {
+    $('state-method').textContent = s.method || '?';
+    $('state-running').textContent = s.running ? 'running' : 'paused';
+    $('state-step').textContent = Number.isInteger(s.step) ? String(s.step) : '\u2013';
+    $('state-sps').textContent = fmt(s.shots_per_second);
+    $('state-unshot').textContent = typeof s.unshot === 'number'
+        ? fmt(100 * s.unshot) + ' %' : 'n/a (' + (s.method || '') + ')';
+    $('state-rms').textContent = fmt(s.rms, 4);
+    $('state-shooter').textContent = describeShooter(s.shooter);
+    $('run').disabled = !!s.running;
+    $('pause').disabled = !s.running;
+    const sel = $('method');
+    if (document.activeElement !== sel && !app.busy && s.method)
+        sel.value = s.method;
+}
+
+/* "element 12 (surface 3, object tallbox)" */
+function describeShooter(i) {
+    const sc = app.scene;
+    if (!Number.isInteger(i) || i < 0)
+        return 'none';
+    if (i >= sc.elements)
+        return 'patch ' + i;
+    const surf = sc.surface ? sc.surface[i] : undefined;
+    let text = 'element ' + i + (surf !== undefined ? ' (surface ' + surf : '');
+    const obj = (sc.objects || []).find((o) => (o.surfaces || []).includes(surf));
+    if (obj)
+        text += ', object ' + obj.name;
+    return text + (surf !== undefined ? ')' : '');
+}
+
+function showMessage(text, isError) {
+    const m = $('message');
+    m.textContent = text || '';
+    m.className = isError ? 'error' : '';
+}
+
+function setConnection(text) {
+    $('connection').textContent = text;
+}
+
+/* POST /api/control with the given query parameters; a 400's reason is
+ * shown in the panel. */
+async function control(params) {
+    app.busy = true;
+    try {
+        const r = await fetch('api/control?' + new URLSearchParams(params), { method: 'POST' });
+        let body = null;
+        try {
+            body = await r.json();
+        } catch (e) {
+            body = null;
+        }
+        if (r.ok)
+            showMessage('');
+        else
+            showMessage('the server refused ' + params.action + ': ' +
+                        ((body && body.error) || 'HTTP ' + r.status), true);
+    } catch (e) {
+        showMessage('the server did not answer: ' + e.message, true);
+    } finally {
+        app.busy = false;
+    }
+}
+
+function stepCount() {
+    const k = parseInt($('steps').value, 10);
+    return Number.isInteger(k) && k >= 1 ? k : 1;
+}
+
+function attachPanel() {
+    const sel = $('method');
+    for (const m of app.scene.methods || []) {
+        const o = document.createElement('option');
+        o.value = o.textContent = m;
+        sel.appendChild(o);
+    }
+    sel.addEventListener('change', () => control({ action: 'reset', method: sel.value }));
+    $('run').addEventListener('click', () => control({ action: 'run' }));
+    $('pause').addEventListener('click', () => control({ action: 'pause' }));
+    $('step').addEventListener('click', () => control({ action: 'step', steps: stepCount() }));
+    $('reset').addEventListener('click', () => control({ action: 'reset', method: sel.value }));
+    $('outlines').addEventListener('change', (e) => { app.outlines = e.target.checked; requestDraw(); });
+    $('highlight').addEventListener('change', (e) => { app.showShooter = e.target.checked; requestDraw(); });
+    $('reset-view').addEventListener('click', resetView);
+    app.outlines = $('outlines').checked;
+    app.showShooter = $('highlight').checked;
+    const sc = app.scene;
+    $('scene-info').textContent = sc.elements + ' elements, ' + sc.vertices.length / 3 +
+        ' vertices, exposure ' + fmt(sc.exposure, 4);
+}
+
+/* ---- the error plot: rms against step, log axis ----------------------------- */
+
+function drawPlot(hist) {
+    const c = $('plot'), ctx = c.getContext('2d');
+    const dpr = window.devicePixelRatio || 1, W = c.clientWidth || 300, H = c.clientHeight || 180;
+    if (c.width !== Math.round(W * dpr) || c.height !== Math.round(H * dpr)) {
+        c.width = Math.round(W * dpr);
+        c.height = Math.round(H * dpr);
+    }
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, W, H);
+    ctx.font = '11px sans-serif';
+    ctx.fillStyle = '#ccc';
+    const pts = hist.filter((p) => Array.isArray(p) && isFinite(p[0]) && p[1] > 0 && isFinite(p[1]));
+    if (!pts.length) {
+        ctx.fillText('no error to plot yet', 50, H / 2);
+        return;
+    }
+    const box = { l: 44, r: W - 8, t: 8, b: H - 22 };
+    const s0 = pts[0][0], s1 = Math.max(pts[pts.length - 1][0], s0 + 1);
+    const logs = pts.map((p) => Math.log10(p[1]));
+    let d0 = Math.floor(Math.min(...logs)), d1 = Math.ceil(Math.max(...logs));
+    if (d1 <= d0)
+        d1 = d0 + 1;
+    const X = (s) => box.l + (box.r - box.l) * (s - s0) / (s1 - s0);
+    const Y = (l) => box.b - (box.b - box.t) * (l - d0) / (d1 - d0);
+    plotAxes(ctx, box, d0, d1, s0, s1, Y);
+    ctx.strokeStyle = '#6cf';
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    pts.forEach((p, i) => (i ? ctx.lineTo : ctx.moveTo).call(ctx, X(p[0]), Y(logs[i])));
+    ctx.stroke();
+}
+
+/* Decade grid lines labelled 1e-k, the step range under the axis. */
+function plotAxes(ctx, box, d0, d1, s0, s1, Y) {
+    const every = Math.max(1, Math.ceil((d1 - d0) / 6));
+    ctx.strokeStyle = '#444';
+    ctx.lineWidth = 1;
+    ctx.textAlign = 'right';
+    for (let d = d0; d <= d1; d += every) {
+        ctx.beginPath();
+        ctx.moveTo(box.l, Y(d));
+        ctx.lineTo(box.r, Y(d));
+        ctx.stroke();
+        ctx.fillText('1e' + d, box.l - 4, Y(d) + 4);
+    }
+    ctx.strokeRect(box.l, box.t, box.r - box.l, box.b - box.t);
+    ctx.textAlign = 'left';
+    ctx.fillText('step ' + s0, box.l, box.b + 15);
+    ctx.textAlign = 'right';
+    ctx.fillText(String(s1), box.r, box.b + 15);
+    ctx.textAlign = 'center';
+    ctx.fillText('rms (log)', (box.l + box.r) / 2, box.b + 15);
+}
+
+/* ---- talking to the server -------------------------------------------------- */
+
+async function getJSON(path) {
+    const r = await fetch(path, { cache: 'no-store' });
+    if (!r.ok) {
+        let reason = 'HTTP ' + r.status;
+        try {
+            reason = (await r.json()).error || reason;
+        } catch (e) { /* not JSON: keep the status */ }
+        throw new Error(path + ': ' + reason);
+    }
+    return r.json();
+}
+
+/* The stream of states; EventSource reconnects by itself.  After a
+ * reconnection any version is accepted (the server may have restarted). */
+function listen() {
+    const es = new EventSource('api/events');
+    es.addEventListener('state', (ev) => {
+        let s;
+        try {
+            s = JSON.parse(ev.data);
+        } catch (e) {
+            showMessage('a state from the server was not JSON', true);
+            return;
+        }
+        receiveState(s);
+    });
+    es.onopen = () => {
+        app.version = -Infinity;
+        setConnection('live');
+    };
+    es.onerror = () => setConnection(es.readyState === EventSource.CLOSED
+        ? 'disconnected (reload to retry)' : 'connection lost, retrying\u2026');
+}
+
+/* ---- start ------------------------------------------------------------------- */
+
+function noWebGL(reason) {
+    canvas.hidden = true;
+    const m = $('nogl');
+    m.hidden = false;
+    m.textContent = 'The picture needs WebGL, which this browser does not provide (' +
+        reason + ').  The panel still works.';
+}
+
+function startGL() {
+    try {
+        if (!initGL()) {
+            noWebGL('no WebGL context');
+            return false;
+        }
+    } catch (e) {
+        noWebGL(e.message);
+        return false;
+    }
+    canvas.addEventListener('webglcontextlost', (e) => {
+        e.preventDefault();
+        showMessage('the WebGL context was lost; waiting for it to come back', true);
+    });
+    canvas.addEventListener('webglcontextrestored', () => {
+        initGL();
+        showMessage('');
+        if (app.state)
+            app.pending = app.pending || app.state;
+        requestDraw();
+    });
+    return true;
+}
+
+async function startStill() {
+    try {
+        app.scene = await getJSON('api/scene');
+        app.geom = buildGeometry(app.scene);
+        sizeCanvas();
+        if (!startGL())
+            throw new Error('no WebGL');
+        applyState(await getJSON('api/state'));
+        draw();
+        app.gl.finish();
+        /* two frames: the picture is on the screen before "ready" */
+        requestAnimationFrame(() => requestAnimationFrame(() => {
+            const r = document.createElement('div');
+            r.id = 'ready';
+            r.hidden = true;
+            document.body.appendChild(r);
+            document.title = 'ready';
+        }));
+    } catch (e) {
+        document.title = 'error: ' + e.message;
+        const m = $('nogl');
+        m.hidden = false;
+        m.textContent = 'error: ' + e.message;
+    }
+}
+
+async function startLive() {
+    setConnection('loading the scene\u2026');
+    try {
+        app.scene = await getJSON('api/scene');
+    } catch (e) {
+        showMessage('cannot load the scene: ' + e.message, true);
+        setConnection('no scene');
+        return;
+    }
+    app.geom = buildGeometry(app.scene);
+    sizeCanvas();
+    attachPanel();
+    if (startGL())
+        attachMouse();
+    listen();
+    try {
+        receiveState(await getJSON('api/state'));
+    } catch (e) {
+        showMessage('cannot load the state: ' + e.message, true);
+    }
+}
+
+(STILL ? startStill : startLive)();
+
+})();

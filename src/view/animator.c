@@ -1,0 +1,378 @@
+/* animator.c -- the changes asked for from the page, run frame by frame by
+ * the redistribution engine (George, Sillion & Greenberg 1990; animate.h)
+ * in a thread of its own.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The thread builds the animation of the scene (rad_anim_create: every
+ * surface meshed, F filled, frame 0 converged) when the session starts,
+ * while the methods race on the page, and then waits for frames.  A
+ * request's changes are checked against the session's change file
+ * (history.c) and appended to it under the lock; the thread runs each new
+ * frame with rad_anim_next on the whole text, so the frames run exactly as
+ * `radiosity animate` runs the same file.  Before a frame runs, the frame
+ * that undoes it is written from the scene as it then is and pushed on
+ * the undo stack; an undo appends the top of that stack as a frame of its
+ * own.  From the first frame on, the picture is the animation's: each
+ * shot (at most VIEW_ANIM_HZ a second, and the frame's last) publishes the
+ * radiosity of every element (absent ones 0, not drawn), and each frame
+ * publishes its moved geometry once, raising `geometry` so that the page
+ * fetches it again.  When a frame has converged, element_now holds its B
+ * numbered as a fresh solve of its scene numbers it
+ * (rad_anim_present_result), for a client that compares the two.
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "view/viewint.h"
+#include "radiosity/animate.h"
+#include "radiosity/mesh.h"
+#include "util/util.h"
+
+#define VIEW_ANIM_HZ 40.0       /* pictures a second at most */
+#define VIEW_MAX_QUEUED 64      /* frames waiting at most */
+
+typedef struct anim_pub {
+    view_session *s;
+    double last;                /* when the last picture was published */
+    int frame;                  /* the frame whose geometry was published */
+    double *Bv;                 /* vertex scratch of the animation's mesh */
+    double emitted;             /* frame 0's emitted power: the unit of unshot */
+} anim_pub;
+
+/* The vertex and element buffers at least this large (lock held); 0, or
+ * -1 when memory ran out. */
+static int reserve(view_session *s, size_t elements, size_t vertices)
+{
+    if (elements > s->cap_elements) {
+        double *e = realloc(s->element_b, sizeof *e * 3 * elements);
+        if (!e)
+            return -1;
+        s->element_b = e;
+        s->cap_elements = elements;
+    }
+    if (vertices > s->cap_vertices) {
+        double *v = realloc(s->vertex_b, sizeof *v * 3 * vertices);
+        if (!v)
+            return -1;
+        s->vertex_b = v;
+        s->cap_vertices = vertices;
+    }
+    return 0;
+}
+
+/* The animation's geometry as the scene to draw (lock held). */
+static int publish_geometry(view_session *s, const rad_anim *a)
+{
+    jbuf b;
+    jb_init(&b);
+    if (view_scene_json(s, rad_anim_mesh(a), rad_anim_scene(a), rad_anim_present(a), &b)) {
+        jb_free(&b);
+        return -1;
+    }
+    free(s->scene_json);
+    s->scene_json = b.s;
+    s->scene_len = b.len;
+    s->geometry++;
+    return 0;
+}
+
+/* The animation's radiosity to the page (takes the lock). */
+static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unshot)
+{
+    view_session *s = p->s;
+    const rad_mesh *m = rad_anim_mesh(a);
+    const size_t n = (size_t)m->nelements, nv = (size_t)m->nvertices;
+    const double *B = rad_anim_radiosity(a);
+    rad_error err;
+    rad_smooth_vertices_rule(m, B, p->Bv, s->opt.vertex_rule);
+    if (rad_smooth_across(rad_anim_scene(a), m, s->opt.crease, p->Bv, &err) != RAD_OK)
+        return -1;
+    pthread_mutex_lock(&s->lock);
+    int bad = reserve(s, n, nv);
+    if (!bad && p->frame != rad_anim_frame(a)) {
+        bad = publish_geometry(s, a);
+        p->frame = rad_anim_frame(a);
+    }
+    if (!bad) {
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < RAD_BANDS; k++)
+                s->element_b[3 * i + (size_t)k] = B[i + (size_t)k * n];
+        for (size_t v = 0; v < nv; v++)
+            for (int k = 0; k < RAD_BANDS; k++)
+                s->vertex_b[3 * v + (size_t)k] = p->Bv[v + (size_t)k * nv];
+        s->shown_elements = (int)n;
+        s->shown_vertices = (int)nv;
+        s->animate = 1;
+        s->running = s->pending = 0; /* the race stops: its F is frame 0's */
+        s->frame_shots = (int)shots;
+        s->unshot = unshot;
+        s->rms = NAN;
+        s->shooter = -1;
+        s->version++;
+        pthread_cond_broadcast(&s->changed);
+    }
+    pthread_mutex_unlock(&s->lock);
+    return bad;
+}
+
+static int stopping(view_session *s)
+{
+    pthread_mutex_lock(&s->lock);
+    const int stop = s->stopping;
+    pthread_mutex_unlock(&s->lock);
+    return stop;
+}
+
+/* The animation's fill reports here: silent (the terminal is the
+ * server's), and stopped with the server. */
+static int on_progress(void *user, const char *stage, double done, double total)
+{
+    (void)stage;
+    (void)done;
+    (void)total;
+    return stopping(user);
+}
+
+static int on_shot(void *user, const rad_anim_shot *shot)
+{
+    anim_pub *p = user;
+    if (shot->frame == 0)
+        return stopping(p->s); /* frame 0: the race is on the page */
+    const double now = radi_seconds();
+    if (now - p->last >= 1 / VIEW_ANIM_HZ || p->frame != shot->frame) {
+        if (publish_anim(p, shot->anim, shot->step, shot->unshot / p->emitted) != 0)
+            return 1;
+        p->last = now;
+    }
+    return stopping(p->s);
+}
+
+/* The frame just run, numbered as a fresh solve of its scene numbers it,
+ * into element_now (takes the lock). */
+static int frame_done(view_session *s, const rad_anim *a, const rad_anim_report *rep)
+{
+    rad_mesh pm;
+    double *B = NULL;
+    rad_error err;
+    if (rad_anim_present_result(a, &pm, &B, &err) != RAD_OK)
+        return -1;
+    const size_t n = (size_t)pm.nelements;
+    double *now = malloc(sizeof *now * 3 * (n ? n : 1));
+    for (size_t i = 0; now && i < n; i++)
+        for (int k = 0; k < RAD_BANDS; k++)
+            now[3 * i + (size_t)k] = B[i + (size_t)k * n];
+    rad_mesh_free(&pm);
+    free(B);
+    if (!now)
+        return -1;
+    pthread_mutex_lock(&s->lock);
+    free(s->element_now);
+    s->element_now = now;
+    s->n_now = (int)n;
+    s->frame_converged = rep->converged;
+    pthread_mutex_unlock(&s->lock);
+    return 0;
+}
+
+/* Run frame k of the session's change file (lock held on entry and on
+ * return, not while the frame runs).  0, or -1 with the failure set. */
+static int run_frame(view_session *s, anim_pub *p, rad_anim *a, int k)
+{
+    const size_t len = s->changes.len;
+    char *text = malloc(len ? len : 1);
+    const int undo = s->is_undo[k];
+    if (text)
+        memcpy(text, s->changes.s, len);
+    pthread_mutex_unlock(&s->lock);
+    rad_changes ch;
+    rad_anim_report rep;
+    rad_error err;
+    jbuf inv;
+    jb_init(&inv);
+    rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
+                         : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
+    free(text);
+    if (st == RAD_OK) {
+        if (!undo && view_inverse_frame(&inv, rad_anim_scene(a), &ch, k) != 0)
+            st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the undo frame");
+        if (st == RAD_OK)
+            st = rad_anim_next(a, &ch, &rep, &err);
+        rad_changes_free(&ch);
+    }
+    if (st == RAD_OK && (publish_anim(p, a, rep.shots, rep.unshot / p->emitted) != 0 ||
+                         frame_done(s, a, &rep) != 0))
+        st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory publishing frame %d", k);
+    pthread_mutex_lock(&s->lock);
+    if (st != RAD_OK) {
+        jb_free(&inv);
+        if (!s->stopping) {
+            s->anim_state = -1;
+            snprintf(s->anim_failure, sizeof s->anim_failure, "frame %d: %.200s", k,
+                     err.message);
+        }
+        return -1;
+    }
+    if (!undo) {
+        if (s->ninverse == s->cap_inverse) {
+            const int cap = s->cap_inverse ? 2 * s->cap_inverse : 16;
+            jbuf *more = realloc(s->inverse, sizeof *more * (size_t)cap);
+            if (!more) {
+                jb_free(&inv);
+                s->anim_state = -1;
+                snprintf(s->anim_failure, sizeof s->anim_failure, "out of memory for undo");
+                return -1;
+            }
+            s->inverse = more;
+            s->cap_inverse = cap;
+        }
+        s->inverse[s->ninverse++] = inv;
+    }
+    s->applied = k;
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    return 0;
+}
+
+static void *animator(void *arg)
+{
+    view_session *s = arg;
+    anim_pub p = {s, 0, 0, NULL, 1};
+    rad_anim *a = NULL;
+    rad_anim_report rep;
+    rad_error err;
+    rad_anim_options opt = s->anim_opt;
+    opt.on_shot = on_shot;
+    opt.shot_user = &p;
+    opt.ff.progress = on_progress;
+    opt.ff.progress_user = s;
+    rad_status st = rad_anim_create(&a, s->scene, &opt, &rep, &err);
+    if (st == RAD_OK &&
+        !(p.Bv = malloc(sizeof *p.Bv * RAD_BANDS * (size_t)(rad_anim_mesh(a)->nvertices + 1))))
+        st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the animation");
+    pthread_mutex_lock(&s->lock);
+    if (st != RAD_OK && !s->stopping) {
+        s->anim_state = -1;
+        snprintf(s->anim_failure, sizeof s->anim_failure, "%.250s", err.message);
+    } else if (st == RAD_OK) {
+        s->anim_state = 1;
+        p.emitted = rep.emitted > 0 ? rep.emitted : 1;
+    }
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    while (st == RAD_OK && !s->stopping) {
+        if (s->applied == s->frames) {
+            pthread_cond_wait(&s->anim_wake, &s->lock);
+            continue;
+        }
+        if (run_frame(s, &p, a, s->applied + 1) != 0)
+            break;
+    }
+    pthread_mutex_unlock(&s->lock);
+    rad_anim_free(a);
+    free(p.Bv);
+    return NULL;
+}
+
+int view_animator_start(view_session *s, rad_error *err)
+{
+    if (pthread_create(&s->animator, NULL, animator, s) != 0)
+        return radi_fail(err, RAD_ERR_NOMEM, "cannot start the animation's thread"), -1;
+    s->animator_started = 1;
+    return 0;
+}
+
+void view_animator_stop(view_session *s)
+{
+    pthread_mutex_lock(&s->lock);
+    s->stopping = 1;
+    pthread_cond_broadcast(&s->anim_wake);
+    pthread_mutex_unlock(&s->lock);
+    if (s->animator_started)
+        pthread_join(s->animator, NULL);
+    s->animator_started = 0;
+}
+
+/* Room for frame k's undo mark (lock held). */
+static int reserve_frames(view_session *s, int k)
+{
+    unsigned char *u = realloc(s->is_undo, (size_t)k + 2);
+    if (!u)
+        return -1;
+    memset(u + s->frames + 1, 0, (size_t)(k - s->frames) + 1);
+    s->is_undo = u;
+    return 0;
+}
+
+/* Append req (nf frames, checked) to the session (lock held). */
+static int append(view_session *s, const char *req, size_t len, int nf, int undo)
+{
+    if (reserve_frames(s, s->frames + nf) != 0 || view_history_append(&s->changes, req, len))
+        return -1;
+    for (int k = 1; k <= nf; k++)
+        s->is_undo[s->frames + k] = (unsigned char)undo;
+    s->frames += nf;
+    s->version++;
+    pthread_cond_broadcast(&s->anim_wake);
+    pthread_cond_broadcast(&s->changed);
+    return 0;
+}
+
+int view_queue_changes(view_session *s, const char *req, size_t len, char *why, size_t cap)
+{
+    int nf = 0, code = 0;
+    pthread_mutex_lock(&s->lock);
+    if (s->anim_state < 0) {
+        snprintf(why, cap, "the animation failed: %s", s->anim_failure);
+        code = 503;
+    } else if (s->frames - s->applied >= VIEW_MAX_QUEUED) {
+        snprintf(why, cap, "%d frames are waiting to run: try again when they have",
+                 s->frames - s->applied);
+        code = 429;
+    } else if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
+                                  req, len, &nf, why, cap) != 0) {
+        code = 400;
+    } else if (s->frames - s->applied + nf > VIEW_MAX_QUEUED) {
+        snprintf(why, cap, "%d frames at once: at most %d may wait", nf, VIEW_MAX_QUEUED);
+        code = 429;
+    } else if (append(s, req, len, nf, 0) != 0) {
+        snprintf(why, cap, "out of memory for the changes");
+        code = 500;
+    }
+    pthread_mutex_unlock(&s->lock);
+    return code;
+}
+
+int view_queue_undo(view_session *s, char *why, size_t cap)
+{
+    int code = 0, nf = 0;
+    pthread_mutex_lock(&s->lock);
+    if (s->anim_state <= 0 || s->frames != s->applied) {
+        snprintf(why, cap, "%s", s->anim_state < 0    ? "the animation failed"
+                                 : s->anim_state == 0 ? "the animation is still being built"
+                                                      : "frames are still running: undo when "
+                                                        "they are done");
+        code = 409;
+    } else if (s->ninverse == 0) {
+        snprintf(why, cap, "nothing to undo");
+        code = 409;
+    } else {
+        jbuf *inv = &s->inverse[s->ninverse - 1];
+        if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
+                               inv->s, inv->len, &nf, why, cap) != 0)
+            code = 500; /* the inverse of a frame that ran: cannot fail */
+        else if (append(s, inv->s, inv->len, nf, 1) != 0) {
+            snprintf(why, cap, "out of memory for the changes");
+            code = 500;
+        } else {
+            jb_free(inv);
+            s->ninverse--;
+        }
+    }
+    pthread_mutex_unlock(&s->lock);
+    return code;
+}

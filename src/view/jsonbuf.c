@@ -1,0 +1,85 @@
+/* jsonbuf.c -- a growable text buffer that writes JSON values.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * JSON as RFC 8259: numbers have no NaN or infinity (they are written
+ * null), strings escape the quote, the backslash and the control
+ * characters (section 7).
+ */
+#include <config.h>
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "view/viewint.h"
+
+void jb_init(jbuf *b)
+{
+    memset(b, 0, sizeof *b);
+}
+
+void jb_free(jbuf *b)
+{
+    free(b->s);
+    jb_init(b);
+}
+
+static int grow(jbuf *b, size_t more)
+{
+    if (b->failed)
+        return -1;
+    if (b->len + more + 1 <= b->cap)
+        return 0;
+    size_t cap = b->cap ? b->cap : 4096;
+    while (cap < b->len + more + 1)
+        cap *= 2;
+    char *s = realloc(b->s, cap);
+    if (!s) {
+        b->failed = 1;
+        return -1;
+    }
+    b->s = s;
+    b->cap = cap;
+    return 0;
+}
+
+void jb_printf(jbuf *b, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int k = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (k < 0 || grow(b, (size_t)k) != 0) {
+        b->failed = 1;
+        return;
+    }
+    va_start(ap, fmt);
+    vsnprintf(b->s + b->len, (size_t)k + 1, fmt, ap);
+    va_end(ap);
+    b->len += (size_t)k;
+}
+
+void jb_num(jbuf *b, double x, int exact)
+{
+    if (!isfinite(x))
+        jb_printf(b, "null");
+    else
+        jb_printf(b, exact ? "%.17g" : "%.9g", x);
+}
+
+void jb_str(jbuf *b, const char *s)
+{
+    jb_printf(b, "\"");
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        if (*p == '"' || *p == '\\')
+            jb_printf(b, "\\%c", *p);
+        else if (*p < 0x20)
+            jb_printf(b, "\\u%04x", *p);
+        else
+            jb_printf(b, "%c", *p);
+    }
+    jb_printf(b, "\"");
+}

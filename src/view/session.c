@@ -1,0 +1,345 @@
+/* session.c -- the viewer's state: one method stepping on the scene's F in
+ * a thread of its own, and what each step publishes to the page.
+ *
+ * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+ *
+ * The worker owns the stepper (progressive.h).  Requests never touch it:
+ * they set a command under the lock and wake the worker (view_command),
+ * so a request cannot race a step, and a step never waits for a slow
+ * browser.  After a step the worker smooths the displayed radiosity to the
+ * vertices as `radiosity solve` does (rad_smooth_vertices_rule, then
+ * rad_smooth_across with the same crease), takes the area-weighted RMS
+ * error against the converged solution (Cohen et al. 1988, eq. 14, of the
+ * band-averaged radiosity: rmserror.c), and publishes the lot under the
+ * lock, at most VIEW_PUBLISH_HZ times a second while running (every step
+ * when stepping or paused), raising `version` and waking the streams.
+ * While running, `rate` paces the steps (0: unpaced); the wait is on the
+ * condition variable, so pause and stop take effect at once.
+ */
+#include <config.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "view/viewint.h"
+#include "solve/solve.h"
+#include "compare/compare.h"
+#include "util/util.h"
+#include "radiosity/mesh.h"
+#include "radiosity/render.h"
+
+#define VIEW_PUBLISH_HZ 40.0    /* pictures a second at most while running */
+#define NB RAD_BANDS
+
+void radi_view_options_init(radi_view_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->address = "127.0.0.1";
+    o->method = RAD_RACE_SORTED_AMBIENT;
+    o->rate = 30;
+    o->max_connections = 16;
+    o->crease = 0;
+    o->announce = stdout;
+}
+
+int view_session_init(view_session *s, const rad_scene *scene, const rad_result *res,
+                      const radi_view_options *o, rad_error *err)
+{
+    const rad_mesh *m = &res->mesh;
+    const size_t n = (size_t)m->nelements, nv = (size_t)m->nvertices;
+    memset(s, 0, sizeof *s);
+    s->scene = scene;
+    s->mesh = m;
+    s->F = res->F;
+    s->Bref = res->B;
+    s->opt = *o;
+    s->rate = o->rate;
+    s->method = o->method;
+    s->reset_method = -1;
+    s->running = !o->paused;
+    s->shooter = -1;
+    s->area = malloc(sizeof *s->area * (n ? n : 1));
+    s->rho = malloc(sizeof *s->rho * (n ? n : 1) * NB);
+    s->Bv = malloc(sizeof *s->Bv * (nv ? nv : 1) * NB);
+    s->vertex_b = calloc((nv ? nv : 1) * NB, sizeof *s->vertex_b);
+    s->element_b = calloc((n ? n : 1) * NB, sizeof *s->element_b);
+    if (!s->area || !s->rho || !s->Bv || !s->vertex_b || !s->element_b) {
+        view_session_free(s);
+        return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the view"), -1;
+    }
+    s->cap_elements = n;
+    s->cap_vertices = nv;
+    s->shown_elements = (int)n;
+    s->shown_vertices = (int)nv;
+    s->exposure = rad_mesh_auto_exposure(m, res->B, RAD_EXPOSURE_REFLECTORS);
+    rad_anim_options_init(&s->anim_opt);
+    s->anim_opt.ff = o->ff;
+    jb_init(&s->changes);
+    jbuf js;
+    jb_init(&js);
+    if (view_scene_json(s, m, scene, NULL, &js) != 0) {
+        jb_free(&js);
+        view_session_free(s);
+        return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the view"), -1;
+    }
+    s->scene_json = js.s;
+    s->scene_len = js.len;
+    for (size_t i = 0; i < n; i++) {
+        s->area[i] = m->elements[i].area;
+        s->total_area += s->area[i];
+        for (int b = 0; b < NB; b++)
+            s->rho[i + b * n] = m->elements[i].reflect[b];
+    }
+    pthread_mutex_init(&s->lock, NULL);
+    pthread_cond_init(&s->wake, NULL);
+    pthread_cond_init(&s->changed, NULL);
+    pthread_cond_init(&s->anim_wake, NULL);
+    return 0;
+}
+
+void view_session_free(view_session *s)
+{
+    free(s->area);
+    free(s->rho);
+    free(s->Bv);
+    free(s->vertex_b);
+    free(s->element_b);
+    free(s->element_now);
+    free(s->scene_json);
+    free(s->is_undo);
+    for (int k = 0; k < s->ninverse; k++)
+        jb_free(&s->inverse[k]);
+    free(s->inverse);
+    jb_free(&s->changes);
+    s->area = s->rho = s->Bv = s->vertex_b = s->element_b = s->element_now = NULL;
+    s->scene_json = NULL;
+    s->is_undo = NULL;
+    s->inverse = NULL;
+    s->ninverse = 0;
+}
+
+/* Under the lock: the step's state into the published copy. */
+static void publish(view_session *s, const radi_stepper *st, int method, double sps)
+{
+    if (s->animate)
+        return; /* the picture is the animation's now (animator.c) */
+    const size_t n = (size_t)s->mesh->nelements, nv = (size_t)s->mesh->nvertices;
+    const double *B = radi_stepper_shown(st);
+    for (size_t i = 0; i < n; i++)
+        for (int b = 0; b < NB; b++)
+            s->element_b[3 * i + (size_t)b] = B[i + (size_t)b * n];
+    for (size_t v = 0; v < nv; v++)
+        for (int b = 0; b < NB; b++)
+            s->vertex_b[3 * v + (size_t)b] = s->Bv[v + (size_t)b * nv];
+    const rad_rms_input in = {(int)n, s->area, s->total_area, s->rho, NULL, B, s->Bref};
+    s->method = method;
+    s->step = radi_stepper_steps(st);
+    s->shooter = radi_stepper_last(st);
+    s->unshot = radi_stepper_unshot(st);
+    s->rms = radi_rms_eq14(&in);
+    s->sps = sps;
+    if (s->nhistory == VIEW_HISTORY) { /* keep every other point: the plot's whole run */
+        for (int k = 0; k < VIEW_HISTORY / 2; k++)
+            memcpy(s->history[k], s->history[2 * k + 1], sizeof s->history[k]);
+        s->nhistory = VIEW_HISTORY / 2;
+    }
+    if (s->nhistory == 0 || s->history[s->nhistory - 1][0] != s->step) {
+        s->history[s->nhistory][0] = s->step;
+        s->history[s->nhistory][1] = s->rms;
+        s->nhistory++;
+    }
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+}
+
+/* The displayed radiosity to the vertices (outside the lock). */
+static int smooth(view_session *s, const radi_stepper *st)
+{
+    rad_error err;
+    rad_smooth_vertices_rule(s->mesh, radi_stepper_shown(st), s->Bv, s->opt.vertex_rule);
+    return rad_smooth_across(s->scene, s->mesh, s->opt.crease, s->Bv, &err) == RAD_OK ? 0 : -1;
+}
+
+static void deadline_after(struct timespec *ts, double seconds)
+{
+    clock_gettime(CLOCK_REALTIME, ts);
+    double t = (double)ts->tv_sec + 1e-9 * (double)ts->tv_nsec + seconds;
+    ts->tv_sec = (time_t)t;
+    ts->tv_nsec = (long)((t - (double)ts->tv_sec) * 1e9);
+    if (ts->tv_nsec >= 1000000000L) {
+        ts->tv_sec++;
+        ts->tv_nsec -= 1000000000L;
+    }
+}
+
+/* Wait (lock held) until there is a step to take; returns the method to
+ * reset to (-1: none), or -2 to stop. */
+static int wait_for_work(view_session *s, double last_step)
+{
+    for (;;) {
+        if (s->stopping)
+            return -2;
+        if (s->reset_method >= 0) {
+            const int m = s->reset_method;
+            s->reset_method = -1;
+            return m;
+        }
+        if (s->animate) { /* the race is over: the scene changed */
+            pthread_cond_wait(&s->wake, &s->lock);
+            continue;
+        }
+        if (s->pending > 0)
+            return -1;
+        if (s->running && s->failure[0] == '\0') {
+            const double gap = s->rate > 0 ? 1 / s->rate - (radi_seconds() - last_step) : 0;
+            if (gap <= 0)
+                return -1;
+            struct timespec ts;
+            deadline_after(&ts, gap);
+            pthread_cond_timedwait(&s->wake, &s->lock, &ts);
+            continue;
+        }
+        pthread_cond_wait(&s->wake, &s->lock);
+    }
+}
+
+/* A fresh stepper of method m, published at step 0. */
+static radi_stepper *fresh(view_session *s, int m)
+{
+    radi_stepper *st = NULL;
+    rad_error err;
+    if (radi_stepper_new(&st, s->mesh, s->F, m, &err) != RAD_OK || smooth(s, st) != 0) {
+        radi_stepper_free(st);
+        pthread_mutex_lock(&s->lock);
+        snprintf(s->failure, sizeof s->failure, "%s", "out of memory for the method");
+        s->version++;
+        pthread_cond_broadcast(&s->changed);
+        pthread_mutex_unlock(&s->lock);
+        return NULL;
+    }
+    pthread_mutex_lock(&s->lock);
+    s->nhistory = 0;
+    publish(s, st, m, 0);
+    pthread_mutex_unlock(&s->lock);
+    return st;
+}
+
+static void *worker(void *arg)
+{
+    view_session *s = arg;
+    int method = s->method;
+    radi_stepper *st = fresh(s, method);
+    double last_step = radi_seconds(), last_pub = 0, t_rate = radi_seconds();
+    int since = 0;
+    pthread_mutex_lock(&s->lock);
+    for (;;) {
+        const int r = wait_for_work(s, last_step);
+        if (r == -2)
+            break;
+        if (r >= 0 || !st) {
+            pthread_mutex_unlock(&s->lock);
+            radi_stepper_free(st);
+            method = r >= 0 ? r : method;
+            st = fresh(s, method);
+            since = 0;
+            t_rate = radi_seconds();
+            pthread_mutex_lock(&s->lock);
+            if (!st)
+                s->running = s->pending = 0;
+            continue;
+        }
+        const int stepping = s->pending > 0;
+        if (stepping)
+            s->pending--;
+        pthread_mutex_unlock(&s->lock);
+        rad_error err;
+        const rad_status ok = radi_stepper_step(st, &err);
+        last_step = radi_seconds();
+        since++;
+        const int show = stepping || last_step - last_pub >= 1 / VIEW_PUBLISH_HZ;
+        if (ok == RAD_OK && show && smooth(s, st) != 0)
+            snprintf(err.message, sizeof err.message, "%s", "out of memory smoothing");
+        pthread_mutex_lock(&s->lock);
+        if (ok != RAD_OK) {
+            snprintf(s->failure, sizeof s->failure, "%.255s", err.message);
+            s->running = s->pending = 0;
+            s->version++;
+            pthread_cond_broadcast(&s->changed);
+        } else if (show) {
+            const double dt = last_step - t_rate;
+            publish(s, st, method, dt > 0 ? since / dt : 0);
+            last_pub = last_step;
+            if (dt > 1) { /* the rate over the last second or so */
+                since = 0;
+                t_rate = last_step;
+            }
+        }
+    }
+    pthread_mutex_unlock(&s->lock);
+    radi_stepper_free(st);
+    return NULL;
+}
+
+int view_session_start(view_session *s, rad_error *err)
+{
+    if (pthread_create(&s->worker, NULL, worker, s) != 0)
+        return radi_fail(err, RAD_ERR_NOMEM, "cannot start the solver's thread"), -1;
+    s->worker_started = 1;
+    return 0;
+}
+
+void view_session_stop(view_session *s)
+{
+    pthread_mutex_lock(&s->lock);
+    s->stopping = 1;
+    pthread_cond_broadcast(&s->wake);
+    pthread_cond_broadcast(&s->changed);
+    pthread_mutex_unlock(&s->lock);
+    if (s->worker_started)
+        pthread_join(s->worker, NULL);
+    s->worker_started = 0;
+}
+
+int view_command(view_session *s, view_action a, int method, int steps, double rate)
+{
+    pthread_mutex_lock(&s->lock);
+    if (s->animate && a != VIEW_STOP && a != VIEW_PAUSE) {
+        pthread_mutex_unlock(&s->lock);
+        return -1;
+    }
+    if (rate >= 0)
+        s->rate = rate;
+    switch (a) {
+    case VIEW_RUN:
+        s->running = 1;
+        break;
+    case VIEW_PAUSE:
+        s->running = 0;
+        s->pending = 0;
+        break;
+    case VIEW_STEP:
+        s->running = 0;
+        s->pending = steps;
+        break;
+    case VIEW_RESET:
+        s->reset_method = method >= 0 ? method : s->method;
+        s->pending = 0;
+        s->failure[0] = '\0';
+        break;
+    case VIEW_STOP:
+        s->stopping = 1;
+        break;
+    }
+    if (a == VIEW_RUN && method >= 0 && method != s->method) {
+        s->reset_method = method; /* run another method: from the start */
+        s->pending = 0;
+    }
+    s->version++;               /* running/paused is state too */
+    pthread_cond_broadcast(&s->wake);
+    pthread_cond_broadcast(&s->changed);
+    pthread_mutex_unlock(&s->lock);
+    return 0;
+}
