@@ -77,6 +77,15 @@ if [ "${BENCH_HC:-1}" = 1 ]; then
 fi
 
 echo
+echo "== the live viewer (radiosity view) on the moving Cornell box, from an HTTP client"
+echo "   (BENCH_VIEW=0 skips; ~1 min)"
+if [ "${BENCH_VIEW:-1}" = 1 ] && "$rad" view --help > /dev/null 2>&1 &&
+   ! "$rad" view --method magic x 2>&1 | grep -q "built without"; then
+  python3 "$(dirname "$0")/view.py" "$rad" "$data/view" \
+    "$data/cornell-moving-box.scene" box 3 || echo "   (failed)"
+fi
+
+echo
 echo "== hidden surfaces: many small blockers between a lamp and a floor (bench/scenes.py),"
 echo "   one thread, per mode (BENCH_HIDDEN=0 skips; bench/hidden.sh says the knobs)"
 if [ "${BENCH_HIDDEN:-1}" = 1 ]; then
