@@ -193,6 +193,15 @@ ok(a_ev and b_ev and a_ev[-1]["step"] == b_ev[-1]["step"] == 3 and
    a_ev[-1]["vertex_b"] == b_ev[-1]["vertex_b"],
    "two streams see the same state: step %s" % (a_ev[-1]["step"] if a_ev else None))
 
+# ---- a row of F for the heat map ------------------------------------------
+row = cl.json("/api/row?element=0")
+worst = max(abs(row["row"][j] - F.get((0, j), 0.0)) for j in range(n))
+ok(row["element"] == 0 and len(row["row"]) == n and worst <= 1e-15,
+   "/api/row?element=0 is row 0 of formfactor's F (worst %.3g)" % worst)
+for q in ("element=-1", "element=37", "element=abc", "element=1&x=2", "", "element=1e0"):
+    status, data = cl.req("GET", "/api/row?" + q)
+    ok(status == 400 and b"element=I" in data, "/api/row?%s: %d" % (q, status))
+
 # ---- converged: a fresh solve ---------------------------------------------
 cl.control("action=run&rate=0")
 t = time.time()

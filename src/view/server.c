@@ -11,6 +11,7 @@
  *   GET  /api/state                 the state with the vertex radiosity
  *   GET  /api/elements              the state with the element radiosity
  *                                   to 17 digits
+ *   GET  /api/row?element=I         row I of F of the scene as loaded
  *   GET  /api/events                the state as Server-Sent Events (the
  *                                   HTML standard's text/event-stream): an
  *                                   `event: state` message at each new
@@ -196,6 +197,30 @@ static enum MHD_Result do_change(server *sv, struct MHD_Connection *c, request *
     jb_printf(&b, "{\"ok\":true,\"frames\":%d,\"applied\":%d}", sv->s->frames,
               sv->s->applied);
     pthread_mutex_unlock(&sv->s->lock);
+    return send_json(c, MHD_HTTP_OK, &b);
+}
+
+/* GET /api/row?element=I: row I of F (F_Ij for every j, 17 digits) of the
+ * scene as loaded, for the page's heat map of what element I sees. */
+static enum MHD_Result send_row(server *sv, struct MHD_Connection *c)
+{
+    const view_session *s = sv->s;
+    const int n = s->mesh->nelements;
+    const char *arg = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "element");
+    char *end = NULL;
+    const long i = arg ? strtol(arg, &end, 10) : -1;
+    if (MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, NULL, NULL) != 1 || !arg ||
+        end == arg || *end || i < 0 || i >= n)
+        return send_error(c, MHD_HTTP_BAD_REQUEST,
+                          "/api/row takes element=I alone, I a whole number from 0 to %d", n - 1);
+    jbuf b;
+    jb_init(&b);
+    jb_printf(&b, "{\"element\":%ld,\"row\":[", i);
+    for (int j = 0; j < n; j++) { /* F is column-major: F_ij at i + j n */
+        jb_printf(&b, "%s", j ? "," : "");
+        jb_num(&b, s->F[(size_t)i + (size_t)j * (size_t)n], 1);
+    }
+    jb_printf(&b, "]}");
     return send_json(c, MHD_HTTP_OK, &b);
 }
 
@@ -417,7 +442,8 @@ static int is_post(const char *url)
 static int is_api_get(const char *url)
 {
     return !strcmp(url, "/api/scene") || !strcmp(url, "/api/state") ||
-           !strcmp(url, "/api/elements") || !strcmp(url, "/api/events");
+           !strcmp(url, "/api/elements") || !strcmp(url, "/api/events") ||
+           !strcmp(url, "/api/row");
 }
 
 static enum MHD_Result route(server *sv, struct MHD_Connection *c, const char *url,
@@ -441,6 +467,8 @@ static enum MHD_Result route(server *sv, struct MHD_Connection *c, const char *u
         return send_state(sv, c, !strcmp(url, "/api/elements"));
     if (!strcmp(url, "/api/events"))
         return send_stream(sv, c);
+    if (!strcmp(url, "/api/row"))
+        return send_row(sv, c);
     return do_control(sv, c);
 }
 
