@@ -193,6 +193,28 @@ ok(a_ev and b_ev and a_ev[-1]["step"] == b_ev[-1]["step"] == 3 and
    a_ev[-1]["vertex_b"] == b_ev[-1]["vertex_b"],
    "two streams see the same state: step %s" % (a_ev[-1]["step"] if a_ev else None))
 
+# ---- the race: four methods side by side ----------------------------------
+# `radiosity progress` runs the four methods of figure 7 one after the
+# other (progressive.c's race); the viewer steps them together (its
+# stepper): after 30 steps each lane's eq. 14 error is progress's row 30
+status, _ = cl.control("action=reset&method=race")
+cl.wait_step(0)
+cl.control("action=step&steps=30")
+st = cl.wait_step(30)
+with open(os.path.join(WORK, "race.tsv"), "w") as f:
+    subprocess.run([RAD, "progress", "-q", "--steps", "30", scene], stdout=f, check=True)
+rows = table(os.path.join(WORK, "race.tsv"))
+os.remove(os.path.join(WORK, "race.tsv"))
+lanes = st.get("race", []) if st else []
+want = {m: float(rows[30][m]) for m in ("gathering", "shooting", "sorted", "sorted_ambient")}
+ok(st is not None and st["method"] == "race" and [l["method"] for l in lanes] ==
+   list(want) and all(abs(l["rms"] - want[l["method"]]) <= 1e-12 * want[l["method"]]
+                      for l in lanes) and len(st["rms_history"][-1]) == 5,
+   "race, 30 steps: each lane's eq. 14 is progress's (%s)" %
+   " ".join("%.6g" % l["rms"] for l in lanes))
+ok(all(len(l["vertex_b"]) == len(st["vertex_b"]) for l in lanes) and
+   lanes[0]["vertex_b"] == st["vertex_b"], "each lane has the vertex radiosity")
+
 # ---- a row of F for the heat map ------------------------------------------
 row = cl.json("/api/row?element=0")
 worst = max(abs(row["row"][j] - F.get((0, j), 0.0)) for j in range(n))
@@ -203,6 +225,8 @@ for q in ("element=-1", "element=37", "element=abc", "element=1&x=2", "", "eleme
     ok(status == 400 and b"element=I" in data, "/api/row?%s: %d" % (q, status))
 
 # ---- converged: a fresh solve ---------------------------------------------
+cl.control("action=reset&method=sorted")
+cl.wait_step(0)
 cl.control("action=run&rate=0")
 t = time.time()
 while time.time() - t < 60 and cl.json("/api/state")["unshot"] > 1e-15:

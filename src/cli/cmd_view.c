@@ -64,7 +64,9 @@ static void help(void)
            "                          sorted (largest unshot power first),\n"
            "                          sorted_ambient (sorted, shown with the ambient\n"
            "                          term; the default), gathering (Gauss-Seidel,\n"
-           "                          one element a step) or jacobi (one sweep a step)\n"
+           "                          one element a step), jacobi (one sweep a step)\n"
+           "                          or race (the first four side by side, as in\n"
+           "                          figure 7 of the paper)\n"
            "      --paused            start paused at step 0\n"
            "      --open              start the desktop's browser on the URL (xdg-open)\n"
            "      --record FILE       at the end, write the session's changes (every\n"
@@ -281,7 +283,7 @@ int cmd_view(int argc, char **argv)
         return cli_usage_hint("view");
     if (a.method && (o.method = radi_view_method(a.method)) < 0) {
         cli_error("--method: unknown method '%s' (shooting, sorted, sorted_ambient, gathering, "
-                  "jacobi)",
+                  "jacobi, race)",
                   a.method);
         return cli_usage_hint("view");
     }

@@ -3,7 +3,8 @@
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
  * The race's methods (progressive.h: shooting, sorted, sorted_ambient,
- * gathering) under the names `radiosity progress` prints, and jacobi.
+ * gathering) under the names `radiosity progress` prints, jacobi, and
+ * race: the four of figure 7 side by side.
  */
 #include <config.h>
 
@@ -12,11 +13,9 @@
 #include "view/view.h"
 #include "solve/solve.h"
 
-static const char *const extra_name = "jacobi";
-
 int radi_view_method(const char *name)
 {
-    for (int m = 0; m < RAD_STEP_METHODS; m++)
+    for (int m = 0; m <= RADI_VIEW_RACE; m++)
         if (strcmp(name, radi_view_method_name(m)) == 0)
             return m;
     return -1;
@@ -24,5 +23,7 @@ int radi_view_method(const char *name)
 
 const char *radi_view_method_name(int method)
 {
-    return method == RAD_STEP_JACOBI ? extra_name : radi_race_name(method);
+    return method == RAD_STEP_JACOBI ? "jacobi"
+           : method == RADI_VIEW_RACE ? "race"
+                                      : radi_race_name(method);
 }

@@ -137,7 +137,7 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
     jb_printf(b, "},\"width\":%d,\"height\":%d,\"exposure\":", VIEW_WIDTH, VIEW_HEIGHT);
     jb_num(b, s->exposure, 1);
     jb_printf(b, ",\"methods\":[");
-    for (int k = 0; k < RAD_STEP_METHODS; k++) {
+    for (int k = 0; k <= RADI_VIEW_RACE; k++) {
         jb_printf(b, "%s", k ? "," : "");
         jb_str(b, radi_view_method_name(k));
     }
@@ -151,6 +151,25 @@ static void interleaved(jbuf *b, const char *key, const double *x, size_t count,
     for (size_t k = 0; k < count; k++) {
         jb_printf(b, "%s", k ? "," : "");
         jb_num(b, x[k], exact);
+    }
+    jb_printf(b, "]");
+}
+
+/* The race's lanes: each method's shooter, unshot power, error and vertex
+ * radiosity (the first lane's is vertex_b too). */
+static void race_json(const view_session *s, jbuf *b)
+{
+    const size_t nv = (size_t)s->shown_vertices;
+    jb_printf(b, ",\"race\":[");
+    for (int l = 0; l < s->lanes; l++) {
+        jb_printf(b, "%s{\"method\":", l ? "," : "");
+        jb_str(b, radi_view_method_name(l));
+        jb_printf(b, ",\"shooter\":%d,\"unshot\":", s->lane_shooter[l]);
+        jb_num(b, s->lane_unshot[l], 0);
+        jb_printf(b, ",\"rms\":");
+        jb_num(b, s->lane_rms[l], 1);
+        interleaved(b, "vertex_b", s->vertex_b + (size_t)l * nv * 3, nv * 3, 0);
+        jb_printf(b, "}");
     }
     jb_printf(b, "]");
 }
@@ -186,11 +205,16 @@ void view_state_json(const view_session *s, jbuf *b, int vertices, int elements)
         jb_printf(b, "null");
     jb_printf(b, ",\"rms_history\":[");
     for (int k = 0; k < s->nhistory; k++) {
-        jb_printf(b, "%s[%.0f,", k ? "," : "", s->history[k][0]);
-        jb_num(b, s->history[k][1], 0);
+        jb_printf(b, "%s[%.0f", k ? "," : "", s->history[k][0]);
+        for (int l = 0; l < s->lanes; l++) {
+            jb_printf(b, ",");
+            jb_num(b, s->history[k][1 + l], 0);
+        }
         jb_printf(b, "]");
     }
     jb_printf(b, "]");
+    if (s->lanes > 1 && vertices && !s->animate)
+        race_json(s, b);
     if (vertices)
         interleaved(b, "vertex_b", s->vertex_b, (size_t)s->shown_vertices * 3, 0);
     if (elements && !s->animate)

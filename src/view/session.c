@@ -63,15 +63,15 @@ int view_session_init(view_session *s, const rad_scene *scene, const rad_result 
     s->shooter = -1;
     s->area = malloc(sizeof *s->area * (n ? n : 1));
     s->rho = malloc(sizeof *s->rho * (n ? n : 1) * NB);
-    s->Bv = malloc(sizeof *s->Bv * (nv ? nv : 1) * NB);
-    s->vertex_b = calloc((nv ? nv : 1) * NB, sizeof *s->vertex_b);
+    s->Bv = malloc(sizeof *s->Bv * (nv ? nv : 1) * NB * VIEW_LANES);
+    s->vertex_b = calloc((nv ? nv : 1) * NB * VIEW_LANES, sizeof *s->vertex_b);
     s->element_b = calloc((n ? n : 1) * NB, sizeof *s->element_b);
     if (!s->area || !s->rho || !s->Bv || !s->vertex_b || !s->element_b) {
         view_session_free(s);
         return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the view"), -1;
     }
     s->cap_elements = n;
-    s->cap_vertices = nv;
+    s->cap_vertices = nv * VIEW_LANES;
     s->shown_elements = (int)n;
     s->shown_vertices = (int)nv;
     s->exposure = rad_mesh_auto_exposure(m, res->B, RAD_EXPOSURE_REFLECTORS);
@@ -121,46 +121,94 @@ void view_session_free(view_session *s)
     s->ninverse = 0;
 }
 
-/* Under the lock: the step's state into the published copy. */
-static void publish(view_session *s, const radi_stepper *st, int method, double sps)
+/* The methods stepping together: one, or the race's four. */
+typedef struct lanes {
+    int n, method;
+    radi_stepper *st[VIEW_LANES];
+} lanes;
+
+static void lanes_free(lanes *l)
 {
-    if (s->animate)
-        return; /* the picture is the animation's now (animator.c) */
-    const size_t n = (size_t)s->mesh->nelements, nv = (size_t)s->mesh->nvertices;
-    const double *B = radi_stepper_shown(st);
-    for (size_t i = 0; i < n; i++)
-        for (int b = 0; b < NB; b++)
-            s->element_b[3 * i + (size_t)b] = B[i + (size_t)b * n];
-    for (size_t v = 0; v < nv; v++)
-        for (int b = 0; b < NB; b++)
-            s->vertex_b[3 * v + (size_t)b] = s->Bv[v + (size_t)b * nv];
-    const rad_rms_input in = {(int)n, s->area, s->total_area, s->rho, NULL, B, s->Bref};
-    s->method = method;
-    s->step = radi_stepper_steps(st);
-    s->shooter = radi_stepper_last(st);
-    s->unshot = radi_stepper_unshot(st);
-    s->rms = radi_rms_eq14(&in);
-    s->sps = sps;
-    if (s->nhistory == VIEW_HISTORY) { /* keep every other point: the plot's whole run */
+    for (int k = 0; k < l->n; k++)
+        radi_stepper_free(l->st[k]);
+    l->n = 0;
+}
+
+/* Under the lock: history row (step, each lane's rms), halved when full
+ * (every other point kept: the plot's whole run). */
+static void remember(view_session *s)
+{
+    if (s->nhistory == VIEW_HISTORY) {
         for (int k = 0; k < VIEW_HISTORY / 2; k++)
             memcpy(s->history[k], s->history[2 * k + 1], sizeof s->history[k]);
         s->nhistory = VIEW_HISTORY / 2;
     }
     if (s->nhistory == 0 || s->history[s->nhistory - 1][0] != s->step) {
         s->history[s->nhistory][0] = s->step;
-        s->history[s->nhistory][1] = s->rms;
+        for (int k = 0; k < s->lanes; k++)
+            s->history[s->nhistory][1 + k] = s->lane_rms[k];
         s->nhistory++;
     }
+}
+
+/* Under the lock: the lanes' state into the published copy (the first
+ * lane's element radiosity; every lane's vertex radiosity, smoothed into
+ * s->Bv by smooth()). */
+static void publish(view_session *s, const lanes *l, double sps)
+{
+    if (s->animate)
+        return; /* the picture is the animation's now (animator.c) */
+    const size_t n = (size_t)s->mesh->nelements, nv = (size_t)s->mesh->nvertices;
+    const double *B = radi_stepper_shown(l->st[0]);
+    for (size_t i = 0; i < n; i++)
+        for (int b = 0; b < NB; b++)
+            s->element_b[3 * i + (size_t)b] = B[i + (size_t)b * n];
+    for (int k = 0; k < l->n; k++) {
+        const double *Bv = s->Bv + (size_t)k * nv * NB;
+        double *out = s->vertex_b + (size_t)k * nv * 3;
+        for (size_t v = 0; v < nv; v++)
+            for (int b = 0; b < NB; b++)
+                out[3 * v + (size_t)b] = Bv[v + (size_t)b * nv];
+        const rad_rms_input in = {(int)n, s->area, s->total_area, s->rho, NULL,
+                                  radi_stepper_shown(l->st[k]), s->Bref};
+        s->lane_rms[k] = radi_rms_eq14(&in);
+        s->lane_shooter[k] = radi_stepper_last(l->st[k]);
+        s->lane_unshot[k] = radi_stepper_unshot(l->st[k]);
+    }
+    s->lanes = l->n;
+    s->method = l->method;
+    s->step = radi_stepper_steps(l->st[0]);
+    s->shooter = s->lane_shooter[0];
+    s->unshot = s->lane_unshot[0];
+    s->rms = s->lane_rms[0];
+    s->sps = sps;
+    remember(s);
     s->version++;
     pthread_cond_broadcast(&s->changed);
 }
 
-/* The displayed radiosity to the vertices (outside the lock). */
-static int smooth(view_session *s, const radi_stepper *st)
+/* The displayed radiosity of each lane to the vertices (outside the lock). */
+static int smooth(view_session *s, const lanes *l)
 {
     rad_error err;
-    rad_smooth_vertices_rule(s->mesh, radi_stepper_shown(st), s->Bv, s->opt.vertex_rule);
-    return rad_smooth_across(s->scene, s->mesh, s->opt.crease, s->Bv, &err) == RAD_OK ? 0 : -1;
+    const size_t nv = (size_t)s->mesh->nvertices;
+    for (int k = 0; k < l->n; k++) {
+        double *Bv = s->Bv + (size_t)k * nv * NB;
+        rad_smooth_vertices_rule(s->mesh, radi_stepper_shown(l->st[k]), Bv, s->opt.vertex_rule);
+        if (rad_smooth_across(s->scene, s->mesh, s->opt.crease, Bv, &err) != RAD_OK)
+            return -1;
+    }
+    return 0;
+}
+
+static rad_status lanes_step(lanes *l, rad_error *err)
+{
+    for (int k = 0; k < l->n; k++) {
+        const rad_status st = radi_stepper_step(l->st[k], err);
+        if (st != RAD_OK)
+            return st;
+    }
+    return RAD_OK;
 }
 
 static void deadline_after(struct timespec *ts, double seconds)
@@ -206,32 +254,52 @@ static int wait_for_work(view_session *s, double last_step)
     }
 }
 
-/* A fresh stepper of method m, published at step 0. */
-static radi_stepper *fresh(view_session *s, int m)
+/* Fresh lanes of method m (the race: four), published at step 0; 0, or
+ * -1 with the failure set. */
+static int fresh(view_session *s, lanes *l, int m)
 {
-    radi_stepper *st = NULL;
     rad_error err;
-    if (radi_stepper_new(&st, s->mesh, s->F, m, &err) != RAD_OK || smooth(s, st) != 0) {
-        radi_stepper_free(st);
-        pthread_mutex_lock(&s->lock);
+    int bad = 0;
+    l->n = m == RADI_VIEW_RACE ? VIEW_LANES : 1;
+    l->method = m;
+    for (int k = 0; k < l->n; k++) {
+        l->st[k] = NULL;
+        bad = bad || radi_stepper_new(&l->st[k], s->mesh, s->F, l->n > 1 ? k : m, &err) != RAD_OK;
+    }
+    bad = bad || smooth(s, l) != 0;
+    pthread_mutex_lock(&s->lock);
+    if (bad) {
+        lanes_free(l);
         snprintf(s->failure, sizeof s->failure, "%s", "out of memory for the method");
         s->version++;
         pthread_cond_broadcast(&s->changed);
-        pthread_mutex_unlock(&s->lock);
-        return NULL;
+    } else {
+        s->nhistory = 0;
+        publish(s, l, 0);
     }
-    pthread_mutex_lock(&s->lock);
-    s->nhistory = 0;
-    publish(s, st, m, 0);
     pthread_mutex_unlock(&s->lock);
-    return st;
+    return bad ? -1 : 0;
+}
+
+/* After a step (lock held): the failure, or the picture when it is due. */
+static void after_step(view_session *s, const lanes *l, rad_status ok, const rad_error *err,
+                       int show, double sps)
+{
+    if (ok != RAD_OK) {
+        snprintf(s->failure, sizeof s->failure, "%.255s", err->message);
+        s->running = s->pending = 0;
+        s->version++;
+        pthread_cond_broadcast(&s->changed);
+    } else if (show) {
+        publish(s, l, sps);
+    }
 }
 
 static void *worker(void *arg)
 {
     view_session *s = arg;
-    int method = s->method;
-    radi_stepper *st = fresh(s, method);
+    lanes l = {0, s->method, {NULL}};
+    int have = fresh(s, &l, s->method) == 0;
     double last_step = radi_seconds(), last_pub = 0, t_rate = radi_seconds();
     int since = 0;
     pthread_mutex_lock(&s->lock);
@@ -239,15 +307,15 @@ static void *worker(void *arg)
         const int r = wait_for_work(s, last_step);
         if (r == -2)
             break;
-        if (r >= 0 || !st) {
+        if (r >= 0 || !have) {
             pthread_mutex_unlock(&s->lock);
-            radi_stepper_free(st);
-            method = r >= 0 ? r : method;
-            st = fresh(s, method);
+            const int m = r >= 0 ? r : l.method;
+            lanes_free(&l);
+            have = fresh(s, &l, m) == 0;
             since = 0;
             t_rate = radi_seconds();
             pthread_mutex_lock(&s->lock);
-            if (!st)
+            if (!have)
                 s->running = s->pending = 0;
             continue;
         }
@@ -256,21 +324,18 @@ static void *worker(void *arg)
             s->pending--;
         pthread_mutex_unlock(&s->lock);
         rad_error err;
-        const rad_status ok = radi_stepper_step(st, &err);
+        rad_status ok = lanes_step(&l, &err);
         last_step = radi_seconds();
         since++;
         const int show = stepping || last_step - last_pub >= 1 / VIEW_PUBLISH_HZ;
-        if (ok == RAD_OK && show && smooth(s, st) != 0)
+        if (ok == RAD_OK && show && smooth(s, &l) != 0) {
+            ok = RAD_ERR_NOMEM;
             snprintf(err.message, sizeof err.message, "%s", "out of memory smoothing");
+        }
+        const double dt = last_step - t_rate;
         pthread_mutex_lock(&s->lock);
-        if (ok != RAD_OK) {
-            snprintf(s->failure, sizeof s->failure, "%.255s", err.message);
-            s->running = s->pending = 0;
-            s->version++;
-            pthread_cond_broadcast(&s->changed);
-        } else if (show) {
-            const double dt = last_step - t_rate;
-            publish(s, st, method, dt > 0 ? since / dt : 0);
+        after_step(s, &l, ok, &err, show, dt > 0 ? since / dt : 0);
+        if (show) {
             last_pub = last_step;
             if (dt > 1) { /* the rate over the last second or so */
                 since = 0;
@@ -279,7 +344,7 @@ static void *worker(void *arg)
         }
     }
     pthread_mutex_unlock(&s->lock);
-    radi_stepper_free(st);
+    lanes_free(&l);
     return NULL;
 }
 

@@ -55,7 +55,10 @@ rad_status radi_view_serve(const rad_scene *scene, const rad_result *res,
                            const radi_view_options *o, char **record, rad_error *err);
 
 /* The method named name ("shooting", "sorted", "sorted_ambient",
- * "gathering", "jacobi"), or -1; and the name of a method. */
+ * "gathering", "jacobi", or "race": the four methods of Cohen et al.
+ * 1988's figure 7 stepping side by side, one step each at a time), or -1;
+ * and the name of a method. */
+#define RADI_VIEW_RACE 5        /* after the stepper's methods (progressive.h) */
 int radi_view_method(const char *name);
 const char *radi_view_method_name(int method);
 

@@ -37,6 +37,8 @@ void jb_num(jbuf *b, double x, int exact);
 void jb_str(jbuf *b, const char *s);
 
 #define VIEW_HISTORY 512        /* points of the error plot kept */
+#define VIEW_LANES 4            /* the race's methods: gathering, shooting,
+                                   sorted, sorted_ambient (progressive.h) */
 
 typedef struct view_session {
     const rad_scene *scene;
@@ -57,9 +59,13 @@ typedef struct view_session {
     long version;
     int method, step, shooter;
     double unshot, rms, sps;
-    double *vertex_b;           /* nvertices x 3, interleaved */
+    double *vertex_b;           /* nvertices x 3, interleaved (lane after
+                                   lane in the race) */
     double *element_b;         /* nelements x 3, interleaved */
-    double history[VIEW_HISTORY][2];
+    int lanes;                  /* 1, or VIEW_LANES in the race */
+    int lane_shooter[VIEW_LANES];
+    double lane_unshot[VIEW_LANES], lane_rms[VIEW_LANES];
+    double history[VIEW_HISTORY][1 + VIEW_LANES]; /* step, each lane's rms */
     int nhistory;
     char failure[256];          /* a step that failed: the worker stops */
     double exposure;            /* the converged solution's, fixed */
