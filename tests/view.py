@@ -224,6 +224,32 @@ for q in ("element=-1", "element=37", "element=abc", "element=1&x=2", "", "eleme
     status, data = cl.req("GET", "/api/row?" + q)
     ok(status == 400 and b"element=I" in data, "/api/row?%s: %d" % (q, status))
 
+# ---- the hemicube of an element --------------------------------------------
+# its row against formfactor --form-factors-method hemicube at the same
+# resolution, and its pixels against its row: an element is seen by some
+# pixel exactly when its F_ij is positive
+with open(os.path.join(WORK, "hc.tsv"), "w") as f:
+    subprocess.run([RAD, "formfactor", "-q", "--form-factors-method", "hemicube",
+                    "--resolution", "16", scene], stdout=f, check=True)
+Fh = {}
+with open(os.path.join(WORK, "hc.tsv")) as f:
+    f.readline()
+    for line in f:
+        i, j, v = line.split("\t")[:3]
+        Fh[(int(i), int(j))] = float(v)
+os.remove(os.path.join(WORK, "hc.tsv"))
+hc = cl.json("/api/hemicube?element=4&resolution=16")
+worst = max(abs(hc["row"][j] - Fh.get((4, j), 0.0)) for j in range(n))
+seen = set(x for x in hc["items"] if x >= 0)
+ok(len(hc["items"]) == 3 * 16 * 16 and worst <= 1e-15 and
+   seen == set(j for j in range(n) if hc["row"][j] > 0),
+   "/api/hemicube?element=4: formfactor's hemicube row (worst %.3g), %d elements seen"
+   % (worst, len(seen)))
+for q in ("element=4&resolution=15", "element=4&resolution=0", "element=4&resolution=9999",
+          "element=99", "resolution=16", "element=4&resolution=16&x=1"):
+    status, data = cl.req("GET", "/api/hemicube?" + q)
+    ok(status == 400 and b"element=I" in data, "/api/hemicube?%s: %d" % (q, status))
+
 # ---- converged: a fresh solve ---------------------------------------------
 cl.control("action=reset&method=sorted")
 cl.wait_step(0)

@@ -286,11 +286,12 @@ rad_status radi_hemicube_create(rad_hemicube **out, const rad_mesh *unit, int re
     rad_hemicube *hc = calloc(1, sizeof *hc);
     if (!hc)
         return radi_fail(err, RAD_ERR_NOMEM, "out of memory");
-    rad_status st = radi_hc_table_make(&hc->tab, res, err);
-    if (st != RAD_OK) {
+    if (res < 2 || res > RAD_HEMICUBE_MAX || res % 2 != 0) { /* radi_hc_table_make says so */
+        rad_status st = radi_hc_table_make(&hc->tab, res, err);
         free(hc);
         return st;
     }
+    hc->tab.res = res; /* the tables come after the check below */
     hc->n = unit->nelements;
     const size_t n = (size_t)(hc->n ? hc->n : 1);
     hc->centre = malloc(sizeof *hc->centre * n);
@@ -301,15 +302,22 @@ rad_status radi_hemicube_create(rad_hemicube **out, const rad_mesh *unit, int re
         return radi_fail(err, RAD_ERR_NOMEM, "out of memory for the hemicube of %d elements",
                         unit->nelements);
     }
-    /* one row's picture: refused clearly here, not killed halfway */
-    const double need = radi_hemicube_row_bytes(hc), limit = rad_memory_limit();
+    /* one row's picture and the delta tables (R^2 and R^2 / 2 doubles):
+     * refused clearly here, before the tables, not killed halfway */
+    const double need = radi_hemicube_row_bytes(hc) + 12.0 * res * res;
+    const double limit = rad_memory_limit();
     if (limit > 0 && need > limit) {
         radi_hemicube_free(hc);
         return radi_fail(err, RAD_ERR_TOOBIG,
-                        "a hemicube picture of %d x %d pixels needs %.0f MiB, but only %.0f "
+                        "a hemicube of %d x %d pixels (its picture and tables) needs %.0f MiB, but only %.0f "
                         "MiB are available (the least of free memory, the process limits and "
                         "the cgroup's); use a lower `resolution`",
                         res, res, need / 1048576.0, limit / 1048576.0);
+    }
+    rad_status st = radi_hc_table_make(&hc->tab, res, err);
+    if (st != RAD_OK) {
+        radi_hemicube_free(hc);
+        return st;
     }
     make_frames(hc, unit);
     rad_vec3 lo = unit->nvertices ? unit->vertices[0] : v3(0, 0, 0), hi = lo;
@@ -328,7 +336,7 @@ rad_status radi_hemicube_create(rad_hemicube **out, const rad_mesh *unit, int re
  * to the items they show. */
 static rad_status one_face(const rad_hemicube *hc, const view_set *row, view_set *vs, int i,
                            rad_vec3 dir, rad_vec3 up, const double *d, int rows,
-                           long double *acc, rad_error *err)
+                           long double *acc, int *items, rad_error *err)
 {
     const int R = hc->tab.res;
     rad_render_options o;
@@ -354,12 +362,20 @@ static rad_status one_face(const rad_hemicube *hc, const view_set *row, view_set
             const int f = img.face[p];
             if (f >= 0 && vs->item[f] >= 0) /* -1: the back of a blocker */
                 acc[vs->item[f]] += d[p];
+            if (items)
+                items[p] = f >= 0 ? vs->item[f] : -1;
         }
     rad_image_free(&img);
     return RAD_OK;
 }
 
 rad_status radi_hemicube_row(const rad_hemicube *hc, int i, double *row, rad_error *err)
+{
+    return radi_hemicube_row_items(hc, i, row, NULL, err);
+}
+
+rad_status radi_hemicube_row_items(const rad_hemicube *hc, int i, double *row, int *items,
+                                   rad_error *err)
 {
     const int n = hc->n, R = hc->tab.res;
     const rad_vec3 nrm = hc->normal[i], t1 = hc->tangent[i], t2 = v3_cross(nrm, t1);
@@ -374,9 +390,10 @@ rad_status radi_hemicube_row(const rad_hemicube *hc, int i, double *row, rad_err
         view_set_free(&cam);
         return radi_fail(err, RAD_ERR_NOMEM, "out of memory for a hemicube row");
     }
-    rad_status st = one_face(hc, &vs, &cam, i, nrm, t1, hc->tab.top, R, acc, err);
+    rad_status st = one_face(hc, &vs, &cam, i, nrm, t1, hc->tab.top, R, acc, items, err);
     for (int s = 0; s < 4 && st == RAD_OK; s++) /* the upper half of each side */
-        st = one_face(hc, &vs, &cam, i, sides[s], nrm, hc->tab.side, R / 2, acc, err);
+        st = one_face(hc, &vs, &cam, i, sides[s], nrm, hc->tab.side, R / 2, acc,
+                      items ? items + (size_t)R * R + (size_t)s * (R / 2) * R : NULL, err);
     for (int j = 0; j < n; j++)
         row[j] = (double)acc[j];
     free(acc);

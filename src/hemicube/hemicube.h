@@ -62,6 +62,14 @@ void radi_hemicube_free(rad_hemicube *hc);
  * of the pixels that show j from i's centre. */
 rad_status radi_hemicube_row(const rad_hemicube *hc, int i, double *row, rad_error *err);
 int radi_hemicube_elements(const rad_hemicube *hc);
+/* The same row, and what each pixel shows (items, 3 R^2 ints, or NULL):
+ * the element seen (-1: nothing, or the back of a blocker), the top face
+ * first (R x R, row y at y R, counted as rad_hc_table counts), then the
+ * four sides (R/2 x R each) in the order of the side directions t1, -t1,
+ * n x t1, -(n x t1), t1 the element's first edge's direction and n its
+ * normal, each with the normal up. */
+rad_status radi_hemicube_row_items(const rad_hemicube *hc, int i, double *row, int *items,
+                                   rad_error *err);
 /* The bytes one radi_hemicube_row call holds at its peak: one picture of
  * R x R pixels (render.h, about 37 bytes each, counted as
  * RAD_HEMICUBE_PIXEL_BYTES) and the row's buffers. */

@@ -4,6 +4,7 @@
 
 src_libradview_la_SOURCES += \
 	%reldir%/animator.c \
+	%reldir%/hemiview.c \
 	%reldir%/history.c \
 	%reldir%/jsonbuf.c \
 	%reldir%/jsonread.c \

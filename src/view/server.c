@@ -12,6 +12,7 @@
  *   GET  /api/elements              the state with the element radiosity
  *                                   to 17 digits
  *   GET  /api/row?element=I         row I of F of the scene as loaded
+ *   GET  /api/hemicube?element=I[&resolution=R]  I's hemicube (hemiview.c)
  *   GET  /api/events                the state as Server-Sent Events (the
  *                                   HTML standard's text/event-stream): an
  *                                   `event: state` message at each new
@@ -221,6 +222,32 @@ static enum MHD_Result send_row(server *sv, struct MHD_Connection *c)
         jb_num(&b, s->F[(size_t)i + (size_t)j * (size_t)n], 1);
     }
     jb_printf(&b, "]}");
+    return send_json(c, MHD_HTTP_OK, &b);
+}
+
+/* GET /api/hemicube?element=I[&resolution=R] (hemiview.c). */
+static enum MHD_Result send_hemicube(server *sv, struct MHD_Connection *c)
+{
+    const int n = sv->s->mesh->nelements;
+    const char *e = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "element");
+    const char *r = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "resolution");
+    char *end1 = NULL, *end2 = NULL;
+    const long i = e ? strtol(e, &end1, 10) : -1;
+    const long res = r ? strtol(r, &end2, 10) : 32;
+    if (MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, NULL, NULL) != 1 + (r != NULL) ||
+        !e || end1 == e || *end1 || i < 0 || i >= n ||
+        (r && (end2 == r || *end2 || res < 2 || res > VIEW_HEMI_MAX || res % 2)))
+        return send_error(c, MHD_HTTP_BAD_REQUEST,
+                          "/api/hemicube takes element=I (0 to %d) and resolution=R (even, "
+                          "2 to %d, default 32)",
+                          n - 1, VIEW_HEMI_MAX);
+    jbuf b;
+    rad_error err;
+    jb_init(&b);
+    if (view_hemicube_json(sv->s, (int)i, (int)res, &b, &err) != 0) {
+        jb_free(&b);
+        return send_error(c, MHD_HTTP_INTERNAL_SERVER_ERROR, "%s", err.message);
+    }
     return send_json(c, MHD_HTTP_OK, &b);
 }
 
@@ -444,7 +471,7 @@ static int is_api_get(const char *url)
 {
     return !strcmp(url, "/api/scene") || !strcmp(url, "/api/state") ||
            !strcmp(url, "/api/elements") || !strcmp(url, "/api/events") ||
-           !strcmp(url, "/api/row");
+           !strcmp(url, "/api/row") || !strcmp(url, "/api/hemicube");
 }
 
 static enum MHD_Result route(server *sv, struct MHD_Connection *c, const char *url,
@@ -470,6 +497,8 @@ static enum MHD_Result route(server *sv, struct MHD_Connection *c, const char *u
         return send_stream(sv, c);
     if (!strcmp(url, "/api/row"))
         return send_row(sv, c);
+    if (!strcmp(url, "/api/hemicube"))
+        return send_hemicube(sv, c);
     return do_control(sv, c);
 }
 

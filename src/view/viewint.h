@@ -120,6 +120,12 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
 int view_history_append(jbuf *b, const char *req, size_t rlen);
 int view_inverse_frame(jbuf *b, const rad_scene *scene, const rad_changes *ch, int frame);
 
+/* hemiview.c: the hemicube of element i at resolution res (even) on the
+ * scene as loaded, as JSON (items: each pixel's element, top face then
+ * sides; row: F_ij by the hemicube); 0, or -1 with err set. */
+#define VIEW_HEMI_MAX 256
+int view_hemicube_json(const view_session *s, int i, int res, jbuf *b, rad_error *err);
+
 /* jsonread.c: the change lines of a JSON body (a string, an array of
  * strings, or an object {"changes": either}) appended to out; 0, or -1
  * with the reason in why. */
