@@ -64,10 +64,10 @@ def table(path):
         return [dict(zip(head, line.rstrip("\n").split("\t"))) for line in f]
 
 
-def start(*extra):
+def start(*extra, env=None):
     args = list(extra) if extra and extra[-1].endswith(".scene") else list(extra) + [scene]
     p = subprocess.Popen([RAD, "view", "-q", "--paused", "--assets", ASSETS, *args],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
     ready, _, _ = select.select([p.stdout], [], [], 120)
     url = p.stdout.readline().decode().strip() if ready else ""
     return p, url
@@ -486,6 +486,34 @@ t.join(20)
 ok(code == 0 and not t.is_alive(), "SIGINT with a stream open: status 0, the stream ends")
 ok(sorted(os.listdir(WORK)) == sorted(["F.tsv", "ref.ply", "ref.tsv", "room.scene"]),
    "no file was written")
+
+# ---- --open without a browser to start ------------------------------------
+bin_dir = os.path.join(WORK, "bin")
+os.mkdir(bin_dir)
+p, url = start("--open", env={"PATH": bin_dir})
+cl = Client(url)
+status, _ = cl.req("GET", "/api/state")
+cl.control("action=stop")
+code = p.wait(60)
+err = p.stderr.read().decode()
+ok(status == 200 and code == 0 and "cannot start a browser (xdg-open" in err and url in err,
+   "--open without xdg-open: a warning naming the URL, and the server serves (%s)"
+   % err.strip())
+# ... and with one: it is started with the URL
+with open(os.path.join(bin_dir, "xdg-open"), "w") as f:
+    f.write("#!/bin/sh\necho \"$1\" > %s/opened\n" % WORK)
+os.chmod(os.path.join(bin_dir, "xdg-open"), 0o755)
+p, url = start("--open", env={"PATH": bin_dir + ":/usr/bin:/bin"})
+t = time.time()
+while time.time() - t < 10 and not os.path.exists(os.path.join(WORK, "opened")):
+    time.sleep(0.05)
+Client(url).control("action=stop")
+p.wait(60)
+with open(os.path.join(WORK, "opened")) as f:
+    ok(f.read().strip() == url, "--open starts xdg-open with the URL")
+os.remove(os.path.join(WORK, "opened"))
+os.remove(os.path.join(bin_dir, "xdg-open"))
+os.rmdir(bin_dir)
 
 # ---- the command line -----------------------------------------------------
 sock = socket.socket()
