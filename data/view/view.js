@@ -38,6 +38,13 @@
  * Coordinates go to the GPU relative to the centre C of the scene's
  * bounding box, so that a scene far from its origin keeps its precision.
  *
+ * Live: the scene is fetched once (/api/scene) and again whenever the
+ * state's `geometry` says it changed; states stream from /api/events
+ * (EventSource) and only the colour buffer changes with them; the panel
+ * sends POST /api/control (run, pause, step, reset, rate, undo, stop) and
+ * POST /api/change (change-file lines, radiosity-scene(5)), and shows a
+ * refusal's {"error"} reason.
+ *
  * ?still=1: no panel, no event stream; fetch the scene and the state once,
  * draw, then set the title to "ready" and add an element id="ready".
  */
@@ -85,6 +92,7 @@ attribute vec4 aCa, aCb, aCc;   // linear radiosity of the 4 corners
 uniform mat4 uMVP;
 uniform vec2 uViewHalf;    // half the viewport, pixels
 varying vec4 vNrm, vAx1, vQa, vQb, vCa, vCb, vCc;
+varying float vGrown;      // 1: this corner and its neighbours lie before the eye: moved out
 
 /* Pixels each edge moves out: more than the rasteriser's snapping of
  * vertices (1/16 pixel and less); the fragment shader cuts the face. */
@@ -120,7 +128,8 @@ void main() {
     vec4 s = project(corner(slot));
     vec4 p = project(corner(mod(slot + m - 1.0, m))), n = project(corner(mod(slot + 1.0, m)));
     vec4 pos = uMVP * vec4(aPos.xyz, 1.0);
-    if (s.z > 0.0 && p.z > 0.0 && n.z > 0.0)   /* wholly before the eye */
+    vGrown = s.z > 0.0 && p.z > 0.0 && n.z > 0.0 ? 1.0 : 0.0;
+    if (vGrown > 0.5)
         pos.xy += grow(p.xy, s.xy, n.xy) / uViewHalf * pos.w;
     gl_Position = pos;
     vNrm = aNrm;
@@ -144,6 +153,7 @@ uniform vec2 uHalf;                     // the image centre (cx, cy), pixels
 uniform float uF;                       // focal length, pixels
 uniform float uEdges;                   // 1: draw the element edges
 varying vec4 vNrm, vAx1, vQa, vQb, vCa, vCb, vCc;
+varying float vGrown;
 
 const float PIXEL_TOLERANCE = 1e-3;     // pixels: coverage, beyond rounding
 const float EDGE_HALF_WIDTH = 0.55;     // pixels: render.c's edge lines
@@ -255,8 +265,10 @@ void main() {
     mat2 J;
     vec2 p = planePoint(J);
     float kind = vQb.w, inside = boundaryPixels(p, J, kind);
-    if (inside < -PIXEL_TOLERANCE)
-        discard;                       /* outside the face: render.c's coverage */
+    /* outside the face: render.c's coverage; a triangle crossing the
+     * near plane is not grown, and keeps the GPU's coverage */
+    if (inside < -PIXEL_TOLERANCE && vGrown > 0.9999)
+        discard;
     if (uEdges > 0.5 && abs(inside) < EDGE_HALF_WIDTH) {
         gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);
         return;
@@ -308,7 +320,11 @@ const app = {
     outlines: false,
     showShooter: false,
     frameQueued: false,
-    busy: false,          // a control request is on its way
+    busy: false,          // a request is on its way
+    geometry: undefined,  // the state's count of scene changes the scene answers
+    reloading: false,     // the scene is being fetched again
+    misfit: undefined,    // a geometry whose states did not fit the scene fetched
+    events: null,         // the EventSource
 };
 
 /* ---- the camera (render.c make_view) ------------------------------------ */
@@ -405,13 +421,19 @@ function planeFrame(P) {
     return { n, a1, a2, q, o: [dot(P[0], n), dot(P[0], a1), dot(P[0], a2)] };
 }
 
+/* Is element e in the scene (an absent object's elements are not drawn)? */
+function present(scene, e) {
+    return !Array.isArray(scene.present) || scene.present[e] !== 0;
+}
+
 /* Every face as a fan of triangles from vertex 0, in model order (the
  * z-buffer's tie rule).  corner[4 j + k] is the mesh vertex whose
  * radiosity goes into colour slot k of GL vertex j (-1: none). */
 function buildGeometry(scene) {
     let count = 0;
-    for (const f of scene.faces)
-        count += f.length >= 3 ? 3 * (f.length - 2) : 0;
+    scene.faces.forEach((f, e) => {
+        count += f.length >= 3 && present(scene, e) ? 3 * (f.length - 2) : 0;
+    });
     const g = {
         data: new Float32Array(GEOM_FLOATS * count),
         corner: new Int32Array(4 * count).fill(-1),
@@ -419,7 +441,10 @@ function buildGeometry(scene) {
     };
     app.geom = g;
     boundingBox(g, scene.vertices);
-    scene.faces.forEach((face) => addFace(g, face));
+    scene.faces.forEach((face, e) => {
+        if (present(scene, e))
+            addFace(g, face);
+    });
     g.colours = new Float32Array(COLOUR_FLOATS * g.count);
     return g;
 }
@@ -494,13 +519,6 @@ function compile(gl, vs, fs, attribs) {
     return { prog, u };
 }
 
-function buffer(gl, data, usage) {
-    const b = gl.createBuffer();
-    gl.bindBuffer(gl.ARRAY_BUFFER, b);
-    gl.bufferData(gl.ARRAY_BUFFER, data, usage);
-    return b;
-}
-
 /* Programs and buffers; the geometry goes up once, the colours on every
  * state.  Returns false when the browser has no WebGL. */
 function initGL() {
@@ -511,17 +529,29 @@ function initGL() {
         return false;
     if (gl.getParameter(gl.MAX_VERTEX_ATTRIBS) < FACE_ATTRIBS.length)
         throw new Error('too few vertex attributes');
-    const g = app.geom;
     app.gl = gl;
     app.glp = {
         face: compile(gl, FACE_VS, FACE_FS, FACE_ATTRIBS),
         line: compile(gl, LINE_VS, LINE_FS, ['aPos']),
-        geom: buffer(gl, g.data, gl.STATIC_DRAW),
-        colours: buffer(gl, g.colours, gl.DYNAMIC_DRAW),
-        shooter: buffer(gl, new Float32Array(0), gl.DYNAMIC_DRAW),
+        geom: gl.createBuffer(),
+        colours: gl.createBuffer(),
+        shooter: gl.createBuffer(),
         shooterCount: 0,
     };
+    uploadGeometry();
     return true;
+}
+
+/* The geometry of app.geom, and room for its colours. */
+function uploadGeometry() {
+    const gl = app.gl, p = app.glp, g = app.geom;
+    if (!gl || gl.isContextLost())
+        return;
+    gl.bindBuffer(gl.ARRAY_BUFFER, p.geom);
+    gl.bufferData(gl.ARRAY_BUFFER, g.data, gl.STATIC_DRAW);
+    gl.bindBuffer(gl.ARRAY_BUFFER, p.colours);
+    gl.bufferData(gl.ARRAY_BUFFER, g.colours, gl.DYNAMIC_DRAW);
+    p.shooterCount = 0;
 }
 
 function attrib(gl, loc, buf, size, stride, offset) {
@@ -610,7 +640,8 @@ function uploadState(s) {
 /* The vertex indices of the element that shot last, or null. */
 function shooterFace(s) {
     const i = s.shooter, faces = app.scene.faces;
-    return Number.isInteger(i) && i >= 0 && i < faces.length ? faces[i] : null;
+    return Number.isInteger(i) && i >= 0 && i < faces.length && present(app.scene, i)
+        ? faces[i] : null;
 }
 
 /* ---- the picture's canvas and its mouse ---------------------------------- */
@@ -632,7 +663,7 @@ function requestDraw() {
     app.frameQueued = true;
     requestAnimationFrame(() => {
         app.frameQueued = false;
-        if (app.pending) {
+        if (app.pending && !app.reloading) {
             const s = app.pending;
             app.pending = null;
             applyState(s);
@@ -673,7 +704,21 @@ function resetView() {
     requestDraw();
 }
 
-/* ---- the state ------------------------------------------------------------ */
+/* ---- the scene and the state ------------------------------------------------ */
+
+/* Does the state's vertex radiosity belong to this scene's mesh? */
+function fits(scene, s) {
+    return Array.isArray(s.vertex_b) && s.vertex_b.length === scene.vertices.length;
+}
+
+/* A scene to draw from now on; `geometry` is the state's count of scene
+ * changes it answers (the scene may say so itself). */
+function setScene(scene, geometry) {
+    app.scene = scene;
+    app.geometry = scene.geometry !== undefined ? scene.geometry : geometry;
+    app.geom = buildGeometry(scene);
+    uploadGeometry();
+}
 
 /* A state from the stream or a fetch: only a newer one is drawn, at the
  * next animation frame (a burst of messages draws once). */
@@ -682,12 +727,49 @@ function receiveState(s) {
         return;
     app.version = s.version;
     app.pending = s;
-    requestDraw();
+    if (needsScene(s))
+        reloadScene(s.geometry);
+    else
+        requestDraw();
+}
+
+/* Has the scene moved since it was fetched?  The state's `geometry`
+ * counts the scene's changes; a mesh of another size says so too (one
+ * fetch per geometry, then the picture waits for a state that fits). */
+function needsScene(s) {
+    if (app.reloading)
+        return false;
+    if (app.geometry === undefined)
+        app.geometry = s.geometry;
+    if (s.geometry !== undefined && s.geometry !== app.geometry)
+        return true;
+    return !fits(app.scene, s) && app.misfit !== s.geometry;
+}
+
+async function reloadScene(geometry) {
+    app.reloading = true;
+    try {
+        setScene(await getJSON('api/scene'), geometry);
+        showObjects();
+    } catch (e) {
+        app.geometry = geometry;     /* no retry loop: wait for the next change */
+        showMessage('cannot load the changed scene: ' + e.message, true);
+    } finally {
+        app.reloading = false;
+    }
+    const s = app.pending;
+    if (s && !fits(app.scene, s))
+        app.misfit = s.geometry;
+    if (s && needsScene(s))
+        reloadScene(s.geometry);
+    else
+        requestDraw();
 }
 
 function applyState(s) {
     app.state = s;
-    uploadState(s);
+    if (fits(app.scene, s))
+        uploadState(s);
     if (!STILL) {
         showReadouts(s);
         drawPlot(s.rms_history || []);
@@ -698,21 +780,42 @@ function applyState(s) {
 
 const fmt = (x, digits) => (typeof x === 'number' && isFinite(x) ? x.toPrecision(digits || 3)
                                                                    : '\u2013');
+const fmtRate = (x) => (typeof x === 'number' && x >= 100 ? String(Math.round(x)) : fmt(x));
+
+function setText(id, text) {
+    const el = $(id);
+    if (el.textContent !== text)
+        el.textContent = text;
+}
+
+/* An input shows the server's value unless the user is editing it. */
+function syncInput(el, value) {
+    if (document.activeElement !== el && !app.busy && value !== undefined && value !== null)
+        el.value = String(value);
+}
 
 function showReadouts(s) {
-    $('state-method').textContent = s.method || '?';
-    $('state-running').textContent = s.running ? 'running' : 'paused';
-    $('state-step').textContent = Number.isInteger(s.step) ? String(s.step) : '\u2013';
-    $('state-sps').textContent = fmt(s.shots_per_second);
-    $('state-unshot').textContent = typeof s.unshot === 'number'
-        ? fmt(100 * s.unshot) + ' %' : 'n/a (' + (s.method || '') + ')';
-    $('state-rms').textContent = fmt(s.rms, 4);
-    $('state-shooter').textContent = describeShooter(s.shooter);
-    $('run').disabled = !!s.running;
-    $('pause').disabled = !s.running;
-    const sel = $('method');
-    if (document.activeElement !== sel && !app.busy && s.method)
-        sel.value = s.method;
+    setText('state-method', s.method || '?');
+    setText('state-running', s.busy ? 'busy' : s.running ? 'running' : 'paused');
+    setText('state-step', Number.isInteger(s.step) ? String(s.step) : '\u2013');
+    setText('state-sps', fmtRate(s.shots_per_second));
+    setText('state-unshot', typeof s.unshot === 'number' ? fmt(100 * s.unshot) + ' %'
+                                                         : 'n/a (' + (s.method || '') + ')');
+    setText('state-rms', fmt(s.rms, 4));
+    setText('state-shooter', describeShooter(s.shooter));
+    /* once the scene has changed the race is over: the server answers 409 */
+    const race = s.mode !== 'animate';
+    $('run').disabled = !race || !!s.running;
+    $('pause').disabled = !race || !s.running;
+    for (const id of ['step', 'reset', 'method', 'steps'])
+        $(id).disabled = !race;
+    $('race-over').hidden = race;
+    syncInput($('method'), s.method);
+    syncInput($('rate'), s.rate);
+    const failure = $('failure');
+    failure.hidden = !s.failure;
+    setText('failure', s.failure ? 'the solver stopped: ' + s.failure : '');
+    showChanges(s);
 }
 
 /* "element 12 (surface 3, object tallbox)" */
@@ -740,12 +843,12 @@ function setConnection(text) {
     $('connection').textContent = text;
 }
 
-/* POST /api/control with the given query parameters; a 400's reason is
- * shown in the panel. */
-async function control(params) {
+/* POST a request; a refusal's reason ({"error": ...}) goes to the panel.
+ * Resolves to whether the server took it. */
+async function post(url, init, what) {
     app.busy = true;
     try {
-        const r = await fetch('api/control?' + new URLSearchParams(params), { method: 'POST' });
+        const r = await fetch(url, Object.assign({ method: 'POST' }, init));
         let body = null;
         try {
             body = await r.json();
@@ -755,13 +858,20 @@ async function control(params) {
         if (r.ok)
             showMessage('');
         else
-            showMessage('the server refused ' + params.action + ': ' +
+            showMessage('the server refused ' + what + ': ' +
                         ((body && body.error) || 'HTTP ' + r.status), true);
+        return r.ok;
     } catch (e) {
         showMessage('the server did not answer: ' + e.message, true);
+        return false;
     } finally {
         app.busy = false;
     }
+}
+
+/* POST /api/control with the given query parameters. */
+function control(params) {
+    return post('api/control?' + new URLSearchParams(params), {}, params.action);
 }
 
 function stepCount() {
@@ -781,14 +891,144 @@ function attachPanel() {
     $('pause').addEventListener('click', () => control({ action: 'pause' }));
     $('step').addEventListener('click', () => control({ action: 'step', steps: stepCount() }));
     $('reset').addEventListener('click', () => control({ action: 'reset', method: sel.value }));
+    $('rate').addEventListener('change', setRate);
     $('outlines').addEventListener('change', (e) => { app.outlines = e.target.checked; requestDraw(); });
     $('highlight').addEventListener('change', (e) => { app.showShooter = e.target.checked; requestDraw(); });
     $('reset-view').addEventListener('click', resetView);
+    $('stop').addEventListener('click', stopServer);
     app.outlines = $('outlines').checked;
     app.showShooter = $('highlight').checked;
+    attachChanges();
     const sc = app.scene;
     $('scene-info').textContent = sc.elements + ' elements, ' + sc.vertices.length / 3 +
         ' vertices, exposure ' + fmt(sc.exposure, 4);
+}
+
+/* The pace while running (0: as fast as the machine goes). */
+function setRate() {
+    const r = parseFloat($('rate').value);
+    if (!(r >= 0)) {
+        showMessage('the rate is a number of steps a second, 0 or more', true);
+        return;
+    }
+    const running = app.state && app.state.running;
+    control({ action: running ? 'run' : 'pause', rate: r });
+}
+
+async function stopServer() {
+    if (!window.confirm('Stop the server?  The page will stop updating.'))
+        return;
+    if (await control({ action: 'stop' })) {
+        if (app.events)
+            app.events.close();
+        setConnection('the server has stopped');
+    }
+}
+
+/* ---- changes to the scene: POST /api/change (change-file lines) ------------ */
+
+const MOVES = { 'move-xm': [-1, 0, 0], 'move-xp': [1, 0, 0], 'move-ym': [0, -1, 0],
+                'move-yp': [0, 1, 0], 'move-zm': [0, 0, -1], 'move-zp': [0, 0, 1] };
+
+function attachChanges() {
+    for (const [id, d] of Object.entries(MOVES))
+        $(id).addEventListener('click', () => moveObject(d));
+    $('turn-l').addEventListener('click', () => turnObject(15));
+    $('turn-r').addEventListener('click', () => turnObject(-15));
+    $('presence').addEventListener('click', togglePresence);
+    $('object').addEventListener('change', showPresence);
+    $('change-apply').addEventListener('click', () => postChange($('change-text').value));
+    $('undo').addEventListener('click', () => control({ action: 'undo' }));
+    const g = app.geom, size = norm(sub(g.hi, g.lo));
+    $('move-step').value = String(niceStep(size / 20));
+    showObjects();
+}
+
+/* 1, 2 or 5 times a power of ten, near x. */
+function niceStep(x) {
+    if (!(x > 0) || !isFinite(x))
+        return 1;
+    const p = Math.pow(10, Math.floor(Math.log10(x))), m = x / p;
+    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+}
+
+function showObjects() {
+    if (STILL)
+        return;
+    const sel = $('object'), keep = sel.value, objs = app.scene.objects || [];
+    sel.textContent = '';
+    for (const o of objs) {
+        const opt = document.createElement('option');
+        opt.value = o.name;
+        opt.textContent = o.name;
+        sel.appendChild(opt);
+    }
+    if (objs.some((o) => o.name === keep))
+        sel.value = keep;
+    $('object-tools').disabled = !objs.length;
+    showPresence();
+}
+
+/* Is any element of the object's surfaces in the scene? */
+function objectPresent(name) {
+    const sc = app.scene, o = (sc.objects || []).find((x) => x.name === name);
+    const surfs = new Set(o ? o.surfaces : []);
+    return sc.faces.some((f, e) => surfs.has(sc.surface[e]) && present(sc, e));
+}
+
+function showPresence() {
+    const name = $('object').value;
+    $('presence').textContent = name && !objectPresent(name) ? 'Put back' : 'Take out';
+}
+
+function moveStep() {
+    const d = parseFloat($('move-step').value);
+    return d > 0 && isFinite(d) ? d : null;
+}
+
+function moveObject(dir) {
+    const d = moveStep(), name = $('object').value;
+    if (d === null)
+        return showMessage('the step must be a length above 0', true);
+    if (name)
+        postChange(`move ${name} ${dir[0] * d} ${dir[1] * d} ${dir[2] * d}`);
+}
+
+/* Turn about the scene camera's up, through the object's centroid. */
+function turnObject(degrees) {
+    const up = app.scene.camera.up, name = $('object').value;
+    if (name)
+        postChange(`rotate ${name} ${up[0]} ${up[1]} ${up[2]} ${degrees}`);
+}
+
+function togglePresence() {
+    const name = $('object').value;
+    if (name)
+        postChange((objectPresent(name) ? 'remove ' : 'add ') + name);
+}
+
+function postChange(text) {
+    if (!text.trim())
+        return Promise.resolve(false);
+    return post('api/change', { headers: { 'Content-Type': 'text/plain' }, body: text },
+                'the change');
+}
+
+/* The animation's progress, and whether the server takes changes at all. */
+function showChanges(s) {
+    const box = $('changes');
+    box.hidden = typeof s.changes !== 'string';
+    if (box.hidden)
+        return;
+    let text = 'engine ' + s.changes;
+    if (s.mode === 'animate')
+        text += ' \u00b7 frame ' + s.frame + ' of ' + s.frames + (s.converged ? ', converged'
+            : ', ' + (s.frame_shots || 0) + ' shots');
+    setText('changes-state', text);
+    $('undo').disabled = !(s.undo > 0);
+    const f = $('changes-failure');
+    f.hidden = !s.changes_failure;
+    setText('changes-failure', s.changes_failure || '');
 }
 
 /* ---- the error plot: rms against step, log axis ----------------------------- */
@@ -865,6 +1105,7 @@ async function getJSON(path) {
  * reconnection any version is accepted (the server may have restarted). */
 function listen() {
     const es = new EventSource('api/events');
+    app.events = es;
     es.addEventListener('state', (ev) => {
         let s;
         try {
@@ -917,14 +1158,27 @@ function startGL() {
     return true;
 }
 
+/* The scene and a state that belong together: fetched again (at most
+ * three times) while the scene is changing under them. */
+async function loadStill() {
+    for (let k = 0; ; k++) {
+        const scene = await getJSON('api/scene'), s = await getJSON('api/state');
+        const same = scene.geometry === undefined || s.geometry === undefined ||
+                     scene.geometry === s.geometry;
+        if ((fits(scene, s) && same) || k === 2)
+            return [scene, s];
+    }
+}
+
 async function startStill() {
     try {
-        app.scene = await getJSON('api/scene');
-        app.geom = buildGeometry(app.scene);
+        const [scene, s] = await loadStill();
+        app.scene = scene;
+        app.geom = buildGeometry(scene);
         sizeCanvas();
         if (!startGL())
             throw new Error('no WebGL');
-        applyState(await getJSON('api/state'));
+        applyState(s);
         draw();
         app.gl.finish();
         /* two frames: the picture is on the screen before "ready" */
@@ -952,6 +1206,7 @@ async function startLive() {
         setConnection('no scene');
         return;
     }
+    app.geometry = app.scene.geometry;
     app.geom = buildGeometry(app.scene);
     sizeCanvas();
     attachPanel();

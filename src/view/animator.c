@@ -70,14 +70,15 @@ static int publish_geometry(view_session *s, const rad_anim *a)
 {
     jbuf b;
     jb_init(&b);
+    s->geometry++; /* the number the JSON carries */
     if (view_scene_json(s, rad_anim_mesh(a), rad_anim_scene(a), rad_anim_present(a), &b)) {
         jb_free(&b);
+        s->geometry--;
         return -1;
     }
     free(s->scene_json);
     s->scene_json = b.s;
     s->scene_len = b.len;
-    s->geometry++;
     return 0;
 }
 

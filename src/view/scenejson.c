@@ -2,10 +2,12 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * The scene is sent once: the mesh's vertices, each element's vertex list
- * (counter-clockwise from its front; 4: a quad element, drawn bilinearly
- * as `radiosity render` draws it), its surface, whether it emits, the
- * objects and their surfaces, the camera (the scene's, or when it has
+ * The scene is sent once, and again when a change moves it (geometry,
+ * its version, as the state's): the mesh's vertices, each element's
+ * vertex list (counter-clockwise from its front; 4: a quad element, drawn
+ * as `radiosity render` draws it), its surface, whether it emits and is
+ * present, the objects and their surfaces, the materials as they now are,
+ * the camera (the scene's, or when it has
  * none one that frames the scene's box from +z, 30 degrees wide), the
  * picture size of `radiosity render` (512 x 512) and the exposure: the
  * automatic exposure of the converged solution (rad_mesh_auto_exposure,
@@ -136,7 +138,24 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
     jb_num(b, cam.fov, 0);
     jb_printf(b, "},\"width\":%d,\"height\":%d,\"exposure\":", VIEW_WIDTH, VIEW_HEIGHT);
     jb_num(b, s->exposure, 1);
-    jb_printf(b, ",\"methods\":[");
+    jb_printf(b, ",\"materials\":[");
+    for (int k = 0; k < sc->nmaterials; k++) {
+        const rad_material *mt = &sc->materials[k];
+        jb_printf(b, "%s{\"name\":", k ? "," : "");
+        jb_str(b, mt->name);
+        jb_printf(b, ",\"reflect\":[");
+        for (int c = 0; c < RAD_BANDS; c++) {
+            jb_printf(b, "%s", c ? "," : "");
+            jb_num(b, mt->reflect[c], 1);
+        }
+        jb_printf(b, "],\"emit\":[");
+        for (int c = 0; c < RAD_BANDS; c++) {
+            jb_printf(b, "%s", c ? "," : "");
+            jb_num(b, mt->emit[c], 1);
+        }
+        jb_printf(b, "]}");
+    }
+    jb_printf(b, "],\"geometry\":%ld,\"methods\":[", s->geometry);
     for (int k = 0; k <= RADI_VIEW_RACE; k++) {
         jb_printf(b, "%s", k ? "," : "");
         jb_str(b, radi_view_method_name(k));
