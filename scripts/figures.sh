@@ -34,6 +34,9 @@
 #           from scratch after 2 and after 50 shots, with the error of their
 #           eq. 7 under each (overall and on the 1% of patches that change
 #           most).
+# figures-hemicube.sh adds the hemicube's aliasing, figures-view.sh the
+# race as the live viewer draws it (headless Chromium on its page), and
+# figures-adaptive.sh the adaptive meshes.
 set -eu
 
 . "$(dirname "$0")/figlib.sh"
@@ -262,6 +265,7 @@ end_row "George et al. 1990, figure 6: redistribution against progressive refine
   "Left of each pair: the converged room without the cube, the cube added, and K shots of redistribution and propagation (strategy 1).  Right: the room with the cube solved by progressive refinement from B = E, K shots (largest unshot power first).  The error is that of eq. 7 (luminance, area-weighted, normalised by the converged frame with the cube) over all patches, and over the 1% whose luminance the cube changes most, normalised there by that change (1: as wrong as the picture without the cube).$claim  Those 1% are the table patches the cube covers (it rests 0.01 above them): progressive refinement from scratch never lights them, so it gets them right at once, while redistribution has to take back, shooter by shooter, the light that every patch of the room had sent them, or gather it back one patch per step.$oracle"
 
 rows="$rows$(sh "$(dirname "$0")/figures-hemicube.sh" "$radiosity" "$data" "$out")"
+rows="$rows$(sh "$(dirname "$0")/figures-view.sh" "$radiosity" "$data" "$out")"
 
 version=$("$radiosity" --version | head -n 1)
 cat > "$out/index.html.tmp" <<EOF
