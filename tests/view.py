@@ -305,6 +305,76 @@ for method, path, body, headers, want, what in bad:
         reason = None
     ok(status == want and reason, "%s: %d %s" % (what, status, reason))
 
+# a fuzzer of the request API (a fixed seed: the same requests every run):
+# random methods, routes, query strings, headers and bodies, each invalid
+# by construction (control values outside the actions and methods, JSON
+# bodies that do not parse), so that none may change the state
+import random
+import urllib.parse
+rng = random.Random(51)
+ROUTES = ["/", "/view.js", "/api/scene", "/api/state", "/api/elements", "/api/row",
+          "/api/hemicube", "/api/control", "/api/change", "/api/", "/api/control/x", "//",
+          "/index.html/..", "/%00", "/api/state%2f..", "/" + "a" * 3000]
+
+
+def junk(k):
+    return "".join(rng.choice("abcXYZ019.-_~%&=;:/?#[]@!$'()*+, \t\\\"{}\x7f\u00e9")
+                   for _ in range(rng.randint(0, k)))
+
+
+def bad_control():
+    """A query that names no valid action, or an invalid value for a good one."""
+    keys = ["action", "method", "steps", "rate", junk(8)]
+    q = []
+    for _ in range(rng.randint(0, 4)):
+        q.append((rng.choice(keys), junk(12)))
+    if rng.random() < 0.5:
+        q.append(("action", rng.choice(["run", "step", "reset"])))
+        q.append((rng.choice(["method", "steps", "rate"]),
+                  rng.choice(["", "nan", "-1", "1e999", "0x10", "2.5", "sorted ", "RACE"])))
+    return urllib.parse.urlencode(q)
+
+
+def bad_json():
+    while True:
+        body = bytearray(json.dumps({"changes": ["move box 0.1 0 0", "remove box"]}).encode())
+        for _ in range(rng.randint(1, 4)):
+            body[rng.randrange(len(body))] = rng.randrange(256)
+        try:
+            json.loads(body)
+        except Exception:
+            return bytes(body)
+
+
+survived = True
+for k in range(1500):
+    route = rng.choice(ROUTES)
+    method = rng.choice(["GET", "POST", "HEAD", "PUT", "DELETE", "OPTIONS", "PATCH", "GeT"])
+    path = route
+    if route == "/api/control":
+        method = "POST" if rng.random() < 0.8 else method
+        path += "?" + bad_control()
+    elif rng.random() < 0.3:
+        path += "?" + junk(40)
+    path = urllib.parse.quote(path, safe="/?&=%")
+    body, headers = None, {}
+    if route == "/api/change" and method == "POST":
+        body, headers = bad_json(), {"Content-Type": "application/json"}
+    elif rng.random() < 0.2:
+        body = junk(200).encode()
+    if rng.random() < 0.2:
+        headers["X-" + junk(5).replace(" ", "").replace(":", "") or "X-a"] = junk(20).replace(
+            "\n", "").replace("\r", "")
+    try:
+        status, _ = cl.req(method, path, body, headers)
+    except (http.client.HTTPException, OSError, ValueError):
+        continue  # a request the client library itself refuses to send
+    if status >= 500:
+        survived = False
+        print("# fuzz %d: %s %s -> %d" % (k, method, path[:80], status), file=sys.stderr)
+ok(survived and cl.json("/api/state") is not None,
+   "1,500 fuzzed requests: no 5xx, and the server answers")
+
 # a body past the limit: the connection ends, the server lives
 s = socket.create_connection((cl.host, cl.port), timeout=10)
 s.sendall(b"POST /api/control?action=run HTTP/1.1\r\nHost: 127.0.0.1:%d\r\n"
