@@ -47,6 +47,22 @@
  *
  * ?still=1: no panel, no event stream; fetch the scene and the state once,
  * draw, then set the title to "ready" and add an element id="ready".
+ *
+ * Teaching views (live page only; the single picture above is untouched):
+ *   - the race (method "race"): the four lanes of state.race drawn side by
+ *     side, 2 x 2 viewports of one context on one geometry upload, each
+ *     with its own colour buffer, the same camera at half the size, and
+ *     labelled; the error plot draws one curve per lane;
+ *   - what an element sees ("click an element"): a click casts the pixel's
+ *     ray against the faces (render.c pixel_ray, nearest front face), GET
+ *     /api/row?element=I gives row I of F, and every element is drawn in
+ *     one colour of a log-scale viridis ramp of F_Ij; the flat colours go
+ *     through the same face program as the picture (corner "radiosity"
+ *     that tone() maps back to the ramp's bytes, exposure 1);
+ *   - the hemicube: GET /api/hemicube's item buffers unfolded into a cross
+ *     (hemicube.c one_face's cameras), each pixel in its element's colour;
+ *   - a material editor: `material NAME reflect R G B emit R G B` lines
+ *     through POST /api/change.
  */
 'use strict';
 
@@ -306,6 +322,9 @@ void main() { gl_FragColor = uColour; }`;
 const FACE_ATTRIBS = ['aPos', 'aNrm', 'aAx1', 'aQa', 'aQb', 'aCa', 'aCb', 'aCc'];
 const GEOM_FLOATS = 20;       // floats per GL vertex: aPos .. aQb
 const COLOUR_FLOATS = 12;     // 4 corners x (r, g, b)
+const RACE_LANES = 4;         // the race's methods (radiosity(1), THE LIVE VIEW)
+const RACE_METHODS = ['gathering', 'shooting', 'sorted', 'sorted_ambient'];
+const LANE_COLOURS = ['#f7a35c', '#6cf', '#c9a0ff', '#8e8'];   // plot, labels
 
 /* ---- what the page holds ------------------------------------------------ */
 
@@ -325,6 +344,10 @@ const app = {
     reloading: false,     // the scene is being fetched again
     misfit: undefined,    // a geometry whose states did not fit the scene fetched
     events: null,         // the EventSource
+    race: null,           // the race's lanes drawn side by side (state.race), or null
+    pick: false,          // "click an element": a click picks, the heat map shows
+    heat: null,           // the heat map: { element, row, sum, lo, hi, rgb }
+    refusal: '',          // the reason of the last refusal
 };
 
 /* ---- the camera (render.c make_view) ------------------------------------ */
@@ -437,20 +460,22 @@ function buildGeometry(scene) {
     const g = {
         data: new Float32Array(GEOM_FLOATS * count),
         corner: new Int32Array(4 * count).fill(-1),
+        element: new Int32Array(count),    // the element of each GL vertex
+        frames: null,                      // pickFrames(): the faces' plane frames
         count: 0,
     };
     app.geom = g;
     boundingBox(g, scene.vertices);
     scene.faces.forEach((face, e) => {
         if (present(scene, e))
-            addFace(g, face);
+            addFace(g, face, e);
     });
     g.colours = new Float32Array(COLOUR_FLOATS * g.count);
     return g;
 }
 
 /* The triangles of one face, each vertex with its face constants. */
-function addFace(g, face) {
+function addFace(g, face, e) {
     const n = face.length, P = n >= 3 ? facePoints(face) : null, fr = P && planeFrame(P);
     if (!fr)
         return;
@@ -461,6 +486,7 @@ function addFace(g, face) {
         const kind = quad ? 4 : (i === 1 ? 1 : 0) + (i + 2 === n ? 2 : 0);
         for (const k of [0, i, i + 1]) {
             const j = g.count++, slot = quad ? k : k === 0 ? 0 : k - i + 1;
+            g.element[j] = e;
             g.data.set([...P[k], 8 * slot + kind, ...fr.n, fr.o[0], ...fr.a1, fr.o[1],
                         ...qa, ...qb, fr.o[2], 0], GEOM_FLOATS * j);
             slots.forEach((s, m) => { g.corner[4 * j + m] = face[s]; });
@@ -520,7 +546,10 @@ function compile(gl, vs, fs, attribs) {
 }
 
 /* Programs and buffers; the geometry goes up once, the colours on every
- * state.  Returns false when the browser has no WebGL. */
+ * state: a colour buffer and a shooter outline for each lane of the race
+ * (lane 0: the single picture's), one for the heat map's flat colours and
+ * the clicked element's outline.  Returns false when the browser has no
+ * WebGL. */
 function initGL() {
     const opts = { antialias: false, alpha: false, depth: true,
                    preserveDrawingBuffer: true, premultipliedAlpha: false };
@@ -530,28 +559,57 @@ function initGL() {
     if (gl.getParameter(gl.MAX_VERTEX_ATTRIBS) < FACE_ATTRIBS.length)
         throw new Error('too few vertex attributes');
     app.gl = gl;
+    const slot = () => ({ colours: gl.createBuffer(), size: 0, lines: gl.createBuffer(), count: 0 });
     app.glp = {
         face: compile(gl, FACE_VS, FACE_FS, FACE_ATTRIBS),
         line: compile(gl, LINE_VS, LINE_FS, ['aPos']),
         geom: gl.createBuffer(),
-        colours: gl.createBuffer(),
-        shooter: gl.createBuffer(),
-        shooterCount: 0,
+        lanes: Array.from({ length: RACE_LANES }, slot),
+        heat: slot(),
     };
     uploadGeometry();
     return true;
 }
 
-/* The geometry of app.geom, and room for its colours. */
+/* The geometry of app.geom, and room for lane 0's colours (the other
+ * buffers get theirs when first filled). */
 function uploadGeometry() {
     const gl = app.gl, p = app.glp, g = app.geom;
     if (!gl || gl.isContextLost())
         return;
     gl.bindBuffer(gl.ARRAY_BUFFER, p.geom);
     gl.bufferData(gl.ARRAY_BUFFER, g.data, gl.STATIC_DRAW);
-    gl.bindBuffer(gl.ARRAY_BUFFER, p.colours);
-    gl.bufferData(gl.ARRAY_BUFFER, g.colours, gl.DYNAMIC_DRAW);
-    p.shooterCount = 0;
+    for (const b of [...p.lanes, p.heat]) {
+        b.size = 0;
+        b.count = 0;
+    }
+    putColours(p.lanes[0], g.colours);
+}
+
+/* Colours into a slot's buffer: resized when the geometry changed. */
+function putColours(slot, data) {
+    const gl = app.gl;
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.colours);
+    if (slot.size !== data.length) {
+        gl.bufferData(gl.ARRAY_BUFFER, data, gl.DYNAMIC_DRAW);
+        slot.size = data.length;
+    } else {
+        gl.bufferSubData(gl.ARRAY_BUFFER, 0, data);
+    }
+}
+
+/* The outline of element e (or none for -1) into a slot's line buffer. */
+function putOutline(slot, e) {
+    const gl = app.gl, f = elementFace(e);
+    const pts = f ? facePoints(f) : [];
+    const seg = new Float32Array(6 * pts.length);
+    pts.forEach((q, k) => {
+        seg.set(q, 6 * k);
+        seg.set(pts[(k + 1) % pts.length], 6 * k + 3);
+    });
+    gl.bindBuffer(gl.ARRAY_BUFFER, slot.lines);
+    gl.bufferData(gl.ARRAY_BUFFER, seg, gl.DYNAMIC_DRAW);
+    slot.count = 2 * pts.length;
 }
 
 function attrib(gl, loc, buf, size, stride, offset) {
@@ -560,86 +618,114 @@ function attrib(gl, loc, buf, size, stride, offset) {
     gl.vertexAttribPointer(loc, size, gl.FLOAT, false, stride, offset);
 }
 
+/* The viewports of the picture, in device pixels, y up as GL counts: the
+ * whole canvas, or in the race (outside the heat map) the 2 x 2 grid,
+ * lane k at column k % 2 and row k / 2 from the top. */
+function views() {
+    const W = canvas.width, H = canvas.height;
+    if (!app.race || heatShown())
+        return [{ x: 0, y: 0, w: W, h: H, lane: 0 }];
+    const w = Math.floor(W / 2), h = Math.floor(H / 2);
+    return app.race.map((l, k) => ({ x: k % 2 ? W - w : 0, y: k < 2 ? H - h : 0, w, h, lane: k }));
+}
+
 /* Draw the picture with the current camera, state and overlays. */
 function draw() {
     const gl = app.gl, p = app.glp;
     if (!gl || gl.isContextLost() || !app.state)
         return;
-    const v = cameraFrame(currentCamera(), canvas.width, canvas.height);
-    const mvp = clipMatrix(v);
     gl.viewport(0, 0, canvas.width, canvas.height);
     gl.clearColor(0, 0, 0, 1);         // render.c: background radiosity 0
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);             // strictly nearer wins, ties keep the first
     gl.enable(gl.CULL_FACE);           // one-sided faces, CCW = front
     gl.frontFace(gl.CCW);
     gl.cullFace(gl.BACK);
-    drawFaces(gl, p, v, mvp);
-    for (let i = 1; i < FACE_ATTRIBS.length; i++) /* the lines use aPos alone */
-        gl.disableVertexAttribArray(i);
-    if (app.showShooter && p.shooterCount > 0)
-        drawLines(gl, p, mvp, p.shooter, p.shooterCount, [1, 0.1, 1, 1]);
+    const list = views();
+    for (const vw of list) {
+        if (list.length > 1) {         // the race: nothing spills into a neighbour
+            gl.enable(gl.SCISSOR_TEST);
+            gl.scissor(vw.x, vw.y, vw.w, vw.h);
+        }
+        drawView(gl, p, vw);
+    }
+    gl.disable(gl.SCISSOR_TEST);
 }
 
-function drawFaces(gl, p, v, mvp) {
+/* One viewport: the camera of the picture at the viewport's size (f
+ * scales with its height), its lane's colours or the heat map's. */
+function drawView(gl, p, vw) {
+    const v = cameraFrame(currentCamera(), vw.w, vw.h);
+    v.ox = vw.x;
+    v.oy = vw.y;
+    const mvp = clipMatrix(v), heat = heatShown(), lane = p.lanes[vw.lane];
+    gl.viewport(vw.x, vw.y, vw.w, vw.h);
+    gl.enable(gl.DEPTH_TEST);
+    if (heat)
+        drawFaces(gl, p, v, mvp, p.heat.colours, 1);
+    else
+        drawFaces(gl, p, v, mvp, lane.colours, app.scene.exposure);
+    for (let i = 1; i < FACE_ATTRIBS.length; i++) /* the lines use aPos alone */
+        gl.disableVertexAttribArray(i);
+    if (app.showShooter && lane.count > 0)
+        drawLines(gl, p, mvp, v, lane.lines, lane.count, [1, 0.1, 1, 1]);
+    if (heat && p.heat.count > 0)
+        drawLines(gl, p, mvp, v, p.heat.lines, p.heat.count, [1, 1, 1, 1]);
+}
+
+/* The faces in one viewport; uHalf, the image centre, is in window
+ * pixels (gl_FragCoord's), the viewport's offset added. */
+function drawFaces(gl, p, v, mvp, colours, exposure) {
     const u = p.face.u;
     gl.useProgram(p.face.prog);
     gl.uniformMatrix4fv(u('uMVP'), false, mvp);
-    gl.uniform1f(u('uExposure'), app.scene.exposure);
+    gl.uniform1f(u('uExposure'), exposure);
     gl.uniform3fv(u('uEye'), v.eye);
     gl.uniform3fv(u('uFwd'), v.fwd);
     gl.uniform3fv(u('uRight'), v.right);
     gl.uniform3fv(u('uUp'), v.up);
-    gl.uniform2f(u('uHalf'), 0.5 * v.width, 0.5 * v.height);
+    gl.uniform2f(u('uHalf'), v.ox + 0.5 * v.width, v.oy + 0.5 * v.height);
     gl.uniform2f(u('uViewHalf'), 0.5 * v.width, 0.5 * v.height);
     gl.uniform1f(u('uF'), v.f);
     gl.uniform1f(u('uEdges'), app.outlines ? 1 : 0);
     for (let k = 0; k < 5; k++)
         attrib(gl, k, p.geom, 4, 4 * GEOM_FLOATS, 16 * k);
     for (let k = 0; k < 3; k++)
-        attrib(gl, 5 + k, p.colours, 4, 4 * COLOUR_FLOATS, 16 * k);
+        attrib(gl, 5 + k, colours, 4, 4 * COLOUR_FLOATS, 16 * k);
     gl.drawArrays(gl.TRIANGLES, 0, app.geom.count);
 }
 
-/* The shooter's outline: segments in a colour, on top of everything (seen
+/* An element's outline: segments in a colour, on top of everything (seen
  * through what hides it), three pixels wide (shifted copies). */
-function drawLines(gl, p, mvp, buf, count, colour) {
+function drawLines(gl, p, mvp, v, buf, count, colour) {
     gl.useProgram(p.line.prog);
     gl.uniformMatrix4fv(p.line.u('uMVP'), false, mvp);
     gl.uniform4fv(p.line.u('uColour'), colour);
     attrib(gl, 0, buf, 3, 0, 0);
     gl.disable(gl.DEPTH_TEST);
     for (const [sx, sy] of [[0, 0], [-1, 0], [1, 0], [0, -1], [0, 1]]) {
-        gl.uniform2f(p.line.u('uShift'), 2 * sx / canvas.width, 2 * sy / canvas.height);
+        gl.uniform2f(p.line.u('uShift'), 2 * sx / v.width, 2 * sy / v.height);
         gl.drawArrays(gl.LINES, 0, count);
     }
 }
 
-/* The new state's radiosity into the colour buffer, the shooter's
- * outline into its own. */
+/* The new state's radiosity into the colour buffers (lane 0's, and in
+ * the race each lane's), the shooters' outlines into theirs. */
 function uploadState(s) {
     const gl = app.gl, p = app.glp, g = app.geom;
     if (!gl || gl.isContextLost())
         return;
-    fillColours(g, Array.isArray(s.vertex_b) ? s.vertex_b : []);
-    gl.bindBuffer(gl.ARRAY_BUFFER, p.colours);
-    gl.bufferSubData(gl.ARRAY_BUFFER, 0, g.colours);
-    const f = shooterFace(s);
-    const pts = f ? facePoints(f) : [];
-    const seg = new Float32Array(6 * pts.length);
-    pts.forEach((q, k) => {
-        seg.set(q, 6 * k);
-        seg.set(pts[(k + 1) % pts.length], 6 * k + 3);
+    const lanes = app.race || [{ vertex_b: s.vertex_b, shooter: s.shooter }];
+    lanes.forEach((l, k) => {
+        fillColours(g, Array.isArray(l.vertex_b) ? l.vertex_b : []);
+        putColours(p.lanes[k], g.colours);
+        putOutline(p.lanes[k], l.shooter);
     });
-    gl.bindBuffer(gl.ARRAY_BUFFER, p.shooter);
-    gl.bufferData(gl.ARRAY_BUFFER, seg, gl.DYNAMIC_DRAW);
-    p.shooterCount = 2 * pts.length;
 }
 
-/* The vertex indices of the element that shot last, or null. */
-function shooterFace(s) {
-    const i = s.shooter, faces = app.scene.faces;
+/* The vertex indices of element i, present in the scene, or null. */
+function elementFace(i) {
+    const faces = app.scene.faces;
     return Number.isInteger(i) && i >= 0 && i < faces.length && present(app.scene, i)
         ? faces[i] : null;
 }
@@ -672,25 +758,35 @@ function requestDraw() {
     });
 }
 
-/* Drag to orbit around `at`, wheel to zoom. */
+/* Drag to orbit around `at`, wheel to zoom.  In "click an element" a
+ * drag starts past 4 pixels, and a click picks the element there. */
 function attachMouse() {
     let drag = null;
     canvas.addEventListener('pointerdown', (e) => {
-        drag = { x: e.clientX, y: e.clientY };
+        drag = { x: e.clientX, y: e.clientY, x0: e.clientX, y0: e.clientY, moved: !app.pick };
         canvas.setPointerCapture(e.pointerId);
     });
     canvas.addEventListener('pointermove', (e) => {
-        if (!drag)
+        if (!drag) {
+            if (app.pick)
+                hoverPicture(e);
             return;
+        }
+        if (!drag.moved && Math.hypot(e.clientX - drag.x0, e.clientY - drag.y0) < 4)
+            return;
+        drag.moved = true;
         const o = app.orbit, el0 = elevation(app.scene.camera), lim = 89 * Math.PI / 180;
         o.yaw -= 0.01 * (e.clientX - drag.x);
         o.pitch = clamp(el0 + o.pitch + 0.01 * (e.clientY - drag.y), -lim, lim) - el0;
         drag = { x: e.clientX, y: e.clientY };
         requestDraw();
     });
-    const end = () => { drag = null; };
-    canvas.addEventListener('pointerup', end);
-    canvas.addEventListener('pointercancel', end);
+    canvas.addEventListener('pointerup', (e) => {
+        if (drag && !drag.moved && app.pick)
+            pickElement(elementAt(e.clientX, e.clientY));
+        drag = null;
+    });
+    canvas.addEventListener('pointercancel', () => { drag = null; });
     canvas.addEventListener('wheel', (e) => {
         e.preventDefault();
         const dy = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
@@ -717,7 +813,11 @@ function setScene(scene, geometry) {
     app.scene = scene;
     app.geometry = scene.geometry !== undefined ? scene.geometry : geometry;
     app.geom = buildGeometry(scene);
+    app.race = null;              /* until a state of this mesh comes */
     uploadGeometry();
+    if (app.heat && app.heat.row.length !== scene.elements)
+        app.heat = null;
+    uploadHeat();
 }
 
 /* A state from the stream or a fetch: only a newer one is drawn, at the
@@ -751,6 +851,7 @@ async function reloadScene(geometry) {
     try {
         setScene(await getJSON('api/scene'), geometry);
         showObjects();
+        showMaterials();
     } catch (e) {
         app.geometry = geometry;     /* no retry loop: wait for the next change */
         showMessage('cannot load the changed scene: ' + e.message, true);
@@ -768,12 +869,25 @@ async function reloadScene(geometry) {
 
 function applyState(s) {
     app.state = s;
+    app.race = fits(app.scene, s) ? raceLanes(s) : null;
     if (fits(app.scene, s))
         uploadState(s);
     if (!STILL) {
         showReadouts(s);
-        drawPlot(s.rms_history || []);
+        showRace(s);
+        drawPlot(s.rms_history || [], app.race ? app.race.map((l) => l.method) : RACE_METHODS);
+        updateHemicube();
     }
+}
+
+/* The race's lanes when the state is the race's and every lane's vertex
+ * radiosity fits the mesh (not in still mode, not once the scene moved). */
+function raceLanes(s) {
+    if (STILL || s.method !== 'race' || s.mode === 'animate' || !Array.isArray(s.race))
+        return null;
+    const lanes = s.race.slice(0, RACE_LANES);
+    const ok = lanes.length > 1 && lanes.every((l) => l && fits(app.scene, l));
+    return ok ? lanes : null;
 }
 
 /* ---- the panel ------------------------------------------------------------ */
@@ -855,14 +969,15 @@ async function post(url, init, what) {
         } catch (e) {
             body = null;
         }
+        app.refusal = r.ok ? '' : (body && body.error) || 'HTTP ' + r.status;
         if (r.ok)
             showMessage('');
         else
-            showMessage('the server refused ' + what + ': ' +
-                        ((body && body.error) || 'HTTP ' + r.status), true);
+            showMessage('the server refused ' + what + ': ' + app.refusal, true);
         return r.ok;
     } catch (e) {
-        showMessage('the server did not answer: ' + e.message, true);
+        app.refusal = 'the server did not answer: ' + e.message;
+        showMessage(app.refusal, true);
         return false;
     } finally {
         app.busy = false;
@@ -899,6 +1014,7 @@ function attachPanel() {
     app.outlines = $('outlines').checked;
     app.showShooter = $('highlight').checked;
     attachChanges();
+    attachTeaching();
     const sc = app.scene;
     $('scene-info').textContent = sc.elements + ' elements, ' + sc.vertices.length / 3 +
         ' vertices, exposure ' + fmt(sc.exposure, 4);
@@ -1033,7 +1149,9 @@ function showChanges(s) {
 
 /* ---- the error plot: rms against step, log axis ----------------------------- */
 
-function drawPlot(hist) {
+/* rms against step on a log axis: rms_history rows [step, rms] or, in the
+ * race, [step, rms of each lane] (one curve each, named by `names`). */
+function drawPlot(hist, names) {
     const c = $('plot'), ctx = c.getContext('2d');
     const dpr = window.devicePixelRatio || 1, W = c.clientWidth || 300, H = c.clientHeight || 180;
     if (c.width !== Math.round(W * dpr) || c.height !== Math.round(H * dpr)) {
@@ -1044,25 +1162,62 @@ function drawPlot(hist) {
     ctx.clearRect(0, 0, W, H);
     ctx.font = '11px sans-serif';
     ctx.fillStyle = '#ccc';
-    const pts = hist.filter((p) => Array.isArray(p) && isFinite(p[0]) && p[1] > 0 && isFinite(p[1]));
-    if (!pts.length) {
+    const rows = hist.filter((p) => Array.isArray(p) && isFinite(p[0]));
+    const curves = plotCurves(rows);
+    showPlotLegend(curves, names);
+    const all = [].concat(...curves);
+    if (!all.length) {
         ctx.fillText('no error to plot yet', 50, H / 2);
         return;
     }
     const box = { l: 44, r: W - 8, t: 8, b: H - 22 };
-    const s0 = pts[0][0], s1 = Math.max(pts[pts.length - 1][0], s0 + 1);
-    const logs = pts.map((p) => Math.log10(p[1]));
+    const s0 = Math.min(...all.map((p) => p[0]));
+    const s1 = Math.max(Math.max(...all.map((p) => p[0])), s0 + 1);
+    const logs = all.map((p) => Math.log10(p[1]));
     let d0 = Math.floor(Math.min(...logs)), d1 = Math.ceil(Math.max(...logs));
     if (d1 <= d0)
         d1 = d0 + 1;
     const X = (s) => box.l + (box.r - box.l) * (s - s0) / (s1 - s0);
     const Y = (l) => box.b - (box.b - box.t) * (l - d0) / (d1 - d0);
     plotAxes(ctx, box, d0, d1, s0, s1, Y);
-    ctx.strokeStyle = '#6cf';
     ctx.lineWidth = 1.5;
-    ctx.beginPath();
-    pts.forEach((p, i) => (i ? ctx.lineTo : ctx.moveTo).call(ctx, X(p[0]), Y(logs[i])));
-    ctx.stroke();
+    curves.forEach((pts, k) => {
+        ctx.strokeStyle = curves.length > 1 ? LANE_COLOURS[k % LANE_COLOURS.length] : '#6cf';
+        ctx.beginPath();
+        pts.forEach((p, i) => (i ? ctx.lineTo : ctx.moveTo).call(ctx, X(p[0]), Y(Math.log10(p[1]))));
+        ctx.stroke();
+    });
+}
+
+/* The points [step, rms] of each column of the rows that can go on a log
+ * axis (rms > 0 and finite). */
+function plotCurves(rows) {
+    const columns = Math.max(2, ...rows.map((p) => p.length)) - 1;
+    const curves = [];
+    for (let k = 1; k <= columns; k++)
+        curves.push(rows.filter((p) => p[k] > 0 && isFinite(p[k])).map((p) => [p[0], p[k]]));
+    return curves;
+}
+
+/* Under the plot, in the race: each lane's colour, name and last rms. */
+function showPlotLegend(curves, names) {
+    const box = $('plot-legend');
+    box.hidden = curves.length < 2;
+    if (box.hidden)
+        return;
+    const text = curves.map((pts, k) => (names[k] || 'lane ' + k) + ' ' +
+                            (pts.length ? fmt(pts[pts.length - 1][1]) : '\u2013')).join('|');
+    if (box.dataset.text === text)
+        return;
+    box.dataset.text = text;
+    box.textContent = '';
+    text.split('|').forEach((t, k) => {
+        const item = document.createElement('span');
+        item.className = 'key';
+        item.style.borderColor = LANE_COLOURS[k % LANE_COLOURS.length];
+        item.textContent = t;
+        box.appendChild(item);
+    });
 }
 
 /* Decade grid lines labelled 1e-k, the step range under the axis. */
@@ -1085,6 +1240,594 @@ function plotAxes(ctx, box, d0, d1, s0, s1, Y) {
     ctx.fillText(String(s1), box.r, box.b + 15);
     ctx.textAlign = 'center';
     ctx.fillText('rms (log)', (box.l + box.r) / 2, box.b + 15);
+}
+
+/* ---- teaching views: common helpers ------------------------------------------ */
+
+/* fn at most once every `ms` milliseconds, the last request never lost;
+ * an async fn is not started again before it has ended. */
+function throttled(fn, ms) {
+    let running = false, again = false, timer = 0, last = -Infinity;
+    const kick = () => {
+        if (running) {
+            again = true;
+            return;
+        }
+        if (!timer)
+            timer = setTimeout(run, Math.max(0, last + ms - performance.now()));
+    };
+    const run = async () => {
+        timer = 0;
+        running = true;
+        again = false;
+        last = performance.now();
+        try {
+            await fn();
+        } finally {
+            running = false;
+            if (again)
+                kick();
+        }
+    };
+    return kick;
+}
+
+/* IEC 61966-2-1:1999 eq. (5.2), as render.c rad_srgb_encode (the shader's) */
+function srgbEncode(c) {
+    if (!(c > 0))
+        return 0;
+    if (c >= 1)
+        return 1;
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+}
+
+/* its inverse, IEC 61966-2-1:1999 eq. (5.1): an sRGB byte to linear */
+const SRGB_LINEAR = Float32Array.from({ length: 256 }, (_, n) => {
+    const c = n / 255;
+    return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
+});
+
+/* render.c rad_tone_byte: floor(255 srgb(exposure B) + 0.5) */
+const toneByte = (b, exposure) => Math.floor(255 * srgbEncode(b * exposure) + 0.5);
+
+const cssRGB = (c) => `rgb(${c[0]},${c[1]},${c[2]})`;
+
+/* ---- the race: the four lanes side by side ------------------------------------ */
+
+/* The labels over the 2 x 2 grid: each lane's method, step, rms (eq. 14)
+ * and unshot power; hidden outside the race and under the heat map. */
+function showRace(s) {
+    const box = $('race-labels');
+    box.hidden = !app.race || heatShown();
+    if (box.hidden)
+        return;
+    app.race.forEach((l, k) => {
+        const unshot = typeof l.unshot === 'number' ? ' \u00b7 unshot ' + fmt(100 * l.unshot) + ' %' : '';
+        setText('lane-' + k, l.method + '\nstep ' + s.step + ' \u00b7 rms ' + fmt(l.rms, 3) + unshot);
+    });
+}
+
+/* ---- picking: the element under a point of the picture ------------------------ */
+
+/* Each present face's plane frame (planeFrame, relative to C) or null,
+ * made at the first pick of a geometry. */
+function pickFrames() {
+    const g = app.geom, sc = app.scene;
+    if (!g.frames)
+        g.frames = sc.faces.map((f, e) => (f.length >= 3 && present(sc, e)
+                                           ? planeFrame(facePoints(f)) : null));
+    return g.frames;
+}
+
+/* The element drawn at a point (client coordinates) of the canvas, or -1:
+ * the ray of render.c pixel_ray in the viewport there, fwd + right (x -
+ * cx)/f + up (cy - y)/f, x and y from the viewport's top-left. */
+function elementAt(clientX, clientY) {
+    const rect = canvas.getBoundingClientRect();
+    const px = (clientX - rect.left) * canvas.width / rect.width;
+    const gy = canvas.height - (clientY - rect.top) * canvas.height / rect.height;
+    const vw = views().find((w) => px >= w.x && px < w.x + w.w && gy >= w.y && gy < w.y + w.h);
+    if (!vw)
+        return -1;
+    const v = cameraFrame(currentCamera(), vw.w, vw.h);
+    const x = px - vw.x, y = vw.y + vw.h - gy;
+    const r = add(v.fwd, add(scale(v.right, (x - vw.w / 2) / v.f),
+                             scale(v.up, (vw.h / 2 - y) / v.f)));
+    return castRay(v.eye, r);
+}
+
+/* The nearest front face the ray eye + t r (t > 0) meets, or -1.  The
+ * plane point as the face shader finds it (planePoint: t = n.(P0 - eye) /
+ * n.r), kept when inside the face's polygon in its plane frame; ties keep
+ * the first face, as the picture's depth test does. */
+function castRay(eye, r) {
+    let best = Infinity, hit = -1;
+    pickFrames().forEach((fr, e) => {
+        const nr = fr ? dot(fr.n, r) : 0;
+        if (!(nr < 0))                 /* none, or seen from behind: culled */
+            return;
+        const t = (fr.o[0] - dot(eye, fr.n)) / nr;
+        if (!(t > 0 && t < best))
+            return;
+        const q = [t * dot(r, fr.a1) - (fr.o[1] - dot(eye, fr.a1)),
+                   t * dot(r, fr.a2) - (fr.o[2] - dot(eye, fr.a2))];
+        if (insidePolygon(q, fr.q)) {
+            best = t;
+            hit = e;
+        }
+    });
+    return hit;
+}
+
+/* The even-odd rule: a ray from q along +x crosses the polygon's edges an
+ * odd number of times (any simple polygon, either orientation). */
+function insidePolygon(q, poly) {
+    let inside = false;
+    for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+        const [xi, yi] = poly[i], [xj, yj] = poly[j];
+        if ((yi > q[1]) !== (yj > q[1]) && q[0] < xj + (q[1] - yj) * (xi - xj) / (yi - yj))
+            inside = !inside;
+    }
+    return inside;
+}
+
+/* ---- what an element sees: row I of F as a heat map --------------------------- */
+
+/* viridis (van der Walt & Smith, matplotlib _cm_listed.py, CC0): 17 of its
+ * 256 entries, every 16th, as sRGB bytes; linear between them. */
+const VIRIDIS = [0x440154, 0x48186a, 0x472d7b, 0x424086, 0x3b528b, 0x33638d, 0x2c728e,
+                 0x26828e, 0x21918c, 0x1f9f88, 0x27ad81, 0x3dbc74, 0x5cc863, 0x81d34d,
+                 0xaadc32, 0xd5e21a, 0xfde725];
+const UNSEEN = [72, 72, 72];   // F_Ij = 0: j is not seen from I
+const HEAT_DECADES = 4;        // the log scale's depth below the largest F_Ij
+
+function viridis(t) {
+    const x = clamp(t, 0, 1) * (VIRIDIS.length - 1), k = Math.min(Math.floor(x), VIRIDIS.length - 2);
+    const a = VIRIDIS[k], b = VIRIDIS[k + 1], w = x - k;
+    return [16, 8, 0].map((s) => Math.round(((a >> s) & 255) * (1 - w) + ((b >> s) & 255) * w));
+}
+
+function heatShown() {
+    return app.pick && !!app.heat;
+}
+
+/* The scale of a row: hi = max_j F_Ij, lo = the least F_Ij > 0 but not
+ * below hi 10^-HEAT_DECADES; sum = sum_j F_Ij (1 for a closed scene: the
+ * form factors of a closed enclosure sum to one, Goral et al. 1984). */
+function heatScale(row) {
+    let hi = 0, lo = Infinity, sum = 0, seen = 0;
+    for (const F of row) {
+        sum += F;
+        if (F > 0) {
+            hi = Math.max(hi, F);
+            lo = Math.min(lo, F);
+            seen++;
+        }
+    }
+    return { hi, lo: Math.max(lo, hi * Math.pow(10, -HEAT_DECADES)), sum, seen };
+}
+
+/* The ramp's colour of F: t = log(F / lo) / log(hi / lo), clamped. */
+function heatRGB(F, h) {
+    if (!(F > 0))
+        return UNSEEN;
+    return viridis(h.hi > h.lo ? Math.log(F / h.lo) / Math.log(h.hi / h.lo) : 1);
+}
+
+/* Fetch row e of F and show it; -1 (the background) leaves the map. */
+async function pickElement(e) {
+    if (e < 0) {
+        setText('heat-note', 'nothing there: click an element of the picture');
+        return;
+    }
+    const seq = app.pickSeq = (app.pickSeq || 0) + 1;
+    setText('heat-note', 'reading row ' + e + ' of F\u2026');
+    try {
+        const r = await getJSON('api/row?element=' + e);
+        if (seq !== app.pickSeq || !app.pick)
+            return;                    /* a newer click, or the mode was left */
+        if (!Array.isArray(r.row) || r.row.length !== app.scene.elements)
+            throw new Error('the row does not fit the scene');
+        setHeat(e, r.row);
+    } catch (err) {
+        setText('heat-note', 'cannot read row ' + e + ' of F: ' + err.message);
+    }
+}
+
+function setHeat(e, row) {
+    const h = heatScale(row);
+    h.element = e;
+    h.row = row;
+    h.rgb = new Uint8Array(3 * row.length);
+    row.forEach((F, j) => h.rgb.set(heatRGB(F, h), 3 * j));
+    app.heat = h;
+    uploadHeat();
+    showHeat();
+    if (app.state)
+        showRace(app.state);
+    requestDraw();
+    updateHemicube();
+}
+
+/* The mode on or off; off, the picture is the radiosity's again. */
+function setPickMode(on) {
+    app.pick = on;
+    canvas.classList.toggle('picking', on);
+    if (!on)
+        app.heat = null;
+    uploadHeat();
+    showHeat();
+    if (app.state)
+        showRace(app.state);
+    requestDraw();
+    updateHemicube();
+}
+
+/* The heat map's colours, flat over each element: every corner gets the
+ * linear value whose tone (exposure 1) is the ramp's byte, so the face
+ * program draws it unchanged; and the clicked element's outline. */
+function uploadHeat() {
+    const gl = app.gl, p = app.glp, h = app.heat, g = app.geom;
+    if (!gl || gl.isContextLost() || !g)
+        return;
+    if (!h) {
+        p.heat.count = 0;
+        return;
+    }
+    if (!g.heat || g.heat.length !== g.colours.length)
+        g.heat = new Float32Array(g.colours.length);
+    for (let j = 0; j < g.count; j++) {
+        const o = 3 * g.element[j];
+        for (let k = 0; k < 12; k++)
+            g.heat[12 * j + k] = SRGB_LINEAR[h.rgb[o + k % 3]];
+    }
+    putColours(p.heat, g.heat);
+    putOutline(p.heat, h.element);
+}
+
+/* The panel's side of the heat map: the element, the row sum, the range
+ * and its legend. */
+function showHeat() {
+    const h = app.heat;
+    $('heat-details').hidden = !h;
+    setText('heat-note', !app.pick ? '' : h ? '' : 'click an element of the picture');
+    if (!h)
+        return;
+    setText('heat-element', describeShooter(h.element));
+    setText('heat-sum', fmt(h.sum, 6));
+    setText('heat-seen', h.seen + ' of ' + h.row.length);
+    setText('heat-hover', '\u2013');
+    $('heat-loaded').hidden = !(app.state && app.state.mode === 'animate');
+    drawHeatLegend(h);
+}
+
+/* The ramp from lo to hi with its decades, and the swatch of F = 0. */
+function drawHeatLegend(h) {
+    const c = $('heat-legend'), ctx = c.getContext('2d');
+    const dpr = window.devicePixelRatio || 1, W = c.clientWidth || 300, H = c.clientHeight || 40;
+    c.width = Math.round(W * dpr);
+    c.height = Math.round(H * dpr);
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const x0 = 44, x1 = W - 8, bar = { t: 4, h: 14 };
+    ctx.fillStyle = cssRGB(UNSEEN);
+    ctx.fillRect(0, bar.t, 30, bar.h);
+    for (let x = x0; x < x1; x++) {
+        ctx.fillStyle = cssRGB(viridis((x - x0 + 0.5) / (x1 - x0)));
+        ctx.fillRect(x, bar.t, 1, bar.h);
+    }
+    ctx.font = '11px sans-serif';
+    ctx.fillStyle = '#ccc';
+    ctx.textAlign = 'center';
+    ctx.fillText('0', 15, bar.t + bar.h + 13);
+    const l0 = Math.log10(h.lo), l1 = Math.log10(h.hi), X = (l) => x0 + (x1 - x0) * (l - l0) / (l1 - l0);
+    for (let d = Math.ceil(l0); l1 > l0 && d <= l1; d++) {
+        ctx.fillRect(X(d) - 0.5, bar.t + bar.h, 1, 4);
+        if (X(d) - x0 > 40 && x1 - X(d) > 40)
+            ctx.fillText('1e' + d, X(d), bar.t + bar.h + 13);
+    }
+    ctx.textAlign = 'left';
+    ctx.fillText('\u2264' + fmt(h.lo, 2), x0, bar.t + bar.h + 13);
+    ctx.textAlign = 'right';
+    ctx.fillText(fmt(h.hi, 3), x1, bar.t + bar.h + 13);
+}
+
+/* F_Ij of the element under the pointer, once a frame at most. */
+function hoverPicture(ev) {
+    if (!app.heat)
+        return;
+    const queued = app.hoverAt;
+    app.hoverAt = [ev.clientX, ev.clientY];
+    if (queued)
+        return;
+    requestAnimationFrame(() => {
+        const [x, y] = app.hoverAt, h = app.heat;
+        app.hoverAt = null;
+        if (!h)
+            return;
+        const e = elementAt(x, y);
+        setText('heat-hover', e < 0 ? '\u2013' : e === h.element ? 'element ' + e + ' itself'
+            : 'element ' + e + ': F = ' + fmt(h.row[e], 6));
+    });
+}
+
+/* ---- the hemicube: what the shooter's item buffers show ----------------------- */
+
+const hemi = { cache: new Map(), data: null, cells: null };
+const HEMI_FACES = ['top (n)', 't1', '\u2212t1', 'n\u00d7t1', '\u2212n\u00d7t1'];
+
+/* Whose hemicube: the clicked element under the heat map, else the
+ * shooter of the method or of the race's lane chosen. */
+function hemiTarget() {
+    const s = app.state, lanes = app.race;
+    if (heatShown())
+        return { element: app.heat.element, why: 'the clicked element', lane: -1, rgb: app.heat.rgb };
+    if (!s)
+        return null;
+    const lane = lanes ? clamp(parseInt($('hemi-lane').value, 10) || 0, 0, lanes.length - 1) : 0;
+    const e = lanes ? lanes[lane].shooter : s.shooter;
+    const method = lanes ? lanes[lane].method : s.method;
+    if (!Number.isInteger(e) || e < 0 || e >= app.scene.elements)
+        return null;
+    const role = method === 'gathering' || method === 'jacobi' ? 'the element that gathered last'
+                                                              : 'the shooter';
+    return { element: e, why: role + (lanes ? ' of ' + method : ''), lane,
+             vb: lanes ? lanes[lane].vertex_b : s.vertex_b };
+}
+
+/* /api/hemicube for element e at resolution R, kept (the scene as loaded
+ * does not change): items, row and the row's sum. */
+async function hemicubeItems(e, R) {
+    const key = e + '/' + R;
+    let d = hemi.cache.get(key);
+    if (!d) {
+        d = await getJSON('api/hemicube?element=' + e + '&resolution=' + R);
+        if (!Array.isArray(d.items) || d.items.length !== 3 * R * R || !Array.isArray(d.row))
+            throw new Error('the hemicube has another shape');
+        d.sum = d.row.reduce((a, b) => a + b, 0);
+        hemi.cache.set(key, d);
+        if (hemi.cache.size > 32)
+            hemi.cache.delete(hemi.cache.keys().next().value);
+    }
+    return d;
+}
+
+/* Each element's colour: the heat map's F_Ij, or its radiosity toned as
+ * the picture (render.c rad_tone_byte, the scene's exposure): the element
+ * radiosity of /api/elements where that is the lane's (the first lane,
+ * before any change), else the mean of its vertices' smoothed radiosity. */
+async function elementColours(t) {
+    if (t.lane < 0)
+        return { rgb: t.rgb, what: 'F_Ij, as the heat map' };
+    const n = app.scene.elements, ex = app.scene.exposure;
+    let b = null, what = 'radiosity';
+    if (t.lane === 0 && app.state.mode !== 'animate') {
+        const st = await getJSON('api/elements');
+        if (Array.isArray(st.element_b) && st.element_b.length === 3 * n)
+            b = st.element_b;
+    }
+    if (!b) {
+        b = vertexMean(t.vb || []);
+        what = 'radiosity (the mean of its vertices)';
+    }
+    const rgb = new Uint8Array(3 * n);
+    for (let k = 0; k < 3 * n; k++)
+        rgb[k] = toneByte(b[k], ex);
+    return { rgb, what };
+}
+
+/* Per element, the mean of its vertices' radiosity (r, g, b). */
+function vertexMean(vb) {
+    const faces = app.scene.faces, b = new Float64Array(3 * faces.length);
+    faces.forEach((f, e) => {
+        for (const v of f)
+            for (let c = 0; c < 3; c++)
+                b[3 * e + c] += (vb[3 * v + c] || 0) / f.length;
+    });
+    return b;
+}
+
+/* Fetch what is missing and paint: at most every 300 ms (throttled). */
+async function refreshHemicube() {
+    if (STILL || !$('hemi-show').checked)
+        return;
+    $('hemi-lane-row').hidden = !app.race || heatShown();
+    const t = hemiTarget(), R = parseInt($('hemi-res').value, 10) || 32;
+    const changed = app.state && app.state.mode === 'animate';
+    if (!t)
+        return clearHemicube(changed ? 'no shooter while the scene changes: click an element'
+                                     : 'no shooter yet: take a step, or click an element');
+    try {
+        const d = await hemicubeItems(t.element, R);
+        const c = await elementColours(t);
+        paintHemicube(d, c.rgb);
+        hemi.data = d;
+        setText('hemi-caption', 'element ' + t.element + ', ' + t.why + '; R = ' + R +
+                '; coloured by ' + c.what + (changed ? '; the scene as loaded' : ''));
+        setText('hemi-sum', fmt(d.sum, 6));
+    } catch (e) {
+        clearHemicube('cannot draw the hemicube: ' + e.message);
+    }
+}
+const updateHemicube = throttled(refreshHemicube, 300);
+
+function clearHemicube(why) {
+    const c = $('hemi');
+    c.getContext('2d').clearRect(0, 0, c.width, c.height);
+    hemi.data = hemi.cells = null;
+    setText('hemi-caption', why);
+    setText('hemi-sum', '\u2013');
+}
+
+/* Where pixel (x, y) of face f lands in the unfolded cross of 2R x 2R
+ * cells, seen from the element looking up the normal n: the top face's
+ * camera (hemicube.c one_face, render.c make_view) has right = n x t1 and
+ * up = t1, so t1 is up the cross and n x t1 to the right; a side along d
+ * has up = n (its row 0 at the top face's edge) and right = d x n.  Each
+ * side is folded out about the edge it shares with the top face. */
+function crossCell(R, f, x, y) {
+    const h = R / 2;
+    switch (f) {
+    case 0: return [h + x, h + y];                 /* top */
+    case 1: return [h + R - 1 - x, h - 1 - y];     /* t1 above: right = -(n x t1) */
+    case 2: return [h + x, h + R + y];             /* -t1 below: right = n x t1 */
+    case 3: return [h + R + y, h + R - 1 - x];     /* n x t1 right: right = t1 */
+    default: return [h - 1 - y, h + x];            /* -(n x t1) left: right = -t1 */
+    }
+}
+
+/* The unfolded hemicube: one cell per pixel of the item buffers (the top
+ * face's R x R first, then the sides' R/2 x R, radi_hemicube_row_items'
+ * order) in its element's colour, black where nothing is seen (render.c's
+ * background); the cross's corners blank, thin lines between the faces. */
+function paintHemicube(d, rgb) {
+    const R = d.resolution, N = 2 * R, img = new ImageData(N, N);
+    const cells = new Int32Array(N * N).fill(-1);
+    for (let f = 0; f < 5; f++) {
+        const rows = f ? R / 2 : R, base = f ? R * R + (f - 1) * (R / 2) * R : 0;
+        for (let y = 0; y < rows; y++)
+            for (let x = 0; x < R; x++) {
+                const [X, Y] = crossCell(R, f, x, y), c = Y * N + X, p = base + y * R + x;
+                const id = d.items[p], o = 4 * c;
+                cells[c] = p;
+                for (let k = 0; k < 3; k++)
+                    img.data[o + k] = id >= 0 ? rgb[3 * id + k] : 0;
+                img.data[o + 3] = 255;
+            }
+    }
+    hemi.cells = cells;
+    drawCross(img, R);
+}
+
+function drawCross(img, R) {
+    const c = $('hemi'), ctx = c.getContext('2d'), N = 2 * R;
+    const dpr = window.devicePixelRatio || 1, W = c.clientWidth || 256, H = c.clientHeight || 256;
+    c.width = Math.round(W * dpr);
+    c.height = Math.round(H * dpr);
+    const off = document.createElement('canvas');
+    off.width = off.height = N;
+    off.getContext('2d').putImageData(img, 0, 0);
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.imageSmoothingEnabled = false;
+    ctx.drawImage(off, 0, 0, W, H);
+    const s = W / N, h = R / 2;
+    ctx.strokeStyle = 'rgba(200, 200, 200, 0.6)';
+    ctx.lineWidth = 1;
+    for (const [x, y, w, hh] of [[h, h, R, R], [h, 0, R, h], [h, h + R, R, h], [h + R, h, h, R],
+                                 [0, h, h, R]])
+        ctx.strokeRect(x * s, y * s, w * s, hh * s);
+    ctx.fillStyle = '#aaa';
+    ctx.font = '11px sans-serif';
+    ctx.textAlign = 'right';
+    ctx.fillText('t1 \u2191', h * s - 4, h * s - 6);
+    ctx.textAlign = 'left';
+    ctx.fillText('n\u00d7t1 \u2192', (h + R) * s + 4, h * s - 6);
+}
+
+/* The pixel under the pointer: its face, the element it shows, its F. */
+function hoverHemicube(ev) {
+    const d = hemi.data, c = $('hemi');
+    if (!d || !hemi.cells)
+        return;
+    const R = d.resolution, N = 2 * R;
+    const X = Math.floor(ev.offsetX * N / c.clientWidth), Y = Math.floor(ev.offsetY * N / c.clientHeight);
+    const p = X >= 0 && X < N && Y >= 0 && Y < N ? hemi.cells[Y * N + X] : -1;
+    if (p < 0)
+        return setText('hemi-hover', '\u2013');
+    const f = p < R * R ? 0 : 1 + Math.floor((p - R * R) / (R * R / 2));
+    const q = f ? (p - R * R) % (R * R / 2) : p, id = d.items[p];
+    let text = HEMI_FACES[f] + ' (' + q % R + ', ' + Math.floor(q / R) + '): ';
+    text += id < 0 ? 'nothing' : 'element ' + id + ', F by the hemicube ' + fmt(d.row[id], 4);
+    if (id >= 0 && heatShown() && app.heat.element === d.element)
+        text += ', F ' + fmt(app.heat.row[id], 4);
+    setText('hemi-hover', text);
+}
+
+/* ---- the material editor: `material NAME reflect R G B emit R G B` ------------- */
+
+const MATERIAL_INPUTS = ['refl-r', 'refl-g', 'refl-b', 'emit-r', 'emit-g', 'emit-b'];
+
+function currentMaterial() {
+    const name = $('material').value;
+    return (app.scene.materials || []).find((m) => m.name === name) || null;
+}
+
+/* The scene's materials into the list (again after each scene change). */
+function showMaterials() {
+    if (STILL)
+        return;
+    const sel = $('material'), keep = sel.value, mats = app.scene.materials || [];
+    sel.textContent = '';
+    for (const m of mats) {
+        const opt = document.createElement('option');
+        opt.value = opt.textContent = m.name;
+        sel.appendChild(opt);
+    }
+    if (mats.some((m) => m.name === keep))
+        sel.value = keep;
+    $('material-tools').hidden = !mats.length;
+    fillMaterial(false);
+}
+
+/* The chosen material's values into the inputs; not while one of them is
+ * being edited, unless `force`. */
+function fillMaterial(force) {
+    const m = currentMaterial();
+    if (!m || (!force && MATERIAL_INPUTS.some((id) => document.activeElement === $(id))))
+        return;
+    m.reflect.concat(m.emit).forEach((x, k) => { $(MATERIAL_INPUTS[k]).value = String(x); });
+    setText('material-error', '');
+    showSwatch();
+}
+
+/* The reflectance as an sRGB colour (eq. 5.2), a preview of the surface. */
+function showSwatch() {
+    const v = MATERIAL_INPUTS.slice(0, 3).map((id) => Number($(id).value));
+    $('material-swatch').style.background = v.every((x) => isFinite(x))
+        ? cssRGB(v.map((x) => Math.round(255 * srgbEncode(x)))) : 'transparent';
+}
+
+/* Send the line; the server checks the ranges (reflect 0 to 1, emit 0 or
+ * more) and its reason for a refusal shows under the editor. */
+async function applyMaterial() {
+    const m = currentMaterial();
+    if (!m)
+        return;
+    const v = MATERIAL_INPUTS.map((id) => $(id).value.trim());
+    if (v.some((x) => x === '' || !isFinite(Number(x))))
+        return setText('material-error', 'each value must be a number');
+    setText('material-error', '');
+    const ok = await postChange('material ' + m.name + ' reflect ' + v.slice(0, 3).join(' ') +
+                                ' emit ' + v.slice(3).join(' '));
+    setText('material-error', ok ? '' : app.refusal);
+}
+
+/* ---- the teaching views' controls ---------------------------------------------- */
+
+function attachTeaching() {
+    $('pick').addEventListener('change', (e) => setPickMode(e.target.checked));
+    const lane = $('hemi-lane');
+    RACE_METHODS.forEach((m, k) => {
+        const o = document.createElement('option');
+        o.value = String(k);
+        o.textContent = m;
+        lane.appendChild(o);
+        $('lane-' + k).style.borderColor = LANE_COLOURS[k];
+    });
+    lane.value = String(RACE_METHODS.indexOf('sorted_ambient'));
+    const showHemi = () => {
+        $('hemi-body').hidden = !$('hemi-show').checked;
+        updateHemicube();
+    };
+    $('hemi-show').addEventListener('change', showHemi);
+    $('hemi-res').addEventListener('change', updateHemicube);
+    lane.addEventListener('change', updateHemicube);
+    $('hemi').addEventListener('mousemove', hoverHemicube);
+    $('material').addEventListener('change', () => fillMaterial(true));
+    $('material-apply').addEventListener('click', applyMaterial);
+    MATERIAL_INPUTS.forEach((id) => $(id).addEventListener('input', showSwatch));
+    showHemi();
+    setPickMode($('pick').checked);
+    showMaterials();
 }
 
 /* ---- talking to the server -------------------------------------------------- */
@@ -1150,6 +1893,7 @@ function startGL() {
     });
     canvas.addEventListener('webglcontextrestored', () => {
         initGL();
+        uploadHeat();
         showMessage('');
         if (app.state)
             app.pending = app.pending || app.state;
