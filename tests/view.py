@@ -291,6 +291,9 @@ bad = [
     ("POST", "/api/control?action=run", None, {"Origin": "http://evil.example"}, 403,
      "another site's page (Origin)"),
     ("GET", "/api/state", None, {"Host": "evil.example:80"}, 403, "another site's Host"),
+    ("POST", "/api/control?action=run", None, {"Origin": "http://127.0.0.2:%d" % cl.port}, 403,
+     "a page of another server on the loopback (Origin)"),
+    ("POST", "/api/control?action=run%00x", None, {}, 400, "a NUL byte in a parameter"),
     ("GET", "/etc/passwd", None, {}, 404, "an unknown route"),
     ("GET", "/../index.html", None, {}, 404, "a path out of the assets"),
     ("GET", "/api/control?action=run", None, {}, 405, "GET on control"),
@@ -514,7 +517,8 @@ for body, ctype, want, what in (
         ('{"changes": "move box 1 0 0"', "application/json", b"JSON body", "truncated JSON"),
         ('{"moves": "move box 1 0 0"}', "application/json", b"JSON body", "another key"),
         ('["move box", 3]', "application/json", b"JSON body", "a number in the array"),
-        ('"move box \\ud800 1 0 0"', "application/json", b"JSON body", "a lone surrogate")):
+        ('"move box \\ud800 1 0 0"', "application/json", b"JSON body", "a lone surrogate"),
+        ("# nothing but a comment\n\n", "text/plain", b"no change", "a comment alone")):
     status, data = cl.req("POST", "/api/change", body, {"Content-Type": ctype})
     ok(status == 400 and want in data, "%s: %d %s" % (what, status, data.decode()))
 status, data = cl.req("POST", "/api/change?x=1", "move box 0 0 0")
@@ -556,6 +560,23 @@ t.join(20)
 ok(code == 0 and not t.is_alive(), "SIGINT with a stream open: status 0, the stream ends")
 ok(sorted(os.listdir(WORK)) == sorted(["F.tsv", "ref.ply", "ref.tsv", "room.scene"]),
    "no file was written")
+
+# ---- streams leave connections to the controls ---------------------------
+p, url = start("--max-connections", "6")
+cl = Client(url)
+held = []
+for _ in range(2):
+    c = http.client.HTTPConnection(cl.host, cl.port, timeout=30)
+    c.request("GET", "/api/events")
+    held.append((c, c.getresponse()))
+status, data = cl.req("GET", "/api/events")
+st2, _ = cl.req("POST", "/api/control?action=step")
+ok(all(r.status == 200 for _, r in held) and status == 503 and st2 == 200,
+   "--max-connections 6: 2 streams, a third refused (%d), a control still served" % status)
+for c, _ in held:
+    c.close()
+cl.control("action=stop")
+p.wait(60)
 
 # ---- --open without a browser to start ------------------------------------
 bin_dir = os.path.join(WORK, "bin")

@@ -172,6 +172,11 @@ typedef struct cli_output {
 /* Remove registered temporaries and exit 128 + signal on SIGINT, SIGTERM
  * and SIGHUP (those not ignored at start-up). */
 void cli_signals_install(void);
+/* For a command that runs until a signal (view): while deferred, SIGINT,
+ * SIGTERM and SIGHUP are only noted, in whichever thread takes them, and
+ * cli_signal_taken returns the one noted (0: none) and forgets it. */
+void cli_signals_defer(int defer);
+int cli_signal_taken(void);
 /* Before any work: could every path be written?  0, or 1 (printed). */
 int cli_outputs_check(const cli_output *o, int n);
 /* A picture's path whose extension names another image format (out.jpg):

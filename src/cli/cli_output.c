@@ -101,6 +101,20 @@ static void hold_signals(int hold, sigset_t *old)
     }
 }
 
+void cli_signals_defer(int defer)
+{
+    holding = defer;
+    if (!defer && deferred) /* one that came after the last look */
+        on_signal(deferred);
+}
+
+int cli_signal_taken(void)
+{
+    const int sig = deferred;
+    deferred = 0;
+    return sig;
+}
+
 /* Do paths a and b name one file that each output would replace (a
  * regular file, or a name not there yet): the same string, or (both
  * existing) the same device and inode (./x and x, a link)?  Standard

@@ -47,11 +47,12 @@ static void help(void)
            "that draws the scene in WebGL as each shot lands, with the solver's\n"
            "controls, the current shooter, the unshot energy left and the RMS error\n"
            "(eq. 14) against step.  It prints the URL to open and serves until\n"
-           "Ctrl-C or the page's stop button.  From the page, objects are moved,\n"
-           "turned, taken out and put back and materials changed, and undone: each\n"
-           "change is a frame that the redistribution engine of `radiosity animate'\n"
-           "(George, Sillion & Greenberg 1990) runs while the picture follows.  The\n"
-           "frames of CHANGES (a change file, radiosity-scene(5)) run first.\n"
+           "Ctrl-C (SIGINT, SIGTERM or SIGHUP; exit 0) or the page's stop button.\n"
+           "From the page, objects are moved, turned, taken out and put back and\n"
+           "materials changed, and undone: each change is a frame that the\n"
+           "redistribution engine of `radiosity animate' (George, Sillion &\n"
+           "Greenberg 1990) runs while the picture follows.  The frames of CHANGES\n"
+           "(a change file, radiosity-scene(5)) run first.\n"
            "Nothing is fetched from the internet, and no file is written but the\n"
            "one --record names.\n"
            "\n"
@@ -70,8 +71,9 @@ static void help(void)
            "      --paused            start paused at step 0\n"
            "      --open              start the desktop's browser on the URL (xdg-open)\n"
            "      --record FILE       at the end, write the session's changes (every\n"
-           "                          frame run, undo frames included) as a change\n"
-           "                          file that `radiosity animate SCENE FILE' replays\n"
+           "                          frame that ran, undo frames included) as a\n"
+           "                          change file that `radiosity animate SCENE FILE'\n"
+           "                          replays\n"
            "      --rate R            steps a second at most while running (default\n"
            "                          30; 0: as fast as the machine goes)\n"
            "      --max-connections N connections served at once (1-1000, default 16)\n"
@@ -86,6 +88,7 @@ typedef struct view_args {
     const char *listen, *assets, *method, *record;
     int paused, connections, open;
     double rate;
+    char addr[64];              /* --listen's address, for the options */
 } view_args;
 
 static int parse_option(view_args *a, int opt, const char *arg)
@@ -127,13 +130,12 @@ static int parse_option(view_args *a, int opt, const char *arg)
 }
 
 #ifdef CLI_VIEW
-/* "ADDR:PORT" into the options' address (a static copy) and port. */
-static int parse_listen(const char *arg, radi_view_options *o)
+/* "ADDR:PORT" into the options' address (a copy in addr) and port. */
+static int parse_listen(const char *arg, char addr[64], radi_view_options *o)
 {
-    static char addr[64];
     const char *colon = strrchr(arg, ':');
     int port;
-    if (!colon || colon == arg || (size_t)(colon - arg) >= sizeof addr ||
+    if (!colon || colon == arg || (size_t)(colon - arg) >= 64 ||
         cli_parse_int(colon + 1, 0, 65535, &port)) {
         cli_error("--listen takes ADDR:PORT (an IPv4 address, a port from 0 to 65535), "
                   "not '%s'",
@@ -197,6 +199,26 @@ static char *changes_text(const char *path, const rad_scene *scene, size_t *len)
     return text;
 }
 
+/* The view stops on SIGINT, SIGTERM and SIGHUP (cli_signals_defer). */
+static int stop_on_signal(void *user)
+{
+    (void)user;
+    return cli_signal_taken() != 0;
+}
+
+static int serve(const rad_scene *scene, const rad_result *res, radi_view_options *o,
+                 char **record)
+{
+    rad_error err;
+    o->stop = stop_on_signal;
+    cli_signals_defer(1);
+    const rad_status st = radi_view_serve(scene, res, o, record, &err);
+    cli_signals_defer(0);
+    if (st != RAD_OK)
+        cli_error_rec(&err);
+    return st != RAD_OK;
+}
+
 static int run(view_args *a, radi_view_options *o, const char *path, const char *changes)
 {
     rad_scene scene;
@@ -226,8 +248,8 @@ static int run(view_args *a, radi_view_options *o, const char *path, const char 
             cli_error_rec(&err);
     } else if (!a->common.quiet && cli_ff_verdict(&a->common, &res.ff)) {
         /* --strict and an unmet promise: printed */
-    } else if (radi_view_serve(&scene, &res, o, a->record ? &record : NULL, &err) != RAD_OK) {
-        cli_error_rec(&err);
+    } else if (serve(&scene, &res, o, a->record ? &record : NULL)) {
+        /* printed */
     } else if (a->record && cli_write_atomic(a->record, write_text, record)) {
         /* printed */
     } else {
@@ -279,7 +301,7 @@ int cmd_view(int argc, char **argv)
 #ifdef CLI_VIEW
     radi_view_options o;
     radi_view_options_init(&o);
-    if (a.listen && parse_listen(a.listen, &o))
+    if (a.listen && parse_listen(a.listen, a.addr, &o))
         return cli_usage_hint("view");
     if (a.method && (o.method = radi_view_method(a.method)) < 0) {
         cli_error("--method: unknown method '%s' (shooting, sorted, sorted_ambient, gathering, "

@@ -803,7 +803,10 @@ done:
 /* ---- one step at a time (the live view) ----------------------------------- */
 
 struct radi_stepper {
-    int method, n, steps, last;
+    int method, n, last;
+    int row;                    /* gathering: the next row, 0 .. n-1 */
+    long steps;                 /* 64 bits: 2^31 steps are 3 minutes of a
+                                   small scene at rate 0 */
     shooter sh;                 /* the shooting methods */
     ambient amb;                /* sorted_ambient */
     const double *F;
@@ -909,7 +912,8 @@ rad_status radi_stepper_step(radi_stepper *s, rad_error *err)
     if (s->n == 0)
         return RAD_OK;
     if (s->method == RAD_RACE_GATHERING) {
-        const int i = s->steps % s->n; /* Gauss-Seidel, one element row */
+        const int i = s->row; /* Gauss-Seidel, one element row */
+        s->row = (i + 1) % s->n;
         gather_row(s->n, s->F + i, (size_t)s->n, s->rho, s->E, s->B, i);
         s->last = i;
     } else if (s->method == RAD_STEP_JACOBI) {
@@ -939,7 +943,7 @@ int radi_stepper_last(const radi_stepper *s)
     return s->last;
 }
 
-int radi_stepper_steps(const radi_stepper *s)
+long radi_stepper_steps(const radi_stepper *s)
 {
     return s->steps;
 }

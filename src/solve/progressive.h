@@ -104,7 +104,7 @@ rad_status radi_stepper_new(radi_stepper **s, const rad_mesh *mesh, const double
 rad_status radi_stepper_step(radi_stepper *s, rad_error *err);
 const double *radi_stepper_shown(const radi_stepper *s);
 int radi_stepper_last(const radi_stepper *s);
-int radi_stepper_steps(const radi_stepper *s);
+long radi_stepper_steps(const radi_stepper *s);
 double radi_stepper_unshot(const radi_stepper *s);
 void radi_stepper_free(radi_stepper *s);
 

@@ -213,8 +213,7 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim *a, int k)
         jb_free(&inv);
         if (!s->stopping) {
             s->anim_state = -1;
-            snprintf(s->anim_failure, sizeof s->anim_failure, "frame %d: %.200s", k,
-                     err.message);
+            snprintf(s->anim_failure, sizeof s->anim_failure, "%.250s", err.message);
         }
         return -1;
     }
@@ -298,22 +297,31 @@ void view_animator_stop(view_session *s)
     s->animator_started = 0;
 }
 
-/* Room for frame k's undo mark (lock held). */
+/* Room for frame k's undo mark and offset (lock held). */
 static int reserve_frames(view_session *s, int k)
 {
     unsigned char *u = realloc(s->is_undo, (size_t)k + 2);
-    if (!u)
-        return -1;
-    memset(u + s->frames + 1, 0, (size_t)(k - s->frames) + 1);
-    s->is_undo = u;
-    return 0;
+    if (u) {
+        memset(u + s->frames + 1, 0, (size_t)(k - s->frames) + 1);
+        s->is_undo = u;
+    }
+    size_t *f = u ? realloc(s->frame_start, sizeof *f * ((size_t)k + 2)) : NULL;
+    if (f)
+        s->frame_start = f;
+    return u && f ? 0 : -1;
 }
 
 /* Append req (nf frames, checked) to the session (lock held). */
 static int append(view_session *s, const char *req, size_t len, int nf, int undo)
 {
+    const size_t from = s->changes.len;
     if (reserve_frames(s, s->frames + nf) != 0 || view_history_append(&s->changes, req, len))
         return -1;
+    if (view_history_frames(s->changes.s, from, s->changes.len, s->frame_start + s->frames + 1,
+                            nf) != nf) {
+        s->changes.len = from; /* cannot happen: the parser counted nf */
+        return -1;
+    }
     for (int k = 1; k <= nf; k++)
         s->is_undo[s->frames + k] = (unsigned char)undo;
     s->frames += nf;
@@ -323,21 +331,22 @@ static int append(view_session *s, const char *req, size_t len, int nf, int undo
     return 0;
 }
 
-int view_queue_changes(view_session *s, const char *req, size_t len, char *why, size_t cap)
+int view_queue_changes(view_session *s, const char *req, size_t len, int limited, char *why,
+                       size_t cap)
 {
     int nf = 0, code = 0;
     pthread_mutex_lock(&s->lock);
     if (s->anim_state < 0) {
         snprintf(why, cap, "the animation failed: %s", s->anim_failure);
         code = 503;
-    } else if (s->frames - s->applied >= VIEW_MAX_QUEUED) {
+    } else if (limited && s->frames - s->applied >= VIEW_MAX_QUEUED) {
         snprintf(why, cap, "%d frames are waiting to run: try again when they have",
                  s->frames - s->applied);
         code = 429;
     } else if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
-                                  req, len, &nf, why, cap) != 0) {
+                                  req, len, !limited, &nf, why, cap) != 0) {
         code = 400;
-    } else if (s->frames - s->applied + nf > VIEW_MAX_QUEUED) {
+    } else if (limited && s->frames - s->applied + nf > VIEW_MAX_QUEUED) {
         snprintf(why, cap, "%d frames at once: at most %d may wait", nf, VIEW_MAX_QUEUED);
         code = 429;
     } else if (append(s, req, len, nf, 0) != 0) {
@@ -364,7 +373,7 @@ int view_queue_undo(view_session *s, char *why, size_t cap)
     } else {
         jbuf *inv = &s->inverse[s->ninverse - 1];
         if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
-                               inv->s, inv->len, &nf, why, cap) != 0)
+                               inv->s, inv->len, 1, &nf, why, cap) != 0)
             code = 500; /* the inverse of a frame that ran: cannot fail */
         else if (append(s, inv->s, inv->len, nf, 1) != 0) {
             snprintf(why, cap, "out of memory for the changes");

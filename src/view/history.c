@@ -49,6 +49,43 @@ static void shift_line(const char *msg, const char *name, int shift, char *out, 
     snprintf(out, cap, "%s", msg);
 }
 
+/* Is the first token of text[0..n), after blank and comment lines, the
+ * line `frame`?  The change reader's blanks: space, \t, \r, \f, \v. */
+static int starts_frame(const char *s, size_t n)
+{
+    static const char blank[] = " \t\r\f\v\n";
+    size_t i = 0;
+    while (i < n && s[i] && (strchr(blank, s[i]) || s[i] == '#'))
+        if (s[i++] == '#')
+            while (i < n && s[i] != '\n' && s[i] != '\r')
+                i++;
+    return n - i >= 5 && !strncmp(s + i, "frame", 5) &&
+           (n - i == 5 || (s[i + 5] && (strchr(blank, s[i + 5]) || s[i + 5] == '#')));
+}
+
+/* Is the line at s (to its '\n' or n) a `frame` line: its first word
+ * "frame", then the line's end, a blank or a comment? */
+static int frame_line(const char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r' || s[i] == '\f' || s[i] == '\v'))
+        i++;
+    return n - i >= 5 && !strncmp(s + i, "frame", 5) &&
+           (n - i == 5 || strchr(" \t\r\f\v\n#", s[i + 5]));
+}
+
+int view_history_frames(const char *s, size_t from, size_t n, size_t *starts, int cap)
+{
+    int k = 0;
+    for (size_t i = from; i < n; i++)
+        if ((i == from || s[i - 1] == '\n') && frame_line(s + i, n - i)) {
+            if (k < cap)
+                starts[k] = i;
+            k++;
+        }
+    return k;
+}
+
 static int count_lines(const char *s, size_t n)
 {
     int k = 0;
@@ -58,11 +95,10 @@ static int count_lines(const char *s, size_t n)
 }
 
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
-                       const char *req, size_t rlen, int *frames, char *why, size_t cap)
+                       const char *req, size_t rlen, int empty_ok, int *frames, char *why,
+                       size_t cap)
 {
-    const int starts = rlen >= 5 && !strncmp(req, "frame", 5) &&
-                       (rlen == 5 || req[5] == '\n' || req[5] == ' ' || req[5] == '\t' ||
-                        req[5] == '\r' || req[5] == '#');
+    const int starts = starts_frame(req, rlen);
     static const char head[] = "frame\n";
     const size_t hk = starts ? 0 : sizeof head - 1;
     char *text = malloc(hlen + hk + rlen + 2);
@@ -85,9 +121,10 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
         ok = 0;
     } else {
         *frames = all.nframes - before.nframes;
+        const int added = all.nchanges - before.nchanges;
         rad_changes_free(&before);
         rad_changes_free(&all);
-        if (*frames < 1) {
+        if (*frames < 1 || (!empty_ok && added == 0)) {
             snprintf(why, cap, "request: no change (a change file's lines: move, rotate, "
                                "remove, add, material, frame)");
             ok = 0;
@@ -100,8 +137,7 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
 /* Append text[0..n) to b as the frame after what b holds. */
 int view_history_append(jbuf *b, const char *req, size_t rlen)
 {
-    const int starts = rlen >= 5 && !strncmp(req, "frame", 5);
-    if (!starts)
+    if (!starts_frame(req, rlen))
         jb_printf(b, "frame\n");
     jb_printf(b, "%.*s", (int)rlen, req);
     if (rlen == 0 || req[rlen - 1] != '\n')

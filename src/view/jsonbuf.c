@@ -4,7 +4,10 @@
  *
  * JSON as RFC 8259: numbers have no NaN or infinity (they are written
  * null), strings escape the quote, the backslash and the control
- * characters (section 7).
+ * characters (section 7), and a byte that does not begin a well-formed
+ * UTF-8 sequence (RFC 3629, section 4: no overlong form, no surrogate,
+ * nothing past U+10FFFF) is written U+FFFD: a client's bytes echoed, or
+ * a name in an OBJ file, may not be UTF-8 (section 8.1).
  */
 #include <config.h>
 
@@ -70,6 +73,23 @@ void jb_num(jbuf *b, double x, int exact)
         jb_printf(b, exact ? "%.17g" : "%.9g", x);
 }
 
+/* The length of the well-formed UTF-8 sequence at p (2 to 4), or 0. */
+static int utf8_length(const unsigned char *p)
+{
+    const unsigned c = p[0];
+    const int n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3
+                  : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    /* the second byte's range (RFC 3629, section 4) */
+    const unsigned lo = c == 0xe0 ? 0xa0 : c == 0xf0 ? 0x90 : 0x80;
+    const unsigned hi = c == 0xed ? 0x9f : c == 0xf4 ? 0x8f : 0xbf;
+    if (n == 0 || p[1] < lo || p[1] > hi)
+        return 0;
+    for (int k = 2; k < n; k++)
+        if (p[k] < 0x80 || p[k] > 0xbf)
+            return 0;
+    return n;
+}
+
 void jb_str(jbuf *b, const char *s)
 {
     jb_printf(b, "\"");
@@ -78,6 +98,14 @@ void jb_str(jbuf *b, const char *s)
             jb_printf(b, "\\%c", *p);
         else if (*p < 0x20)
             jb_printf(b, "\\u%04x", *p);
+        else if (*p >= 0x80) {
+            const int n = utf8_length(p);
+            if (n)
+                jb_printf(b, "%.*s", n, (const char *)p);
+            else
+                jb_printf(b, "\\ufffd");
+            p += n ? n - 1 : 0;
+        }
         else
             jb_printf(b, "%c", *p);
     }

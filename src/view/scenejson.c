@@ -197,7 +197,7 @@ void view_state_json(const view_session *s, jbuf *b, int vertices, int elements)
 {
     jb_printf(b, "{\"version\":%ld,\"method\":", s->version);
     jb_str(b, radi_view_method_name(s->method));
-    jb_printf(b, ",\"running\":%s,\"busy\":%s,\"step\":%d,\"shooter\":%d,\"unshot\":",
+    jb_printf(b, ",\"running\":%s,\"busy\":%s,\"step\":%ld,\"shooter\":%d,\"unshot\":",
               s->running ? "true" : "false",
               s->pending > 0 || s->reset_method >= 0 ? "true" : "false", s->step, s->shooter);
     jb_num(b, s->unshot, 0);

@@ -44,7 +44,7 @@
 #include <errno.h>
 #include <math.h>
 #include <netinet/in.h>
-#include <signal.h>
+#include <sys/socket.h>
 #include <spawn.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -64,6 +64,7 @@ extern char **environ;
 #define VIEW_MAX_BODY 65536     /* bytes of a body read before the connection ends */
 #define VIEW_KEEPALIVE 10       /* seconds between a stream's comment lines */
 #define VIEW_IDLE 60            /* seconds before an idle connection is dropped */
+#define VIEW_SPARE 4            /* connections event streams leave to other requests */
 #define VIEW_MAX_STEPS 1000000
 #define VIEW_MAX_RATE 100000.0
 
@@ -188,7 +189,7 @@ static enum MHD_Result do_change(server *sv, struct MHD_Connection *c, request *
         jb_free(&text);
         return send_error(c, MHD_HTTP_INTERNAL_SERVER_ERROR, "out of memory");
     }
-    const int code = view_queue_changes(sv->s, text.s ? text.s : "", text.len, why, sizeof why);
+    const int code = view_queue_changes(sv->s, text.s ? text.s : "", text.len, 1, why, sizeof why);
     jb_free(&text);
     if (code)
         return send_error(c, (unsigned)code, "%s", why);
@@ -306,21 +307,46 @@ static ssize_t stream_read(void *cls, uint64_t pos, char *buf, size_t max)
 static void stream_free(void *cls)
 {
     stream *st = cls;
+    pthread_mutex_lock(&st->s->lock);
+    st->s->streams--;
+    pthread_mutex_unlock(&st->s->lock);
     jb_free(&st->msg);
     free(st);
 }
 
+/* Event streams hold their connections; VIEW_SPARE connections are kept
+ * for the short requests (a page's controls must still get through when
+ * many browsers watch). */
+static int stream_room(view_session *s)
+{
+    const int most = s->opt.max_connections > VIEW_SPARE ? s->opt.max_connections - VIEW_SPARE : 1;
+    pthread_mutex_lock(&s->lock);
+    const int room = s->streams < most;
+    s->streams += room;
+    pthread_mutex_unlock(&s->lock);
+    return room;
+}
+
 static enum MHD_Result send_stream(server *sv, struct MHD_Connection *c)
 {
+    if (!stream_room(sv->s))
+        return send_error(c, MHD_HTTP_SERVICE_UNAVAILABLE,
+                          "every stream this server keeps is open (its connections less %d "
+                          "for other requests): close a page, or poll /api/state",
+                          VIEW_SPARE);
     stream *st = calloc(1, sizeof *st);
-    if (!st)
+    if (!st) {
+        pthread_mutex_lock(&sv->s->lock);
+        sv->s->streams--;
+        pthread_mutex_unlock(&sv->s->lock);
         return MHD_NO;
+    }
     st->s = sv->s;
     st->sent = -1;
     struct MHD_Response *r =
         MHD_create_response_from_callback(MHD_SIZE_UNKNOWN, 16384, stream_read, st, stream_free);
     if (!r) {
-        free(st);
+        stream_free(st);
         return MHD_NO;
     }
     MHD_add_response_header(r, MHD_HTTP_HEADER_CONTENT_TYPE, "text/event-stream");
@@ -338,10 +364,12 @@ typedef struct control {
 } control;
 
 static enum MHD_Result one_arg(void *cls, enum MHD_ValueKind kind, const char *key,
-                               const char *value)
+                               size_t key_size, const char *value, size_t value_size)
 {
     control *q = cls;
     (void)kind;
+    if (!q->bad[0] && (strlen(key) != key_size || (value && strlen(value) != value_size)))
+        snprintf(q->bad, sizeof q->bad, "a parameter holds a NUL byte (%%00)");
     const char **slot = !strcmp(key, "action")   ? &q->action
                         : !strcmp(key, "method") ? &q->method
                         : !strcmp(key, "steps")  ? &q->steps
@@ -377,7 +405,7 @@ static double number(control *q, const char *name, const char *text, double lo, 
 static enum MHD_Result do_control(server *sv, struct MHD_Connection *c)
 {
     control q = {0};
-    MHD_get_connection_values(c, MHD_GET_ARGUMENT_KIND, one_arg, &q);
+    MHD_get_connection_values_n(c, MHD_GET_ARGUMENT_KIND, one_arg, &q);
     static const char *const names[] = {"run", "pause", "step", "reset", "stop", "undo"};
     int a = -1, method = -1, steps = 1;
     double rate = -1;
@@ -441,17 +469,20 @@ static int host_ok(const server *sv, const char *host)
     struct in_addr a;
     if (!strcmp(name, "localhost") || !strcmp(name, "[::1]") || !strcmp(name, sv->bound))
         return 1;
-    return inet_pton(AF_INET, name, &a) == 1 && (ntohl(a.s_addr) >> 24) == 127;
+    return inet_pton(AF_INET, name, &a) == 1 &&
+           ((ntohl(a.s_addr) >> 24) == 127 || !strcmp(sv->bound, "0.0.0.0"));
 }
 
-/* No Origin (not a browser's cross-site request), or http:// + a Host
- * that host_ok accepts. */
-static int origin_ok(const server *sv, const char *origin)
+/* No Origin (not a browser's cross-site request), or http:// + this
+ * request's Host (already accepted): the page this server served, not one
+ * of another server on another loopback address or on localhost's [::1]. */
+static int origin_ok(const char *origin, const char *host)
 {
     static const char scheme[] = "http://";
     if (!origin)
         return 1;
-    return !strncmp(origin, scheme, sizeof scheme - 1) && host_ok(sv, origin + sizeof scheme - 1);
+    return host && !strncmp(origin, scheme, sizeof scheme - 1) &&
+           !strcasecmp(origin + sizeof scheme - 1, host);
 }
 
 static const asset *asset_of(const server *sv, const char *url)
@@ -531,9 +562,10 @@ static enum MHD_Result handle(void *cls, struct MHD_Connection *c, const char *u
         *upload_size = 0;
         return rq->body > VIEW_MAX_BODY || rq->data.failed ? MHD_NO : MHD_YES;
     }
-    if (!host_ok(sv, MHD_lookup_connection_value(c, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST)))
+    const char *host = MHD_lookup_connection_value(c, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST);
+    if (!host_ok(sv, host))
         return send_error(c, MHD_HTTP_FORBIDDEN, "the Host header does not name this server");
-    if (!origin_ok(sv, MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Origin")))
+    if (!origin_ok(MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Origin"), host))
         return send_error(c, MHD_HTTP_FORBIDDEN,
                           "a request from another site's page (Origin) is not accepted");
     if (rq->body > 0 && strcmp(url, "/api/change") != 0)
@@ -605,27 +637,48 @@ static int server_init(server *sv, view_session *s, rad_error *err)
     return 0;
 }
 
-static struct MHD_Daemon *start_daemon(server *sv, const radi_view_options *o, rad_error *err)
+/* A socket listening on o's address and port, sv->port and sv->bound
+ * set (before any request can read them); -1 with err set. */
+static int listen_on(server *sv, const radi_view_options *o, rad_error *err)
 {
     struct sockaddr_in addr;
+    socklen_t len = sizeof addr;
+    const int one = 1;
     memset(&addr, 0, sizeof addr);
     addr.sin_family = AF_INET;
     addr.sin_port = htons((uint16_t)o->port);
     if (inet_pton(AF_INET, o->address, &addr.sin_addr) != 1)
-        return radi_fail(err, RAD_ERR_INVALID, "'%s' is not an IPv4 address", o->address), NULL;
+        return radi_fail(err, RAD_ERR_INVALID, "'%s' is not an IPv4 address", o->address), -1;
+    const int fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0 || setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one) != 0 ||
+        bind(fd, (struct sockaddr *)&addr, sizeof addr) != 0 || listen(fd, 64) != 0 ||
+        getsockname(fd, (struct sockaddr *)&addr, &len) != 0) {
+        radi_fail(err, RAD_ERR_IO, "cannot listen on %s:%d: %s", o->address, o->port,
+                  strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    snprintf(sv->port, sizeof sv->port, "%u", (unsigned)ntohs(addr.sin_port));
+    snprintf(sv->bound, sizeof sv->bound, "%s", o->address);
+    return fd;
+}
+
+static struct MHD_Daemon *start_daemon(server *sv, const radi_view_options *o, rad_error *err)
+{
+    const int fd = listen_on(sv, o, err);
+    if (fd < 0)
+        return NULL;
     struct MHD_Daemon *d = MHD_start_daemon(
         MHD_USE_THREAD_PER_CONNECTION | MHD_USE_INTERNAL_POLLING_THREAD, 0, NULL, NULL, handle,
-        sv, MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr, MHD_OPTION_CONNECTION_LIMIT,
+        sv, MHD_OPTION_LISTEN_SOCKET, fd, MHD_OPTION_CONNECTION_LIMIT,
         (unsigned)o->max_connections, MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)VIEW_IDLE,
         MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)65536, MHD_OPTION_NOTIFY_COMPLETED,
         request_done, NULL, MHD_OPTION_END);
-    if (!d)
-        return radi_fail(err, RAD_ERR_IO, "cannot listen on %s:%d: %s", o->address, o->port,
-                        errno ? strerror(errno) : "refused"),
-               NULL;
-    const union MHD_DaemonInfo *info = MHD_get_daemon_info(d, MHD_DAEMON_INFO_BIND_PORT);
-    snprintf(sv->port, sizeof sv->port, "%u", info ? (unsigned)info->port : (unsigned)o->port);
-    snprintf(sv->bound, sizeof sv->bound, "%s", o->address);
+    if (!d) {
+        close(fd);
+        return radi_fail(err, RAD_ERR_IO, "cannot serve on %s:%s", o->address, sv->port), NULL;
+    }
     return d;
 }
 
@@ -642,17 +695,18 @@ static void open_browser(const char *url)
                 strerror(e), url);
 }
 
-/* Until SIGINT, SIGTERM or the stop action (SIGINT and SIGTERM are blocked
- * in every thread and taken here). */
-static void wait_for_stop(view_session *s, const sigset_t *set)
+/* Until the stop action, or the caller's o->stop (the program's signals,
+ * which the library leaves to it). */
+static void wait_for_stop(view_session *s, const radi_view_options *o)
 {
     const struct timespec tick = {0, 200000000L};
     for (;;) {
         pthread_mutex_lock(&s->lock);
         const int stop = s->stopping;
         pthread_mutex_unlock(&s->lock);
-        if (stop || sigtimedwait(set, NULL, &tick) > 0)
+        if (stop || (o->stop && o->stop(o->stop_user)))
             return;
+        nanosleep(&tick, NULL);
     }
 }
 
@@ -660,14 +714,13 @@ rad_status radi_view_serve(const rad_scene *scene, const rad_result *res,
                            const radi_view_options *o, char **record, rad_error *err)
 {
     view_session s;
-    server sv;
-    sigset_t set, old;
+    server sv = {0};
     if (!res->F || !res->B)
         return radi_fail(err, RAD_ERR_INVALID, "the view needs the form factors and B");
     if (view_session_init(&s, scene, res, o, err) != 0)
         return err->status;
     char why[512];
-    const int code = o->changes ? view_queue_changes(&s, o->changes, o->changes_len, why,
+    const int code = o->changes ? view_queue_changes(&s, o->changes, o->changes_len, 0, why,
                                                      sizeof why)
                                 : 0;
     if (code || server_init(&sv, &s, err) != 0) {
@@ -677,10 +730,6 @@ rad_status radi_view_serve(const rad_scene *scene, const rad_result *res,
         view_session_free(&s);
         return err->status;
     }
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &set, &old);
     struct MHD_Daemon *d = start_daemon(&sv, o, err);
     rad_status st = d ? RAD_OK : err->status;
     if (d && (view_session_start(&s, err) != 0 || view_animator_start(&s, err) != 0))
@@ -692,14 +741,15 @@ rad_status radi_view_serve(const rad_scene *scene, const rad_result *res,
         fflush(o->announce);
         if (o->open_browser)
             open_browser(url);
-        wait_for_stop(&s, &set);
+        wait_for_stop(&s, o);
     }
     view_session_stop(&s);
     view_animator_stop(&s);
     if (d)
         MHD_stop_daemon(d);
-    pthread_sigmask(SIG_SETMASK, &old, NULL);
-    if (record && st == RAD_OK) {
+    if (record && st == RAD_OK) { /* the frames that ran: the rest never did */
+        if (s.changes.s && s.applied < s.frames)
+            s.changes.s[s.frame_start[s.applied + 1]] = '\0';
         *record = s.changes.s ? s.changes.s : calloc(1, 1);
         s.changes.s = NULL;
         s.changes.len = 0;

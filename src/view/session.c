@@ -110,6 +110,7 @@ void view_session_free(view_session *s)
     free(s->element_now);
     free(s->scene_json);
     free(s->is_undo);
+    free(s->frame_start);
     for (int k = 0; k < s->ninverse; k++)
         jb_free(&s->inverse[k]);
     free(s->inverse);
@@ -117,6 +118,7 @@ void view_session_free(view_session *s)
     s->area = s->rho = s->Bv = s->vertex_b = s->element_b = s->element_now = NULL;
     s->scene_json = NULL;
     s->is_undo = NULL;
+    s->frame_start = NULL;
     s->inverse = NULL;
     s->ninverse = 0;
 }
@@ -245,8 +247,9 @@ static int wait_for_work(view_session *s, double last_step)
             const double gap = s->rate > 0 ? 1 / s->rate - (radi_seconds() - last_step) : 0;
             if (gap <= 0)
                 return -1;
-            struct timespec ts;
-            deadline_after(&ts, gap);
+            struct timespec ts; /* a second at most: a rate of 1e-300 is one
+                                   step in 1e300 s, past any time_t */
+            deadline_after(&ts, gap < 1 ? gap : 1);
             pthread_cond_timedwait(&s->wake, &s->lock, &ts);
             continue;
         }

@@ -8,8 +8,8 @@
  * then holds that solution as the reference of the error plot, steps one
  * method of progressive refinement or gathering from B = E on the same F
  * (progressive.h, radi_stepper) in a thread of its own, and serves the
- * page, the scene and the state until it is told to stop (SIGINT, SIGTERM,
- * or the page's stop button).  server.c says what is served and how a
+ * page, the scene and the state until it is told to stop (o->stop, or the
+ * page's stop button).  server.c says what is served and how a
  * request is checked; session.c what a step publishes.
  */
 #ifndef RAD_VIEW_H
@@ -41,6 +41,10 @@ typedef struct radi_view_options {
     size_t changes_len;
     int open_browser;           /* 1: start the desktop's browser on the URL
                                    (xdg-open; a warning when it cannot) */
+    int (*stop)(void *user);    /* polled 5 times a second, may be NULL:
+                                   non-zero stops the server as the page's
+                                   stop button does */
+    void *stop_user;
 } radi_view_options;
 
 void radi_view_options_init(radi_view_options *o);

@@ -54,10 +54,12 @@ typedef struct view_session {
     int worker_started;
     /* commands, under lock */
     int running, stopping, pending, reset_method;
+    int streams;                /* event streams open (server.c) */
     double rate;
     /* published, under lock */
     long version;
-    int method, step, shooter;
+    int method, shooter;
+    long step;
     double unshot, rms, sps;
     double *vertex_b;           /* nvertices x 3, interleaved (lane after
                                    lane in the race) */
@@ -80,6 +82,7 @@ typedef struct view_session {
     jbuf changes;               /* the session's change file (history.c) */
     int frames, applied;        /* frames asked for, frames run */
     unsigned char *is_undo;     /* per frame (1-based, room for frames + 1) */
+    size_t *frame_start;        /* per frame (1-based): its offset in changes */
     jbuf *inverse;              /* undo: the inverse of frames run, a stack */
     int ninverse, cap_inverse;
     int frame_shots, frame_converged;
@@ -112,12 +115,18 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
                     const unsigned char *present, jbuf *b);
 
 /* history.c: check a request's change lines against the session's change
- * file (frames: how many it adds), append them, and write the frame that
- * undoes frame `frame` of ch, from the scene as it is before that frame.
- * 0, or -1 with the reason in why (check) or when memory ran out. */
+ * file (frames: how many it adds; lines with no change are refused unless
+ * empty_ok: an undo's frame may be empty), append them, and write the
+ * frame that undoes frame `frame` of ch, from the scene as it is before
+ * that frame.  0, or -1 with the reason in why (check) or when memory ran
+ * out. */
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
-                       const char *req, size_t rlen, int *frames, char *why, size_t cap);
+                       const char *req, size_t rlen, int empty_ok, int *frames, char *why,
+                       size_t cap);
 int view_history_append(jbuf *b, const char *req, size_t rlen);
+/* The offsets of the `frame` lines of s[from..n) (the lines begin at
+ * from and after each '\n'), at most cap of them stored; their count. */
+int view_history_frames(const char *s, size_t from, size_t n, size_t *starts, int cap);
 int view_inverse_frame(jbuf *b, const rad_scene *scene, const rad_changes *ch, int frame);
 
 /* hemiview.c: the hemicube of element i at resolution res (even) on the
@@ -133,10 +142,12 @@ int view_json_changes(const char *s, size_t n, jbuf *out, char *why, size_t cap)
 
 /* animator.c: the thread that runs the frames (rad_anim_next), started
  * with the session; and a request's changes or an undo queued for it
- * (0, or an HTTP status with the reason in why). */
+ * (0, or an HTTP status with the reason in why; limited: at most
+ * VIEW_MAX_QUEUED frames may wait, as for a request). */
 int view_animator_start(view_session *s, rad_error *err);
 void view_animator_stop(view_session *s);
-int view_queue_changes(view_session *s, const char *req, size_t len, char *why, size_t cap);
+int view_queue_changes(view_session *s, const char *req, size_t len, int limited, char *why,
+                       size_t cap);
 int view_queue_undo(view_session *s, char *why, size_t cap);
 
 
