@@ -427,7 +427,8 @@ static enum MHD_Result do_control(server *sv, struct MHD_Connection *c)
         const double x = number(&q, "steps", q.steps, 1, VIEW_MAX_STEPS);
         if (!q.bad[0] && x != floor(x))
             snprintf(q.bad, sizeof q.bad, "steps must be a whole number, not %.64s", q.steps);
-        steps = (int)x;
+        if (!q.bad[0]) /* a NaN or 1e99 converted would be undefined (C11 6.3.1.4) */
+            steps = (int)x;
     }
     if (!q.bad[0] && q.rate)
         rate = number(&q, "rate", q.rate, 0, VIEW_MAX_RATE);
