@@ -12,6 +12,12 @@ skip() { # skip WHY: one check that cannot run here
   tap_n=$((tap_n + 1)); echo "ok $tap_n # SKIP $*"
 }
 diag() { printf '# %s\n' "$*"; }
+skip_without_view() { # the whole script skipped when the viewer is not built
+  if "$RADIOSITY" view --method magic x 2>&1 | grep -q "built without the live viewer"; then
+    echo "1..0 # SKIP the viewer is not built (configure found no libmicrohttpd)"
+    exit 0
+  fi
+}
 replay() { # replay FILE: the TAP lines another program wrote, as our checks
   while IFS= read -r line; do
     case $line in

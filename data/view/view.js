@@ -1068,19 +1068,25 @@ function niceStep(x) {
     return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
 }
 
+/* A select's options: the names of `items`, the choice kept when it is
+ * still one of them. */
+function fillNames(sel, items) {
+    const keep = sel.value;
+    sel.textContent = '';
+    for (const it of items) {
+        const opt = document.createElement('option');
+        opt.value = opt.textContent = it.name;
+        sel.appendChild(opt);
+    }
+    if (items.some((it) => it.name === keep))
+        sel.value = keep;
+}
+
 function showObjects() {
     if (STILL)
         return;
-    const sel = $('object'), keep = sel.value, objs = app.scene.objects || [];
-    sel.textContent = '';
-    for (const o of objs) {
-        const opt = document.createElement('option');
-        opt.value = o.name;
-        opt.textContent = o.name;
-        sel.appendChild(opt);
-    }
-    if (objs.some((o) => o.name === keep))
-        sel.value = keep;
+    const objs = app.scene.objects || [];
+    fillNames($('object'), objs);
     $('object-tools').disabled = !objs.length;
     showPresence();
 }
@@ -1755,15 +1761,8 @@ function currentMaterial() {
 function showMaterials() {
     if (STILL)
         return;
-    const sel = $('material'), keep = sel.value, mats = app.scene.materials || [];
-    sel.textContent = '';
-    for (const m of mats) {
-        const opt = document.createElement('option');
-        opt.value = opt.textContent = m.name;
-        sel.appendChild(opt);
-    }
-    if (mats.some((m) => m.name === keep))
-        sel.value = keep;
+    const mats = app.scene.materials || [];
+    fillNames($('material'), mats);
     $('material-tools').hidden = !mats.length;
     fillMaterial(false);
 }

@@ -30,14 +30,20 @@
 #define VIEW_HEIGHT 512
 #define VIEW_FOV 30.0           /* degrees, for a scene without a camera */
 
+/* x, y, z as three comma-separated JSON numbers (exact: 17 digits). */
+static void three(jbuf *b, double x, double y, double z, int exact)
+{
+    jb_num(b, x, exact);
+    jb_printf(b, ",");
+    jb_num(b, y, exact);
+    jb_printf(b, ",");
+    jb_num(b, z, exact);
+}
+
 static void vec(jbuf *b, rad_vec3 v)
 {
     jb_printf(b, "[");
-    jb_num(b, v.x, 0);
-    jb_printf(b, ",");
-    jb_num(b, v.y, 0);
-    jb_printf(b, ",");
-    jb_num(b, v.z, 0);
+    three(b, v.x, v.y, v.z, 0);
     jb_printf(b, "]");
 }
 
@@ -118,11 +124,7 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
     for (int k = 0; k < m->nvertices; k++) {
         const rad_vec3 p = m->vertices[k];
         jb_printf(b, "%s", k ? "," : "");
-        jb_num(b, p.x, 0);
-        jb_printf(b, ",");
-        jb_num(b, p.y, 0);
-        jb_printf(b, ",");
-        jb_num(b, p.z, 0);
+        three(b, p.x, p.y, p.z, 0);
     }
     jb_printf(b, "],");
     elements_json(m, sc, present, b);
@@ -144,15 +146,9 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
         jb_printf(b, "%s{\"name\":", k ? "," : "");
         jb_str(b, mt->name);
         jb_printf(b, ",\"reflect\":[");
-        for (int c = 0; c < RAD_BANDS; c++) {
-            jb_printf(b, "%s", c ? "," : "");
-            jb_num(b, mt->reflect[c], 1);
-        }
+        three(b, mt->reflect[0], mt->reflect[1], mt->reflect[2], 1);
         jb_printf(b, "],\"emit\":[");
-        for (int c = 0; c < RAD_BANDS; c++) {
-            jb_printf(b, "%s", c ? "," : "");
-            jb_num(b, mt->emit[c], 1);
-        }
+        three(b, mt->emit[0], mt->emit[1], mt->emit[2], 1);
         jb_printf(b, "]}");
     }
     jb_printf(b, "],\"geometry\":%ld,\"methods\":[", s->geometry);

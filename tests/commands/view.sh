@@ -5,10 +5,7 @@
 # a clean stop), replayed as this script's checks.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 . "${top_srcdir:-.}/tests/lib.sh"
-if "$RADIOSITY" view --method magic x 2>&1 | grep -q "built without the live viewer"; then
-  echo "1..0 # SKIP the viewer is not built (configure found no libmicrohttpd)"
-  exit 0
-fi
+skip_without_view
 if ! command -v python3 > /dev/null 2>&1; then
   echo "1..0 # SKIP python3 not found"
   exit 0

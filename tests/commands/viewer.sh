@@ -6,10 +6,7 @@
 # against a fresh solve), replayed as this script's checks.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
 . "${top_srcdir:-.}/tests/lib.sh"
-if "$RADIOSITY" view --method magic x 2>&1 | grep -q "built without the live viewer"; then
-  echo "1..0 # SKIP the viewer is not built (configure found no libmicrohttpd)"
-  exit 0
-fi
+skip_without_view
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ] || ! command -v python3 > /dev/null 2>&1; then
   echo "1..0 # SKIP no chromium or python3 (scripts/install-deps.sh installs both)"
