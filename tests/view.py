@@ -166,12 +166,13 @@ ok(worst <= 1e-12, "after one shot B_j = E_j + rho_j E_lamp F_j,lamp (worst %.3g
 ok(e1 is not None and s1["unshot"] < 1, "unshot power fell below the emitted: %s" % s1["unshot"])
 
 # ---- two clients see the same state -------------------------------------
-def events(out, step):
-    """The stream's states until one at `step` (or the stream ends)."""
-    c = http.client.HTTPConnection(cl.host, cl.port, timeout=30)
+def events(out, step, key="step", timeout=30):
+    """The stream's states until one whose `key` reaches `step` (or the
+    stream ends)."""
+    c = http.client.HTTPConnection(cl.host, cl.port, timeout=timeout)
     c.request("GET", "/api/events")
     r = c.getresponse()
-    while not out or out[-1]["step"] < step:
+    while not out or out[-1][key] < step:
         line = r.fp.readline()
         if not line:
             break
@@ -478,9 +479,21 @@ t = time.time()
 while time.time() - t < 120 and cl.json("/api/state")["changes"] == "building":
     time.sleep(0.05)
 ok(cl.json("/api/state")["changes"] == "ready", "the animation is built")
+seen = []
+tf = threading.Thread(target=events, args=(seen, 1, "frame", 120))
+tf.start()
+time.sleep(0.3)
 status, data = cl.req("POST", "/api/change", "move box 0.1 0 0\n")
 ok(status == 200, "a move is queued: %s" % data.decode())
 st = wait_frame(1)
+tf.join(60)
+anim = [x for x in seen if x["mode"] == "animate"]
+stages = [(x["frame"], x["frame_stage"]) for x in anim]
+k = stages.index((0, "form_factors")) if (0, "form_factors") in stages else -1
+ok(k >= 0 and all(x == (0, "direct") for x in stages[:k]) and stages[-1] == (1, "done") and
+   anim[k]["geometry"] >= 1 and anim[k]["vertex_b"] != anim[-1]["vertex_b"],
+   "the move's direct light is shown on the moved box before the other form factors are "
+   "computed: %s ... %s" % (stages[:k + 1], stages[-1:]))
 ok(st is not None and st["mode"] == "animate" and st["converged"] and st["geometry"] >= 1,
    "frame 1 runs and converges; the picture is the animation's")
 el = cl.json("/api/elements")["element_b"]

@@ -1143,9 +1143,15 @@ function showChanges(s) {
     if (box.hidden)
         return;
     let text = 'engine ' + s.changes;
+    const stage = {
+        direct: ', frame ' + (s.frame + 1) + ': shooting the direct light\u2019s change',
+        form_factors: ', frame ' + (s.frame + 1) + ': direct light shown, computing the '
+            + 'other form factors',
+        shooting: ', frame ' + (s.frame + 1) + ': redistributing and propagating'
+    };
     if (s.mode === 'animate')
         text += ' \u00b7 frame ' + s.frame + ' of ' + s.frames + (s.converged ? ', converged'
-            : ', ' + (s.frame_shots || 0) + ' shots');
+            : ', ' + (s.frame_shots || 0) + ' shots') + (stage[s.frame_stage] || '');
     setText('changes-state', text);
     $('undo').disabled = !(s.undo > 0);
     const f = $('changes-failure');

@@ -46,6 +46,11 @@ typedef struct rad_anim_shot {
                                    presence as they are after the shot (in
                                    frame 0 too, before rad_anim_create
                                    returns it); valid during the call only */
+    int direct;                 /* 1: a shot of the frame's direct light's stage
+                                   (rad_anim_options.direct_first); 2: its
+                                   last, after which the frame recomputes the
+                                   rest of its form factors before the next
+                                   shot; 0: any other shot */
 } rad_anim_shot;
 
 /* Called after each shot; non-zero stops the frame (RAD_ERR_INVALID,
@@ -89,6 +94,15 @@ typedef struct rad_anim_options {
                                    pairs whose F changed once more, alone, and
                                    time it (rad_anim_report.t_changed); the
                                    result is thrown away */
+    int direct_first;           /* 1 (default): a frame that converges (steps
+                                   0, strategy 1, exact importance) first
+                                   recomputes the pairs with an emitter and
+                                   shoots their redistribution, then the rest:
+                                   the direct light's change is in B (and
+                                   on_shot) before the bulk of the form
+                                   factors is computed.  The converged frame
+                                   is the same within the tolerance; 0: all
+                                   the pairs at once */
 } rad_anim_options;
 
 RAD_API void rad_anim_options_init(rad_anim_options *opt);

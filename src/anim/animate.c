@@ -22,6 +22,16 @@
  *   3. the mesh is rebuilt (same elements, new positions, materials);
  *   4. the pairs the dirty objects can alter are recomputed into F, and
  *      dF with T = B - dB is kept for the redistribution (animpairs.c);
+ *      with opt.direct_first, in a frame that converges, in two stages:
+ *      (a) the pairs with an element that emits, before or after the
+ *      change, and their redistribution shot at once: the light's new
+ *      shadows and what it newly lights, the largest part of the change
+ *      in the picture, before (b) the other pairs, most of the form
+ *      factors' time.  Stage (a) shoots redistribution only, and a
+ *      redistribution shot moves B and dB alike (animshoot.c), so T =
+ *      B - dB, and with it stage (b)'s dF T, is what it would be without
+ *      the stages: the frame converges to the same B, its shots in
+ *      another order;
  *   5. elements whose rho or E changed (material changes, additions)
  *      restate B = E + rho H, the difference going to dB (their own
  *      correction, propagated by the shots); removed elements drop to 0
@@ -56,6 +66,7 @@ void rad_anim_options_init(rad_anim_options *opt)
     opt->tolerance = 1e-12;
     opt->strategy = 1;
     opt->gather = 1;
+    opt->direct_first = 1;
 }
 
 int rad_anim_frame(const rad_anim *a) { return a->frame; }
@@ -261,7 +272,8 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         memcpy(a->dB, a->E, sizeof *a->B * (size_t)a->n * RAD_BANDS);
         a->emitted0 = radi_anim_emitted(a);
         double t1 = radi_seconds();
-        st = radi_anim_shoot(a, a->opt.partial_start, &rep, err);
+        st = radi_anim_shoot(a, a->opt.partial_start ? RADI_SHOOT_PARTIAL : RADI_SHOOT_CONVERGE,
+                             &rep, err);
         rep.t_shoot = radi_seconds() - t1;
         a->log_open = !rep.converged;
     }
@@ -341,7 +353,7 @@ static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
         radi_anim_log_pass(a);
         rep->log_pass = 1;
         rep->log_residual = a->log_residual;
-        rad_status st = radi_anim_shoot(a, 0, &more, err);
+        rad_status st = radi_anim_shoot(a, RADI_SHOOT_CONVERGE, &more, err);
         if (st != RAD_OK)
             return st;
         rep->shots = more.shots;
@@ -375,6 +387,51 @@ static void blame_changes(const rad_changes *ch, int frame, rad_error *err)
              frame, was);
 }
 
+/* Does element e emit (any band)? */
+static int emits(const rad_anim *a, int e)
+{
+    const size_t n = (size_t)a->n;
+    return a->E[e] > 0 || a->E[e + n] > 0 || a->E[e + 2 * n] > 0;
+}
+
+/* Does this frame take the direct light first (step 4)?  A frame that
+ * converges, of strategy 1 (redistribution before propagation, which the
+ * stages keep) in the exact order. */
+static int staged(const rad_anim *a)
+{
+    return a->opt.direct_first && a->opt.steps == 0 && a->opt.strategy == 1 &&
+           a->opt.importance == RAD_ANIM_IMPORTANCE_EXACT;
+}
+
+/* Step 4: the pairs recomputed, in one stage or two (the header); the
+ * counts of rep, and *t_direct the seconds of stage (a)'s shots. */
+static rad_status update(rad_anim *a, const unsigned char *dirty, const unsigned char *old_in,
+                         const rad_vec3 *lo, const rad_vec3 *hi, const rad_scene *old_scene,
+                         const unsigned char *lit, rad_anim_report *rep, double *t_direct,
+                         rad_error *err)
+{
+    const int two = staged(a);
+    const int which[2] = {two ? RADI_PAIRS_LIT : RADI_PAIRS_ALL, RADI_PAIRS_UNLIT};
+    rad_status st = RAD_OK;
+    *t_direct = 0;
+    for (int k = 0; st == RAD_OK && k < 1 + two; k++) {
+        rad_anim_report part;
+        memset(&part, 0, sizeof part);
+        part.t_changed = NAN;
+        st = radi_anim_update_pairs(a, dirty, old_in, lo, hi, old_scene, lit, which[k], &part,
+                                   err);
+        rep->pairs_recomputed += part.pairs_recomputed;
+        rep->pairs_changed += part.pairs_changed;
+        rep->t_changed = k == 0 ? part.t_changed : rep->t_changed + part.t_changed;
+        if (st == RAD_OK && k == 0 && two) {
+            const double t = radi_seconds();
+            st = radi_anim_shoot(a, RADI_SHOOT_PENDING, rep, err);
+            *t_direct = radi_seconds() - t;
+        }
+    }
+    return st;
+}
+
 rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *rep,
                          rad_error *err)
 {
@@ -385,14 +442,16 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     if (next > ch->nframes)
         return radi_fail(err, RAD_ERR_INVALID, "there is no frame %d", next);
     unsigned char *dirty = calloc((size_t)no + 1, 1), *old_in = malloc((size_t)no + 1);
-    unsigned char *changed = malloc((size_t)a->n + 1);
+    unsigned char *changed = malloc((size_t)a->n + 1), *lit = malloc((size_t)a->n + 1);
     rad_vec3 *lo = malloc(sizeof *lo * (size_t)(no + 1)), *hi = malloc(sizeof *hi * (size_t)(no + 1));
     rad_mesh mesh;
     const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
     rad_anim_sample *smp = paper ? malloc(sizeof *smp * (2 * (size_t)a->n + 1)) : NULL;
     int ns = 0;
-    rad_status st = dirty && old_in && changed && lo && hi && (smp || !paper)
+    rad_status st = dirty && old_in && changed && lit && lo && hi && (smp || !paper)
                         ? RAD_OK : radi_fail(err, RAD_ERR_NOMEM, "out of memory");
+    for (int e = 0; st == RAD_OK && e < a->n; e++)
+        lit[e] = (unsigned char)emits(a, e);
     for (int o = 0; st == RAD_OK && o < no; o++) {
         old_in[o] = a->obj_present[o];
         radi_anim_object_box(a, o, &lo[o], &hi[o]);
@@ -424,10 +483,13 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     }
     a->frame = next;
     rep->frame = next;
+    double t_direct = 0;
     if (st == RAD_OK) {
         element_state(a, changed);
-        st = radi_anim_update_pairs(a, dirty, old_in, lo, hi, keep_old ? &old_scene : NULL, rep,
-                                   err); /* 4 */
+        for (int e = 0; e < a->n; e++)
+            lit[e] |= emits(a, e);
+        st = update(a, dirty, old_in, lo, hi, keep_old ? &old_scene : NULL, lit, rep, &t_direct,
+                    err); /* 4 */
     }
     if (keep_old)
         rad_scene_free(&old_scene);
@@ -436,22 +498,24 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
         np += a->present[e];
     rep->pairs_total = 0.5 * np * (np - 1);
     const double rerun = isfinite(rep->t_changed) ? rep->t_changed : 0; /* not the frame's */
-    rep->t_formfactor = radi_seconds() - t0 - rerun;
+    rep->t_formfactor = radi_seconds() - t0 - rerun - t_direct;
     if (st == RAD_OK) {
         restate(a, changed); /* 5 */
         if (paper)
             radi_anim_importance(a, dirty, smp, ns);
         double t1 = radi_seconds();
         const int partial = !(a->opt.converge_last && next == ch->nframes);
-        st = radi_anim_shoot(a, partial, rep, err); /* 6 */
+        st = radi_anim_shoot(a, partial ? RADI_SHOOT_PARTIAL : RADI_SHOOT_CONVERGE, rep,
+                             err); /* 6 */
         if (st == RAD_OK)
             st = close_log(a, rep, err); /* 7 */
-        rep->t_shoot = radi_seconds() - t1;
+        rep->t_shoot = radi_seconds() - t1 + t_direct;
     }
     rep->t_total = radi_seconds() - t0 - rerun;
     free(dirty);
     free(old_in);
     free(changed);
+    free(lit);
     free(lo);
     free(hi);
     free(smp);

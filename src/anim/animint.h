@@ -73,15 +73,22 @@ struct rad_anim {
     double log_residual;        /* largest |F S - H| / |H| the last pass removed */
 };
 
-/* animpairs.c: recompute, in F, every pair that moving the objects flagged
- * in `dirty` (their boxes before, old_lo/old_hi with old_in[o], and now)
- * can alter, set up a->rd from T = B - dB, and count pairs into rep.
- * old_scene: the present surfaces before the change (rad_scene_present_
- * copy), needed in classic mode only (NULL elsewhere). */
+/* Which of the pairs a change alters one call recomputes: all, those
+ * with an element flagged in `lit` (the direct light's), or the others. */
+enum { RADI_PAIRS_ALL = 0, RADI_PAIRS_LIT = 1, RADI_PAIRS_UNLIT = 2 };
+
+/* animpairs.c: recompute, in F, the pairs of `which` that moving the
+ * objects flagged in `dirty` (their boxes before, old_lo/old_hi with
+ * old_in[o], and now) can alter, set up a->rd from T = B - dB merged with
+ * what is pending, and count them into rep (pairs_recomputed,
+ * pairs_changed and, with opt.time_changed, t_changed).  old_scene: the present surfaces before the
+ * change (rad_scene_present_copy), needed in classic mode only (NULL
+ * elsewhere).  lit: n flags, read unless which is RADI_PAIRS_ALL. */
 rad_status radi_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const unsigned char *old_in, const rad_vec3 *old_lo,
                                  const rad_vec3 *old_hi, const rad_scene *old_scene,
-                                 rad_anim_report *rep, rad_error *err);
+                                 const unsigned char *lit, int which, rad_anim_report *rep,
+                                 rad_error *err);
 /* The box of object o's surfaces in a->scene. */
 void radi_anim_object_box(const rad_anim *a, int o, rad_vec3 *lo, rad_vec3 *hi);
 void radi_redist_free(rad_redist *rd);
@@ -89,8 +96,15 @@ void radi_redist_free(rad_redist *rd);
  * powers and pending counts. */
 rad_status radi_anim_redist_index(rad_anim *a, rad_error *err);
 
-/* animshoot.c: shoot until converged (or opt.steps shots when `partial`). */
-rad_status radi_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_error *err);
+/* How far radi_anim_shoot goes: until converged; until converged or
+ * opt.steps shots (a partial frame); until nothing is left to
+ * redistribute, by redistribution steps only (the direct light's stage,
+ * animate.c). */
+enum { RADI_SHOOT_CONVERGE = 0, RADI_SHOOT_PARTIAL = 1, RADI_SHOOT_PENDING = 2 };
+
+/* animshoot.c: shoot as `how` says (RADI_SHOOT_*); rep's shots, counts and
+ * unshot power follow, and rep->converged is set when the frame is. */
+rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error *err);
 /* Receiver i gathers x (per band): H, B and dB grow (animshoot.c). */
 void radi_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS]);
 

@@ -430,8 +430,15 @@ static int push_pair(pair_list *pl, int i, int j)
     return 0;
 }
 
+/* Is pair (i, j) one of `which` (RADI_PAIRS_*)? */
+static int pair_in(const unsigned char *lit, int which, int i, int j)
+{
+    return which == RADI_PAIRS_ALL || (which == RADI_PAIRS_LIT) == (lit[i] || lit[j]);
+}
+
 static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, const box_list *bl,
-                             route_map *rm, pair_list *pl, rad_error *err)
+                             route_map *rm, const unsigned char *lit, int which, pair_list *pl,
+                             rad_error *err)
 {
     const rad_mesh *m = &a->mesh;
     rad_vec3 *lo = malloc(sizeof *lo * (size_t)(a->n + 1));
@@ -441,7 +448,8 @@ static rad_status list_pairs(const rad_anim *a, const unsigned char *dirty, cons
         element_boxes(m, lo, hi);
     for (int i = 0; st == RAD_OK && i < a->n; i++)
         for (int j = i + 1; j < a->n; j++)
-            if (pair_affected(a, dirty, bl, rm, lo, hi, i, j) && push_pair(pl, i, j) != 0) {
+            if (pair_in(lit, which, i, j) && pair_affected(a, dirty, bl, rm, lo, hi, i, j) &&
+                push_pair(pl, i, j) != 0) {
                 st = radi_fail(err, RAD_ERR_NOMEM, "out of memory for the changed pairs");
                 break;
             }
@@ -754,7 +762,8 @@ static rad_status route_maps(const rad_anim *a, const unsigned char *dirty,
 rad_status radi_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const unsigned char *old_in, const rad_vec3 *old_lo,
                                  const rad_vec3 *old_hi, const rad_scene *old_scene,
-                                 rad_anim_report *rep, rad_error *err)
+                                 const unsigned char *lit, int which, rad_anim_report *rep,
+                                 rad_error *err)
 {
     route_map rm[2];
     memset(rm, 0, sizeof rm);
@@ -780,7 +789,7 @@ rad_status radi_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
     if (st == RAD_OK)
         st = route_maps(a, dirty, old_scene, old_in, rm, err);
     if (st == RAD_OK)
-        st = list_pairs(a, dirty, &bl, rm, &pl, err);
+        st = list_pairs(a, dirty, &bl, rm, lit, which, &pl, err);
     route_map_free(&rm[0]);
     route_map_free(&rm[1]);
     if (st == RAD_OK) {

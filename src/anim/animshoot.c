@@ -42,7 +42,9 @@
  * shooters only, in order of that estimate, animimportance.c) and then
  * propagates; strategy 2 takes at each step the larger of the largest
  * pending redistribution (power or estimate) and the largest unshot
- * power.
+ * power.  The direct light's stage of a frame (animate.c) takes the
+ * redistribution steps of what is pending, in the same order, and no
+ * other shot.
  */
 #include <config.h>
 
@@ -202,17 +204,18 @@ static int largest_pending(const int *counts, const double *power, int n, double
 }
 
 /* The next shot: its kind (0 propagation, 1 redistribution by a shooter,
- * 2 gathered by a receiver) and element, or -1 when nothing is left. */
-static int choose(rad_anim *a, int *kind)
+ * 2 gathered by a receiver) and element, or -1 when nothing is left;
+ * with `pending_only`, redistribution steps only. */
+static int choose(rad_anim *a, int pending_only, int *kind)
 {
-    double pu, pr = -1, pg = -1;
-    for (int j = 0; j < a->n; j++)
+    double pu = -1, pr = -1, pg = -1;
+    for (int j = 0; !pending_only && j < a->n; j++)
         if (a->first[j]) {
             a->first[j] = 0;
             *kind = 0;
             return j;
         }
-    const int u = largest_unshot(a, &pu);
+    const int u = pending_only ? -1 : largest_unshot(a, &pu);
     int r = -1, g = -1;
     const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
     if (a->rd.npending > 0) {
@@ -230,8 +233,9 @@ static int choose(rad_anim *a, int *kind)
     return u;
 }
 
-rad_status radi_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_error *err)
+rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error *err)
 {
+    const int partial = how == RADI_SHOOT_PARTIAL, pending_only = how == RADI_SHOOT_PENDING;
     const double emitted = radi_anim_emitted(a);
     const double scale = emitted > a->emitted0 ? emitted : a->emitted0;
     double unshot = radi_anim_unshot(a);
@@ -241,6 +245,8 @@ rad_status radi_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_e
     long step = first;
     rep->emitted = emitted;
     for (;;) {
+        if (pending_only && a->rd.npending == 0)
+            break;
         if (a->rd.npending == 0 && unshot <= a->opt.tolerance * scale) {
             rep->converged = 1;
             break;
@@ -251,7 +257,9 @@ rad_status radi_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_e
             return radi_fail(err, RAD_ERR_NOCONV, "frame %d: not converged after %ld shots "
                             "(unshot power %.3g of %.3g emitted)", a->frame, step, unshot,
                             scale);
-        int kind, j = choose(a, &kind);
+        int kind, j = choose(a, pending_only, &kind);
+        if (j < 0 && pending_only)
+            break;
         if (j < 0 && a->rd.npending == 0) {
             rep->converged = 1; /* nothing left to shoot at all */
             break;
@@ -264,7 +272,8 @@ rad_status radi_anim_shoot(rad_anim *a, int partial, rad_anim_report *rep, rad_e
         unshot = radi_anim_unshot(a);
         if (a->opt.on_shot) {
             rad_anim_shot s = {a->frame, step, j, redist, p < 0 ? -1 : 1, fabs(p), unshot,
-                               a->rd.left, kind == 2, a};
+                               a->rd.left, kind == 2, a,
+                               pending_only ? 1 + (a->rd.npending == 0) : 0};
             if (a->opt.on_shot(a->opt.shot_user, &s))
                 return radi_fail(err, RAD_ERR_INVALID, "interrupted");
         }

@@ -14,8 +14,10 @@
  * that undoes it is written from the scene as it then is and pushed on
  * the undo stack; an undo appends the top of that stack as a frame of its
  * own.  From the first frame on, the picture is the animation's: each
- * shot (at most VIEW_ANIM_HZ a second, and the frame's last) publishes the
- * radiosity of every element (absent ones 0, not drawn), and each frame
+ * shot (at most VIEW_ANIM_HZ a second, the first of a frame, the last of
+ * its direct light's stage, which a pause for the rest of the form
+ * factors follows, and the frame's last) publishes the radiosity of
+ * every element (absent ones 0, not drawn), and each frame
  * publishes its moved geometry once, raising `geometry` so that the page
  * fetches it again.  When a frame has converged, element_now holds its B
  * numbered as a fresh solve of its scene numbers it
@@ -83,7 +85,7 @@ static int publish_geometry(view_session *s, const rad_anim *a)
 }
 
 /* The animation's radiosity to the page (takes the lock). */
-static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unshot)
+static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unshot, int stage)
 {
     view_session *s = p->s;
     const rad_mesh *m = rad_anim_mesh(a);
@@ -111,6 +113,7 @@ static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unsho
         s->animate = 1;
         s->running = s->pending = 0; /* the race stops: its F is frame 0's */
         s->frame_shots = (int)shots;
+        s->frame_stage = stage;
         s->unshot = unshot;
         s->rms = NAN;
         s->shooter = -1;
@@ -145,8 +148,10 @@ static int on_shot(void *user, const rad_anim_shot *shot)
     if (shot->frame == 0)
         return stopping(p->s); /* frame 0: the race is on the page */
     const double now = radi_seconds();
-    if (now - p->last >= 1 / VIEW_ANIM_HZ || p->frame != shot->frame) {
-        if (publish_anim(p, shot->anim, shot->step, shot->unshot / p->emitted) != 0)
+    const int stage = shot->direct == 1 ? VIEW_STAGE_DIRECT
+                      : shot->direct == 2 ? VIEW_STAGE_FORM_FACTORS : VIEW_STAGE_SHOOTING;
+    if (now - p->last >= 1 / VIEW_ANIM_HZ || p->frame != shot->frame || shot->direct == 2) {
+        if (publish_anim(p, shot->anim, shot->step, shot->unshot / p->emitted, stage) != 0)
             return 1;
         p->last = now;
     }
@@ -205,8 +210,9 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim *a, int k)
             st = rad_anim_next(a, &ch, &rep, &err);
         rad_changes_free(&ch);
     }
-    if (st == RAD_OK && (publish_anim(p, a, rep.shots, rep.unshot / p->emitted) != 0 ||
-                         frame_done(s, a, &rep) != 0))
+    if (st == RAD_OK &&
+        (publish_anim(p, a, rep.shots, rep.unshot / p->emitted, VIEW_STAGE_DONE) != 0 ||
+         frame_done(s, a, &rep) != 0))
         st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory publishing frame %d", k);
     pthread_mutex_lock(&s->lock);
     if (st != RAD_OK) {

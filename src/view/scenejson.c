@@ -208,10 +208,13 @@ void view_state_json(const view_session *s, jbuf *b, int vertices, int elements)
         jb_str(b, s->failure);
     else
         jb_printf(b, "null");
+    static const char *const stage[] = {"done", "direct", "form_factors", "shooting"};
     jb_printf(b, ",\"mode\":\"%s\",\"frame\":%d,\"frames\":%d,\"frame_shots\":%d,"
+                 "\"frame_stage\":\"%s\","
                  "\"converged\":%s,\"undo\":%d,\"geometry\":%ld,\"changes\":\"%s\","
                  "\"changes_failure\":",
               s->animate ? "animate" : "race", s->applied, s->frames, s->frame_shots,
+              stage[s->frame_stage],
               s->frame_converged ? "true" : "false", s->ninverse, s->geometry,
               s->anim_state > 0 ? "ready" : s->anim_state < 0 ? "failed" : "building");
     if (s->anim_failure[0])

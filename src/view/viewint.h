@@ -40,6 +40,11 @@ void jb_str(jbuf *b, const char *s);
 #define VIEW_LANES 4            /* the race's methods: gathering, shooting,
                                    sorted, sorted_ambient (progressive.h) */
 
+/* Where the frame running is (rad_anim_options.direct_first): none
+ * running; shooting its direct light's change; that shown while the rest
+ * of its form factors are computed; shooting the rest. */
+enum { VIEW_STAGE_DONE = 0, VIEW_STAGE_DIRECT, VIEW_STAGE_FORM_FACTORS, VIEW_STAGE_SHOOTING };
+
 typedef struct view_session {
     const rad_scene *scene;
     const rad_mesh *mesh;
@@ -86,6 +91,7 @@ typedef struct view_session {
     jbuf *inverse;              /* undo: the inverse of frames run, a stack */
     int ninverse, cap_inverse;
     int frame_shots, frame_converged;
+    int frame_stage;            /* of the frame running: VIEW_STAGE_* */
     long geometry;              /* the version of scene_json */
     char *scene_json;           /* the scene as drawn now */
     size_t scene_len;
