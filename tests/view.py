@@ -556,6 +556,49 @@ for k in range(7):
 for name in ("box.scene", "moved.scene", "session.changes"):
     os.remove(os.path.join(WORK, name))
 
+# ---- the adaptive mesh as it splits ------------------------------------------
+
+p, url = start("--method", "adaptive", "--subdivide-threshold", "0.05")
+cl = Client(url)
+s0 = cl.wait_step(0)
+n0 = cl.json("/api/scene")["elements"]
+ok(s0 is not None and s0["method"] == "adaptive" and s0["rms"] is None and n0 == 37 and
+   abs(s0["unshot"] - 1) < 1e-12,
+   "adaptive: step 0 on the 37 starting elements, all the power unshot (%s), no error curve"
+   % (s0 and s0["unshot"]))
+status, _ = cl.req("GET", "/api/row?element=0")
+status2, _ = cl.req("GET", "/api/hemicube?element=0")
+ok(status == 409 and status2 == 409,
+   "adaptive: rows of F and hemicubes are refused while the leaves are drawn (%d, %d)"
+   % (status, status2))
+cl.control("action=run&rate=0")
+t = time.time()
+st = cl.json("/api/state")
+while time.time() - t < 120 and (st["running"] or st["step"] == 0):
+    time.sleep(0.05)
+    st = cl.json("/api/state")
+el = cl.json("/api/elements")["element_b"]
+n1 = cl.json("/api/scene")["elements"]
+out = os.path.join(WORK, "adaptive.tsv")
+subprocess.run([RAD, "solve", "-q", "--solver", "progressive", "--adaptive",
+                "--subdivide-threshold", "0.05", "--elements", out, "-o",
+                os.path.join(WORK, "adaptive.ply"), scene], check=True)
+rows = table(out)
+ref = [float(r[b]) for r in rows for b in ("r", "g", "b")]
+ok(not st["running"] and not st["failure"] and st["geometry"] > s0["geometry"] and
+   n1 == len(rows) > n0 and el == ref,
+   "adaptive: converged at step %d on %d elements split from %d; leaves and B are those of "
+   "solve --adaptive, bit for bit" % (st["step"], n1, n0))
+cl.control("action=reset&method=sorted")
+s1 = cl.wait_step(0)
+status, _ = cl.req("GET", "/api/row?element=0")
+ok(s1["method"] == "sorted" and cl.json("/api/scene")["elements"] == n0 and status == 200,
+   "adaptive, then sorted: the mesh as loaded is drawn again and its rows served")
+cl.control("action=stop")
+ok(p.wait(60) == 0, "stopped")
+for name in ("adaptive.tsv", "adaptive.ply"):
+    os.remove(os.path.join(WORK, name))
+
 # ---- Ctrl-C ---------------------------------------------------------------
 p, url = start("--listen", "127.0.0.1:0")
 cl = Client(url)

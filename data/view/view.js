@@ -337,6 +337,7 @@ const app = {
     gl: null, glp: null,  // the context and its programs and buffers
     orbit: { yaw: 0, pitch: 0, zoom: 1 },
     outlines: false,
+    wasAdaptive: false,   // the last state drawn was the adaptive method's
     showShooter: false,
     frameQueued: false,
     busy: false,          // a request is on its way
@@ -909,13 +910,21 @@ function syncInput(el, value) {
 }
 
 function showReadouts(s) {
-    setText('state-method', s.method || '?');
+    const adaptive = s.method === 'adaptive' && s.mode !== 'animate';
+    setText('state-method', (s.method || '?') + (adaptive && app.scene
+        ? ' \u00b7 ' + app.scene.elements + ' elements' : ''));
+    if (adaptive && !app.wasAdaptive) {   /* the mesh splitting is the point: outlines on */
+        $('outlines').checked = app.outlines = true;
+        requestDraw();
+    }
+    app.wasAdaptive = adaptive;
     setText('state-running', s.busy ? 'busy' : s.running ? 'running' : 'paused');
     setText('state-step', Number.isInteger(s.step) ? String(s.step) : '\u2013');
     setText('state-sps', fmtRate(s.shots_per_second));
     setText('state-unshot', typeof s.unshot === 'number' ? fmt(100 * s.unshot) + ' %'
                                                          : 'n/a (' + (s.method || '') + ')');
-    setText('state-rms', fmt(s.rms, 4));
+    setText('state-rms', adaptive ? '\u2013 (its converged mesh is not known yet)'
+                                  : fmt(s.rms, 4));
     setText('state-shooter', describeShooter(s.shooter));
     /* once the scene has changed the race is over: the server answers 409 */
     const race = s.mode !== 'animate';

@@ -21,6 +21,7 @@
 #include "radiosity/base.h"
 #include "radiosity/mesh.h"
 #include "radiosity/pipeline.h"
+#include "radiosity/solve.h"
 #include "radiosity/scene.h"
 #include "radiosity/changes.h"
 #ifdef CLI_VIEW
@@ -66,8 +67,19 @@ static void help(void)
            "                          sorted_ambient (sorted, shown with the ambient\n"
            "                          term; the default), gathering (Gauss-Seidel,\n"
            "                          one element a step), jacobi (one sweep a step)\n"
-           "                          or race (the first four side by side, as in\n"
-           "                          figure 7 of the paper)\n"
+           "                          race (the first four side by side, as in\n"
+           "                          figure 7 of the paper) or adaptive (sorted\n"
+           "                          shooting with adaptive subdivision, section 4:\n"
+           "                          the mesh splits as the light lands; no error\n"
+           "                          curve, its converged mesh being unknown)\n"
+           "      --subdivide-threshold T  adaptive: split an element where |B -\n"
+           "                          B_neighbour| > T times the largest reflected\n"
+           "                          radiosity, in some band (default 0.1)\n"
+           "      --max-depth D       adaptive: at most D splits below a starting\n"
+           "                          element, 0 to 8 (default 3)\n"
+           "      --subdivide-test difference|error  adaptive: T bounds the\n"
+           "                          difference (default) or the difference times\n"
+           "                          the element's side over the largest patch's\n"
            "      --paused            start paused at step 0\n"
            "      --open              start the desktop's browser on the URL (xdg-open)\n"
            "      --record FILE       at the end, write the session's changes (every\n"
@@ -85,6 +97,8 @@ static void help(void)
 
 typedef struct view_args {
     cli_common common;
+    rad_solve_options adaptive; /* the adaptive method's options */
+    int given_adaptive;
     const char *listen, *assets, *method, *record;
     int paused, connections, open;
     double rate;
@@ -124,8 +138,12 @@ static int parse_option(view_args *a, int opt, const char *arg)
             return 2;
         }
         return 0;
-    default:
+    default: {
+        const int r = cli_adaptive_option(&a->adaptive, &a->given_adaptive, opt, arg);
+        if (r != 1)
+            return r;
         return cli_common_option(&a->common, opt, arg) == 0 ? 0 : 2;
+    }
     }
 }
 
@@ -275,12 +293,16 @@ int cmd_view(int argc, char **argv)
         {"record", required_argument, NULL, OPT_RECORD},
         {"rate", required_argument, NULL, OPT_RATE},
         {"max-connections", required_argument, NULL, OPT_CONNECTIONS},
+        {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD},
+        {"max-depth", required_argument, NULL, OPT_MAX_DEPTH},
+        {"subdivide-test", required_argument, NULL, OPT_SUBDIVIDE_TEST},
         CLI_COMMON_LONGOPTS,
         {NULL, 0, NULL, 0}};
     view_args a;
     int opt;
     memset(&a, 0, sizeof a);
     cli_common_init(&a.common);
+    rad_solve_options_init(&a.adaptive);
     a.rate = 30;
     a.connections = 16;
     while ((opt = getopt_long(argc, argv, "hq", longopts, NULL)) != -1) {
@@ -305,10 +327,11 @@ int cmd_view(int argc, char **argv)
         return cli_usage_hint("view");
     if (a.method && (o.method = radi_view_method(a.method)) < 0) {
         cli_error("--method: unknown method '%s' (shooting, sorted, sorted_ambient, gathering, "
-                  "jacobi, race)",
+                  "jacobi, race, adaptive)",
                   a.method);
         return cli_usage_hint("view");
     }
+    o.adaptive = a.adaptive;
     o.assets = a.assets ? a.assets : CLI_VIEW_ASSETS;
     o.paused = a.paused;
     o.rate = a.rate;

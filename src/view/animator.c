@@ -46,27 +46,6 @@ typedef struct anim_pub {
     double emitted;             /* frame 0's emitted power: the unit of unshot */
 } anim_pub;
 
-/* The vertex and element buffers at least this large (lock held); 0, or
- * -1 when memory ran out. */
-static int reserve(view_session *s, size_t elements, size_t vertices)
-{
-    if (elements > s->cap_elements) {
-        double *e = realloc(s->element_b, sizeof *e * 3 * elements);
-        if (!e)
-            return -1;
-        s->element_b = e;
-        s->cap_elements = elements;
-    }
-    if (vertices > s->cap_vertices) {
-        double *v = realloc(s->vertex_b, sizeof *v * 3 * vertices);
-        if (!v)
-            return -1;
-        s->vertex_b = v;
-        s->cap_vertices = vertices;
-    }
-    return 0;
-}
-
 /* The animation's geometry as the scene to draw (lock held). */
 static int publish_geometry(view_session *s, const rad_anim *a)
 {
@@ -96,7 +75,7 @@ static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unsho
     if (rad_smooth_across(rad_anim_scene(a), m, s->opt.crease, p->Bv, &err) != RAD_OK)
         return -1;
     pthread_mutex_lock(&s->lock);
-    int bad = reserve(s, n, nv);
+    int bad = view_reserve(s, n, nv);
     if (!bad && p->frame != rad_anim_frame(a)) {
         bad = publish_geometry(s, a);
         p->frame = rad_anim_frame(a);

@@ -3,7 +3,9 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradview_la_SOURCES += \
+	%reldir%/adaptview.c \
 	%reldir%/animator.c \
+	%reldir%/commands.c \
 	%reldir%/hemiview.c \
 	%reldir%/history.c \
 	%reldir%/jsonbuf.c \
@@ -12,4 +14,5 @@ src_libradview_la_SOURCES += \
 	%reldir%/scenejson.c \
 	%reldir%/server.c \
 	%reldir%/session.c \
+	%reldir%/shown.c \
 	%reldir%/view.h %reldir%/viewint.h

@@ -152,7 +152,7 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
         jb_printf(b, "]}");
     }
     jb_printf(b, "],\"geometry\":%ld,\"methods\":[", s->geometry);
-    for (int k = 0; k <= RADI_VIEW_RACE; k++) {
+    for (int k = 0; k <= RADI_VIEW_ADAPTIVE; k++) {
         jb_printf(b, "%s", k ? "," : "");
         jb_str(b, radi_view_method_name(k));
     }

@@ -204,9 +204,22 @@ static enum MHD_Result do_change(server *sv, struct MHD_Connection *c, request *
 
 /* GET /api/row?element=I: row I of F (F_Ij for every j, 17 digits) of the
  * scene as loaded, for the page's heat map of what element I sees. */
+/* Rows of F and hemicubes are the mesh's as loaded: refused (409) while
+ * the adaptive method's leaves are drawn, whose numbers are not its. */
+static int leaves_drawn(server *sv)
+{
+    pthread_mutex_lock(&sv->s->lock);
+    const int leaves = sv->s->leaves_shown;
+    pthread_mutex_unlock(&sv->s->lock);
+    return leaves;
+}
+
 static enum MHD_Result send_row(server *sv, struct MHD_Connection *c)
 {
     const view_session *s = sv->s;
+    if (leaves_drawn(sv))
+        return send_error(c, MHD_HTTP_CONFLICT, "the adaptive mesh is drawn: rows of F are "
+                          "the mesh's as loaded (choose another method)");
     const int n = s->mesh->nelements;
     const char *arg = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "element");
     char *end = NULL;
@@ -230,6 +243,9 @@ static enum MHD_Result send_row(server *sv, struct MHD_Connection *c)
 static enum MHD_Result send_hemicube(server *sv, struct MHD_Connection *c)
 {
     const int n = sv->s->mesh->nelements;
+    if (leaves_drawn(sv))
+        return send_error(c, MHD_HTTP_CONFLICT, "the adaptive mesh is drawn: hemicubes are "
+                          "the mesh's as loaded (choose another method)");
     const char *e = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "element");
     const char *r = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "resolution");
     char *end1 = NULL, *end2 = NULL;

@@ -13,16 +13,15 @@
  * band-averaged radiosity: rmserror.c), and publishes the lot under the
  * lock, at most VIEW_PUBLISH_HZ times a second while running (every step
  * when stepping or paused), raising `version` and waking the streams.
- * While running, `rate` paces the steps (0: unpaced); the wait is on the
- * condition variable, so pause and stop take effect at once.
+ * Between steps it waits for the page's commands (commands.c).  The
+ * adaptive method has no stepper: the worker runs it whole, and its
+ * watcher publishes and waits (adaptview.c).
  */
 #include <config.h>
 
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "view/viewint.h"
 #include "solve/solve.h"
@@ -43,6 +42,7 @@ void radi_view_options_init(radi_view_options *o)
     o->max_connections = 16;
     o->crease = 0;
     o->announce = stdout;
+    rad_solve_options_init(&o->adaptive);
 }
 
 int view_session_init(view_session *s, const rad_scene *scene, const rad_result *res,
@@ -213,57 +213,36 @@ static rad_status lanes_step(lanes *l, rad_error *err)
     return RAD_OK;
 }
 
-static void deadline_after(struct timespec *ts, double seconds)
+/* After the adaptive method (lock held): the mesh as loaded drawn again;
+ * 0, or -1 when memory ran out. */
+static int loaded_mesh(view_session *s)
 {
-    clock_gettime(CLOCK_REALTIME, ts);
-    double t = (double)ts->tv_sec + 1e-9 * (double)ts->tv_nsec + seconds;
-    ts->tv_sec = (time_t)t;
-    ts->tv_nsec = (long)((t - (double)ts->tv_sec) * 1e9);
-    if (ts->tv_nsec >= 1000000000L) {
-        ts->tv_sec++;
-        ts->tv_nsec -= 1000000000L;
+    jbuf js;
+    jb_init(&js);
+    if (!s->leaves_shown)
+        return 0;
+    if (view_scene_json(s, s->mesh, s->scene, NULL, &js) != 0) {
+        jb_free(&js);
+        return -1;
     }
-}
-
-/* Wait (lock held) until there is a step to take; returns the method to
- * reset to (-1: none), or -2 to stop. */
-static int wait_for_work(view_session *s, double last_step)
-{
-    for (;;) {
-        if (s->stopping)
-            return -2;
-        if (s->reset_method >= 0) {
-            const int m = s->reset_method;
-            s->reset_method = -1;
-            return m;
-        }
-        if (s->animate) { /* the race is over: the scene changed */
-            pthread_cond_wait(&s->wake, &s->lock);
-            continue;
-        }
-        if (s->pending > 0)
-            return -1;
-        if (s->running && s->failure[0] == '\0') {
-            const double gap = s->rate > 0 ? 1 / s->rate - (radi_seconds() - last_step) : 0;
-            if (gap <= 0)
-                return -1;
-            struct timespec ts; /* a second at most: a rate of 1e-300 is one
-                                   step in 1e300 s, past any time_t */
-            deadline_after(&ts, gap < 1 ? gap : 1);
-            pthread_cond_timedwait(&s->wake, &s->lock, &ts);
-            continue;
-        }
-        pthread_cond_wait(&s->wake, &s->lock);
-    }
+    free(s->scene_json);
+    s->scene_json = js.s;
+    s->scene_len = js.len;
+    s->geometry++;
+    s->leaves_shown = 0;
+    s->shown_elements = s->mesh->nelements;
+    s->shown_vertices = s->mesh->nvertices;
+    return 0;
 }
 
 /* Fresh lanes of method m (the race: four), published at step 0; 0, or
- * -1 with the failure set. */
+ * -1 with the failure set.  The adaptive method has no lanes: its run
+ * publishes its own step 0 (adaptview.c). */
 static int fresh(view_session *s, lanes *l, int m)
 {
     rad_error err;
     int bad = 0;
-    l->n = m == RADI_VIEW_RACE ? VIEW_LANES : 1;
+    l->n = m == RADI_VIEW_RACE ? VIEW_LANES : m == RADI_VIEW_ADAPTIVE ? 0 : 1;
     l->method = m;
     for (int k = 0; k < l->n; k++) {
         l->st[k] = NULL;
@@ -271,6 +250,7 @@ static int fresh(view_session *s, lanes *l, int m)
     }
     bad = bad || smooth(s, l) != 0;
     pthread_mutex_lock(&s->lock);
+    bad = bad || (l->n > 0 && loaded_mesh(s) != 0);
     if (bad) {
         lanes_free(l);
         snprintf(s->failure, sizeof s->failure, "%s", "out of memory for the method");
@@ -278,7 +258,8 @@ static int fresh(view_session *s, lanes *l, int m)
         pthread_cond_broadcast(&s->changed);
     } else {
         s->nhistory = 0;
-        publish(s, l, 0);
+        if (l->n > 0)
+            publish(s, l, 0);
     }
     pthread_mutex_unlock(&s->lock);
     return bad ? -1 : 0;
@@ -298,16 +279,45 @@ static void after_step(view_session *s, const lanes *l, rad_status ok, const rad
     }
 }
 
+/* The adaptive method's turn (lock held): its run from step 0 unless it
+ * has ended (*ran), then nothing to step: run and step just pause.  -2
+ * when told to stop, else 0 (a reset is left in reset_method). */
+static int adaptive_turn(view_session *s, int *ran)
+{
+    if (*ran) {
+        s->running = s->pending = 0;
+        s->version++;
+        pthread_cond_broadcast(&s->changed);
+        return 0;
+    }
+    pthread_mutex_unlock(&s->lock);
+    const int r = view_adaptive_run(s);
+    pthread_mutex_lock(&s->lock);
+    *ran = 1;
+    if (r >= 0 && s->reset_method < 0)
+        s->reset_method = r;
+    else if (r == VIEW_ADAPT_DONE)
+        s->running = s->pending = 0;
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    return r == -2 ? -2 : 0;
+}
+
 static void *worker(void *arg)
 {
     view_session *s = arg;
     lanes l = {0, s->method, {NULL}};
-    int have = fresh(s, &l, s->method) == 0;
+    int have = fresh(s, &l, s->method) == 0, ran = 0;
     double last_step = radi_seconds(), last_pub = 0, t_rate = radi_seconds();
     int since = 0;
     pthread_mutex_lock(&s->lock);
     for (;;) {
-        const int r = wait_for_work(s, last_step);
+        if (have && l.method == RADI_VIEW_ADAPTIVE && !ran && !s->animate) {
+            if (adaptive_turn(s, &ran) == -2)
+                break;
+            continue;
+        }
+        const int r = view_wait_for_work(s, last_step);
         if (r == -2)
             break;
         if (r >= 0 || !have) {
@@ -315,11 +325,15 @@ static void *worker(void *arg)
             const int m = r >= 0 ? r : l.method;
             lanes_free(&l);
             have = fresh(s, &l, m) == 0;
-            since = 0;
+            ran = since = 0;
             t_rate = radi_seconds();
             pthread_mutex_lock(&s->lock);
             if (!have)
                 s->running = s->pending = 0;
+            continue;
+        }
+        if (l.method == RADI_VIEW_ADAPTIVE) {
+            adaptive_turn(s, &ran);
             continue;
         }
         const int stepping = s->pending > 0;
@@ -356,6 +370,10 @@ int view_session_start(view_session *s, rad_error *err)
     if (pthread_create(&s->worker, NULL, worker, s) != 0)
         return radi_fail(err, RAD_ERR_NOMEM, "cannot start the solver's thread"), -1;
     s->worker_started = 1;
+    pthread_mutex_lock(&s->lock); /* no request sees a state before step 0's */
+    while (s->version == 0)
+        pthread_cond_wait(&s->changed, &s->lock);
+    pthread_mutex_unlock(&s->lock);
     return 0;
 }
 
@@ -369,45 +387,4 @@ void view_session_stop(view_session *s)
     if (s->worker_started)
         pthread_join(s->worker, NULL);
     s->worker_started = 0;
-}
-
-int view_command(view_session *s, view_action a, int method, int steps, double rate)
-{
-    pthread_mutex_lock(&s->lock);
-    if (s->animate && a != VIEW_STOP && a != VIEW_PAUSE) {
-        pthread_mutex_unlock(&s->lock);
-        return -1;
-    }
-    if (rate >= 0)
-        s->rate = rate;
-    switch (a) {
-    case VIEW_RUN:
-        s->running = 1;
-        break;
-    case VIEW_PAUSE:
-        s->running = 0;
-        s->pending = 0;
-        break;
-    case VIEW_STEP:
-        s->running = 0;
-        s->pending = steps;
-        break;
-    case VIEW_RESET:
-        s->reset_method = method >= 0 ? method : s->method;
-        s->pending = 0;
-        s->failure[0] = '\0';
-        break;
-    case VIEW_STOP:
-        s->stopping = 1;
-        break;
-    }
-    if (a == VIEW_RUN && method >= 0 && method != s->method) {
-        s->reset_method = method; /* run another method: from the start */
-        s->pending = 0;
-    }
-    s->version++;               /* running/paused is state too */
-    pthread_cond_broadcast(&s->wake);
-    pthread_cond_broadcast(&s->changed);
-    pthread_mutex_unlock(&s->lock);
-    return 0;
 }

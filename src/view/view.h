@@ -21,6 +21,7 @@
 #include "radiosity/scene.h"
 #include "radiosity/pipeline.h"
 #include "radiosity/formfactor.h"
+#include "radiosity/solve.h"
 
 typedef struct radi_view_options {
     const char *address;        /* numeric IPv4 address to bind (127.0.0.1) */
@@ -36,6 +37,8 @@ typedef struct radi_view_options {
     FILE *announce;             /* where the URL is printed, then flushed */
     rad_ff_options ff;          /* the animation's form factors (the same as
                                    the converged solution's) */
+    rad_solve_options adaptive; /* the adaptive method's threshold, depth,
+                                   test, tolerance and step limit */
     const char *changes;        /* a change file's text to run first, checked
                                    by the caller, or NULL */
     size_t changes_len;
@@ -59,10 +62,12 @@ rad_status radi_view_serve(const rad_scene *scene, const rad_result *res,
                            const radi_view_options *o, char **record, rad_error *err);
 
 /* The method named name ("shooting", "sorted", "sorted_ambient",
- * "gathering", "jacobi", or "race": the four methods of Cohen et al.
- * 1988's figure 7 stepping side by side, one step each at a time), or -1;
- * and the name of a method. */
+ * "gathering", "jacobi", "race": the four methods of Cohen et al. 1988's
+ * figure 7 stepping side by side, one step each at a time, or "adaptive":
+ * sorted shooting with adaptive subdivision, section 4, on a mesh that
+ * splits as it goes), or -1; and the name of a method. */
 #define RADI_VIEW_RACE 5        /* after the stepper's methods (progressive.h) */
+#define RADI_VIEW_ADAPTIVE 6
 int radi_view_method(const char *name);
 const char *radi_view_method_name(int method);
 

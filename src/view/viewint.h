@@ -97,6 +97,8 @@ typedef struct view_session {
     size_t scene_len;
     size_t cap_elements, cap_vertices; /* of element_b and vertex_b */
     int shown_elements, shown_vertices; /* of the mesh drawn now */
+    int leaves_shown;           /* 1: the adaptive method's leaves are drawn
+                                   (adaptview.c), not the mesh as loaded */
     double *element_now;        /* animate: the last converged frame, in the
                                    order a fresh solve numbers its elements */
     int n_now;
@@ -157,7 +159,22 @@ int view_queue_changes(view_session *s, const char *req, size_t len, int limited
 int view_queue_undo(view_session *s, char *why, size_t cap);
 
 
-/* A command from a request, already checked: action is one of run,
+/* commands.c: wait (lock held) until there is a step to take (-1; the
+ * rate paces a run from `last_step`), a reset (the method to reset to,
+ * >= 0) or the end (-2). */
+int view_wait_for_work(view_session *s, double last_step);
+/* shown.c: the published buffers made room for this many elements and
+ * vertices (lock held); 0, or -1 when memory ran out. */
+int view_reserve(view_session *s, size_t elements, size_t vertices);
+
+/* adaptview.c: the adaptive method, run by the worker (lock not held) from
+ * step 0 to its end: VIEW_ADAPT_DONE when it converged, VIEW_ADAPT_FAILED
+ * (the failure published), -2 when told to stop, or the method a reset
+ * asked for (>= 0). */
+enum { VIEW_ADAPT_DONE = -1, VIEW_ADAPT_FAILED = -3 };
+int view_adaptive_run(view_session *s);
+
+/* commands.c: a command from a request, already checked: action is one of run,
  * pause, step, reset, stop; method -1 or a method; steps >= 1; rate < 0:
  * unchanged.  Applies it under the lock and wakes the worker; -1 (nothing
  * done) for run, step or reset once the scene has changed (the race runs
