@@ -97,12 +97,13 @@ typedef struct rad_anim_options {
     int direct_first;           /* 1 (default): a frame that converges (steps
                                    0, strategy 1, exact importance) first
                                    recomputes the pairs with an emitter and
-                                   shoots their redistribution, then the rest:
-                                   the direct light's change is in B (and
-                                   on_shot) before the bulk of the form
-                                   factors is computed.  The converged frame
-                                   is the same within the tolerance; 0: all
-                                   the pairs at once */
+                                   shoots the lights' change (a new or changed
+                                   emission's first shot, the redistribution
+                                   of what they had shot), then the rest: the
+                                   lights' change is in B (and on_shot) before
+                                   the bulk of the form factors is computed.
+                                   The converged frame is the same within the
+                                   tolerance; 0: all the pairs at once */
 } rad_anim_options;
 
 RAD_API void rad_anim_options_init(rad_anim_options *opt);

@@ -24,14 +24,18 @@
  *      dF with T = B - dB is kept for the redistribution (animpairs.c);
  *      with opt.direct_first, in a frame that converges, in two stages:
  *      (a) the pairs with an element that emits, before or after the
- *      change, and their redistribution shot at once: the light's new
- *      shadows and what it newly lights, the largest part of the change
- *      in the picture, before (b) the other pairs, most of the form
- *      factors' time.  Stage (a) shoots redistribution only, and a
- *      redistribution shot moves B and dB alike (animshoot.c), so T =
- *      B - dB, and with it stage (b)'s dF T, is what it would be without
- *      the stages: the frame converges to the same B, its shots in
- *      another order;
+ *      change; those elements restated (step 5); their shots at once:
+ *      the first shot of a light added or whose emission changed, and
+ *      the redistribution of what the lights had shot (their new
+ *      shadows, what they newly light); then (b) the other pairs, most of
+ *      the form factors' time, and the other elements restated.  So the
+ *      lights' part of the change is in B before stage (b) runs.  Stage
+ *      (b)'s pairs have no emitter at either end, so their dF T takes T
+ *      of non-emitters only, and stage (a)'s shots leave that T as it
+ *      was: a shot's receivers gain as much in B as in dB (animshoot.c),
+ *      restating leaves T = B - dB of a present element alone, and only
+ *      the shooter of a first shot, an emitter, changes its own T.  The
+ *      frame converges to the same B, its shots in another order;
  *   5. elements whose rho or E changed (material changes, additions)
  *      restate B = E + rho H, the difference going to dB (their own
  *      correction, propagated by the shots); removed elements drop to 0
@@ -137,14 +141,16 @@ static void element_state(rad_anim *a, unsigned char *changed)
     }
 }
 
-/* Step 5 of the header: B = E + rho H for changed elements, 0 if absent;
- * changed emitters shoot first. */
-static void restate(rad_anim *a, const unsigned char *changed)
+/* Step 5 of the header: B = E + rho H for changed elements (those of
+ * `only` too when it is not NULL), 0 if absent; changed emitters shoot
+ * first.  Their changed flag is cleared. */
+static void restate(rad_anim *a, unsigned char *changed, const unsigned char *only)
 {
     const size_t n = (size_t)a->n;
     for (int e = 0; e < a->n; e++) {
-        if (!changed[e])
+        if (!changed[e] || (only && !only[e]))
             continue;
+        changed[e] = 0;
         for (int b = 0; b < RAD_BANDS; b++) {
             const size_t k = (size_t)e + b * n;
             if (!a->present[e]) {
@@ -273,7 +279,7 @@ rad_status rad_anim_create(rad_anim **out, const rad_scene *scene, const rad_ani
         a->emitted0 = radi_anim_emitted(a);
         double t1 = radi_seconds();
         st = radi_anim_shoot(a, a->opt.partial_start ? RADI_SHOOT_PARTIAL : RADI_SHOOT_CONVERGE,
-                             &rep, err);
+                             a->opt.max_shots, &rep, err);
         rep.t_shoot = radi_seconds() - t1;
         a->log_open = !rep.converged;
     }
@@ -353,7 +359,7 @@ static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
         radi_anim_log_pass(a);
         rep->log_pass = 1;
         rep->log_residual = a->log_residual;
-        rad_status st = radi_anim_shoot(a, RADI_SHOOT_CONVERGE, &more, err);
+        rad_status st = radi_anim_shoot(a, RADI_SHOOT_CONVERGE, a->opt.max_shots, &more, err);
         if (st != RAD_OK)
             return st;
         rep->shots = more.shots;
@@ -403,17 +409,22 @@ static int staged(const rad_anim *a)
            a->opt.importance == RAD_ANIM_IMPORTANCE_EXACT;
 }
 
-/* Step 4: the pairs recomputed, in one stage or two (the header); the
- * counts of rep, and *t_direct the seconds of stage (a)'s shots. */
+/* Steps 4 and 5: the pairs recomputed and the changed elements restated,
+ * in one stage or two (the header); the counts of rep, *t_direct the
+ * seconds of stage (a)'s shots and *shot how they ended.  A stage (a)
+ * that stops (interrupted, out of shots) does not stop stage (b): F and
+ * the state stay whole, as after a frame stopped in its last shots. */
 static rad_status update(rad_anim *a, const unsigned char *dirty, const unsigned char *old_in,
                          const rad_vec3 *lo, const rad_vec3 *hi, const rad_scene *old_scene,
-                         const unsigned char *lit, rad_anim_report *rep, double *t_direct,
+                         const unsigned char *lit, unsigned char *changed,
+                         rad_anim_report *rep, double *t_direct, rad_status *shot,
                          rad_error *err)
 {
     const int two = staged(a);
     const int which[2] = {two ? RADI_PAIRS_LIT : RADI_PAIRS_ALL, RADI_PAIRS_UNLIT};
     rad_status st = RAD_OK;
     *t_direct = 0;
+    *shot = RAD_OK;
     for (int k = 0; st == RAD_OK && k < 1 + two; k++) {
         rad_anim_report part;
         memset(&part, 0, sizeof part);
@@ -424,11 +435,14 @@ static rad_status update(rad_anim *a, const unsigned char *dirty, const unsigned
         rep->pairs_changed += part.pairs_changed;
         rep->t_changed = k == 0 ? part.t_changed : rep->t_changed + part.t_changed;
         if (st == RAD_OK && k == 0 && two) {
+            restate(a, changed, lit);
             const double t = radi_seconds();
-            st = radi_anim_shoot(a, RADI_SHOOT_PENDING, rep, err);
+            *shot = radi_anim_shoot(a, RADI_SHOOT_DIRECT, a->opt.max_shots, rep, err);
             *t_direct = radi_seconds() - t;
         }
     }
+    if (st == RAD_OK)
+        restate(a, changed, NULL);
     return st;
 }
 
@@ -484,12 +498,15 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     a->frame = next;
     rep->frame = next;
     double t_direct = 0;
+    rad_status shot = RAD_OK;
     if (st == RAD_OK) {
         element_state(a, changed);
         for (int e = 0; e < a->n; e++)
             lit[e] |= emits(a, e);
-        st = update(a, dirty, old_in, lo, hi, keep_old ? &old_scene : NULL, lit, rep, &t_direct,
-                    err); /* 4 */
+        st = update(a, dirty, old_in, lo, hi, keep_old ? &old_scene : NULL, lit, changed, rep,
+                    &t_direct, &shot, err); /* 4, 5 */
+        if (st == RAD_OK)
+            st = shot;
     }
     if (keep_old)
         rad_scene_free(&old_scene);
@@ -500,13 +517,13 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     const double rerun = isfinite(rep->t_changed) ? rep->t_changed : 0; /* not the frame's */
     rep->t_formfactor = radi_seconds() - t0 - rerun - t_direct;
     if (st == RAD_OK) {
-        restate(a, changed); /* 5 */
         if (paper)
             radi_anim_importance(a, dirty, smp, ns);
         double t1 = radi_seconds();
         const int partial = !(a->opt.converge_last && next == ch->nframes);
-        st = radi_anim_shoot(a, partial ? RADI_SHOOT_PARTIAL : RADI_SHOOT_CONVERGE, rep,
-                             err); /* 6 */
+        st = radi_anim_shoot(a, partial ? RADI_SHOOT_PARTIAL : RADI_SHOOT_CONVERGE,
+                             a->opt.max_shots - rep->shots, rep, err); /* 6: max_shots is
+                                                                            the frame's */
         if (st == RAD_OK)
             st = close_log(a, rep, err); /* 7 */
         rep->t_shoot = radi_seconds() - t1 + t_direct;

@@ -97,14 +97,17 @@ void radi_redist_free(rad_redist *rd);
 rad_status radi_anim_redist_index(rad_anim *a, rad_error *err);
 
 /* How far radi_anim_shoot goes: until converged; until converged or
- * opt.steps shots (a partial frame); until nothing is left to
- * redistribute, by redistribution steps only (the direct light's stage,
- * animate.c). */
-enum { RADI_SHOOT_CONVERGE = 0, RADI_SHOOT_PARTIAL = 1, RADI_SHOOT_PENDING = 2 };
+ * opt.steps shots (a partial frame); the direct light's stage
+ * (animate.c): the first shots of emitters whose emission changed, then
+ * redistribution steps until nothing is left to redistribute, and no
+ * other shot. */
+enum { RADI_SHOOT_CONVERGE = 0, RADI_SHOOT_PARTIAL = 1, RADI_SHOOT_DIRECT = 2 };
 
-/* animshoot.c: shoot as `how` says (RADI_SHOOT_*); rep's shots, counts and
- * unshot power follow, and rep->converged is set when the frame is. */
-rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error *err);
+/* animshoot.c: shoot as `how` says (RADI_SHOOT_*), at most `budget` shots
+ * (RAD_ERR_NOCONV past them); rep's shots, counts and unshot power
+ * follow, and rep->converged is set when the frame is. */
+rad_status radi_anim_shoot(rad_anim *a, int how, long budget, rad_anim_report *rep,
+                          rad_error *err);
 /* Receiver i gathers x (per band): H, B and dB grow (animshoot.c). */
 void radi_anim_receive(rad_anim *a, int i, const double x[RAD_BANDS]);
 

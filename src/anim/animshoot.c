@@ -43,8 +43,8 @@
  * propagates; strategy 2 takes at each step the larger of the largest
  * pending redistribution (power or estimate) and the largest unshot
  * power.  The direct light's stage of a frame (animate.c) takes the
- * redistribution steps of what is pending, in the same order, and no
- * other shot.
+ * first shots and the redistribution steps of what is pending, in the
+ * same order, and no other shot.
  */
 #include <config.h>
 
@@ -203,19 +203,28 @@ static int largest_pending(const int *counts, const double *power, int n, double
     return best;
 }
 
+/* Is an emitter waiting for its first shot? */
+static int first_waiting(const rad_anim *a)
+{
+    for (int j = 0; j < a->n; j++)
+        if (a->first[j])
+            return 1;
+    return 0;
+}
+
 /* The next shot: its kind (0 propagation, 1 redistribution by a shooter,
  * 2 gathered by a receiver) and element, or -1 when nothing is left;
- * with `pending_only`, redistribution steps only. */
-static int choose(rad_anim *a, int pending_only, int *kind)
+ * with `direct`, the first shots and redistribution steps only. */
+static int choose(rad_anim *a, int direct, int *kind)
 {
     double pu = -1, pr = -1, pg = -1;
-    for (int j = 0; !pending_only && j < a->n; j++)
+    for (int j = 0; j < a->n; j++)
         if (a->first[j]) {
             a->first[j] = 0;
             *kind = 0;
             return j;
         }
-    const int u = pending_only ? -1 : largest_unshot(a, &pu);
+    const int u = direct ? -1 : largest_unshot(a, &pu);
     int r = -1, g = -1;
     const int paper = a->opt.importance == RAD_ANIM_IMPORTANCE_PAPER;
     if (a->rd.npending > 0) {
@@ -233,9 +242,10 @@ static int choose(rad_anim *a, int pending_only, int *kind)
     return u;
 }
 
-rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error *err)
+rad_status radi_anim_shoot(rad_anim *a, int how, long budget, rad_anim_report *rep,
+                          rad_error *err)
 {
-    const int partial = how == RADI_SHOOT_PARTIAL, pending_only = how == RADI_SHOOT_PENDING;
+    const int partial = how == RADI_SHOOT_PARTIAL, direct = how == RADI_SHOOT_DIRECT;
     const double emitted = radi_anim_emitted(a);
     const double scale = emitted > a->emitted0 ? emitted : a->emitted0;
     double unshot = radi_anim_unshot(a);
@@ -245,7 +255,7 @@ rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error
     long step = first;
     rep->emitted = emitted;
     for (;;) {
-        if (pending_only && a->rd.npending == 0)
+        if (direct && a->rd.npending == 0 && !first_waiting(a))
             break;
         if (a->rd.npending == 0 && unshot <= a->opt.tolerance * scale) {
             rep->converged = 1;
@@ -253,12 +263,12 @@ rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error
         }
         if (partial && a->opt.steps > 0 && step >= a->opt.steps)
             break;
-        if (step - first >= a->opt.max_shots)
+        if (step - first >= budget)
             return radi_fail(err, RAD_ERR_NOCONV, "frame %d: not converged after %ld shots "
                             "(unshot power %.3g of %.3g emitted)", a->frame, step, unshot,
                             scale);
-        int kind, j = choose(a, pending_only, &kind);
-        if (j < 0 && pending_only)
+        int kind, j = choose(a, direct, &kind);
+        if (j < 0 && direct)
             break;
         if (j < 0 && a->rd.npending == 0) {
             rep->converged = 1; /* nothing left to shoot at all */
@@ -273,7 +283,7 @@ rad_status radi_anim_shoot(rad_anim *a, int how, rad_anim_report *rep, rad_error
         if (a->opt.on_shot) {
             rad_anim_shot s = {a->frame, step, j, redist, p < 0 ? -1 : 1, fabs(p), unshot,
                                a->rd.left, kind == 2, a,
-                               pending_only ? 1 + (a->rd.npending == 0) : 0};
+                               direct ? 1 + (a->rd.npending == 0 && !first_waiting(a)) : 0};
             if (a->opt.on_shot(a->opt.shot_user, &s))
                 return radi_fail(err, RAD_ERR_INVALID, "interrupted");
         }

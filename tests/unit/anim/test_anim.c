@@ -381,11 +381,16 @@ typedef struct direct_seen {
     double *B;
     int shots, last, other;     /* its shots, its last ones, its shots of
                                    another kind than redistribution */
+    int lamp4, first4;          /* frame 4 (the lamp x 2): the direct stage's
+                                   shots, and the first of them a propagation
+                                   (the lamp's first shot) */
 } direct_seen;
 
 static int see_direct(void *user, const rad_anim_shot *shot)
 {
     direct_seen *d = user;
+    if (shot->frame == 4 && shot->direct && d->lamp4++ == 0)
+        d->first4 = !shot->redistribute && shot->power > 0;
     if (shot->frame != 1 || !shot->direct)
         return 0;
     d->shots++;
@@ -537,6 +542,9 @@ static void run_default(const rad_scene *scene, const rad_changes *ch, const fre
            d, lim);
     tap_ok(out[4].rep.redistribution_shots == 0 && out[4].rep.pairs_recomputed == 0,
            "a change of emission recomputes no form factor and redistributes nothing");
+    tap_ok(seen.first4 && seen.lamp4 >= 1,
+           "... its direct stage is the lamp's changed emission shot first (%d shots)",
+           seen.lamp4);
 done:
     for (int f = 0; f < NFRAMES; f++)
         free(out[f].B);
@@ -590,6 +598,56 @@ static void run_variant(const rad_scene *scene, const rad_changes *ch, const fre
     rad_anim_free(an);
 }
 
+/* ---- a frame stopped in its direct light's stage ------------------------- */
+
+static int stop_in_direct(void *user, const rad_anim_shot *shot)
+{
+    int *stops = user;
+    if (shot->frame == 1 && shot->direct) {
+        ++*stops;
+        return 1;
+    }
+    return 0;
+}
+
+/* Frame 1 interrupted at its first direct shot: the frame's other form
+ * factors are still recomputed (the state stays whole), so frame 2, run
+ * after it, is within its bound of a fresh classic solve. */
+static void run_interrupted(const rad_scene *scene, const rad_changes *ch, const fresh *fr)
+{
+    rad_anim_options ao;
+    rad_anim_report rep;
+    rad_error err;
+    rad_anim *an = NULL;
+    int stops = 0;
+    rad_anim_options_init(&ao);
+    ao.ff.accuracy = RAD_ACCURACY_CLASSIC;
+    ao.tolerance = TOLERANCE;
+    ao.on_shot = stop_in_direct;
+    ao.shot_user = &stops;
+    rad_status st = rad_anim_create(&an, scene, &ao, &rep, &err);
+    const double emitted0 = rep.emitted;
+    rad_status st1 = st == RAD_OK ? rad_anim_next(an, ch, &rep, &err) : st;
+    tap_ok(st1 == RAD_ERR_INVALID && stops == 1,
+           "classic: frame 1 stopped at its first direct shot (%s)", err.message);
+    st = st == RAD_OK ? rad_anim_next(an, ch, &rep, &err) : st;
+    rad_mesh pm;
+    double *B = NULL;
+    if (st == RAD_OK)
+        st = rad_anim_present_result(an, &pm, &B, &err);
+    const double lim = beta(&fr[2], fmax(rep.emitted, emitted0)) + ROUND * fr[2].norm;
+    double d = INFINITY;
+    if (st == RAD_OK) {
+        d = same_elements(&pm, &fr[2].mesh) ? dist_A(&pm, B, fr[2].B, NULL) : INFINITY;
+        rad_mesh_free(&pm);
+    }
+    tap_ok(st == RAD_OK && rep.converged && d <= lim,
+           "classic: frame 2 after it converges within its bound of a fresh solve (%.3g <= "
+           "%.3g)%s%s", d, lim, st ? ": " : "", st ? err.message : "");
+    free(B);
+    rad_anim_free(an);
+}
+
 int main(void)
 {
     rad_scene scene;
@@ -627,6 +685,7 @@ int main(void)
                     RAD_ANIM_IMPORTANCE_EXACT, 1);
         run_variant(&scene, &ch, fc, "the paper's importance estimate", 1, 1,
                     RAD_ANIM_IMPORTANCE_PAPER, 1);
+        run_interrupted(&scene, &ch, fc);
     }
     for (int f = 0; f < NFRAMES; f++) {
         fresh_free(&fr[f]);
