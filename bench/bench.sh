@@ -77,12 +77,16 @@ if [ "${BENCH_HC:-1}" = 1 ]; then
 fi
 
 echo
-echo "== the live viewer (radiosity view) on the moving Cornell box, from an HTTP client"
-echo "   (BENCH_VIEW=0 skips; ~1 min)"
+echo "== the live viewer (radiosity view) on the moving Cornell box, from an HTTP client,"
+echo "   and on the Cornell box in headless Chromium (BENCH_VIEW=0 skips; ~2 min)"
 if [ "${BENCH_VIEW:-1}" = 1 ] && "$rad" view --help > /dev/null 2>&1 &&
    ! "$rad" view --method magic x 2>&1 | grep -q "built without"; then
   python3 "$(dirname "$0")/view.py" "$rad" "$data/view" \
     "$data/cornell-moving-box.scene" box 3 || echo "   (failed)"
+  work=$(mktemp -d)
+  python3 "$(dirname "$0")/view_browser.py" "$rad" "$data/view" \
+    "$data/cornell-box.scene" "$work" 3 || echo "   (failed)"
+  rm -rf "$work"
 fi
 
 echo

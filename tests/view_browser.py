@@ -33,6 +33,9 @@ import sys
 import time
 import zlib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cdp  # noqa: E402
+
 RAD, ASSETS, SCENE, WORK = sys.argv[1:5]
 CHROMIUM = sys.argv[5] if len(sys.argv) > 5 else "chromium"
 MESH_ARGS = []
@@ -80,94 +83,6 @@ def png_rgb(data):
         rows.append(bytes(line[i] for i in range(stride) if bpp == 3 or i % 4 != 3))
         prev = line
     return w, h, rows
-
-
-class Browser:
-    """Chromium over --remote-debugging-pipe."""
-
-    def __init__(self, width, height):
-        r_in, w_in = os.pipe()
-        r_out, w_out = os.pipe()
-
-        def fds():
-            os.dup2(r_in, 3)
-            os.dup2(w_out, 4)
-        self.p = subprocess.Popen(
-            [CHROMIUM, "--headless", "--no-sandbox", "--use-angle=swiftshader",
-             "--enable-unsafe-swiftshader", "--force-device-scale-factor=1",
-             "--force-color-profile=srgb", "--hide-scrollbars", "--remote-debugging-pipe",
-             "--window-size=%d,%d" % (width, height), "--user-data-dir=" + WORK + "/chrome",
-             "about:blank"],
-            preexec_fn=fds, close_fds=False, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        os.close(r_in)
-        os.close(w_out)
-        self.w, self.r, self.buf, self.id, self.events = w_in, r_out, b"", 0, []
-        t = self.call("Target.createTarget", {"url": "about:blank"})["targetId"]
-        self.session = self.call("Target.attachToTarget",
-                                 {"targetId": t, "flatten": True})["sessionId"]
-        for m in ("Page.enable", "Runtime.enable"):
-            self.call(m, session=True)
-        self.call("Emulation.setDeviceMetricsOverride",
-                  {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False},
-                  session=True)
-
-    def read(self, limit=60):
-        while b"\0" not in self.buf:
-            ready, _, _ = select.select([self.r], [], [], limit)
-            chunk = os.read(self.r, 1 << 20) if ready else b""
-            if not chunk:
-                raise RuntimeError("the browser stopped answering")
-            self.buf += chunk
-        msg, self.buf = self.buf.split(b"\0", 1)
-        return json.loads(msg)
-
-    def call(self, method, params=None, session=False):
-        self.id += 1
-        msg = {"id": self.id, "method": method, "params": params or {}}
-        if session:
-            msg["sessionId"] = self.session
-        os.write(self.w, json.dumps(msg).encode() + b"\0")
-        while True:
-            m = self.read()
-            if m.get("id") == self.id:
-                if "error" in m:
-                    raise RuntimeError("%s: %s" % (method, m["error"]))
-                return m.get("result", {})
-            self.events.append(m)
-
-    def js(self, expr):
-        r = self.call("Runtime.evaluate", {"expression": expr, "awaitPromise": True,
-                                           "returnByValue": True}, session=True)
-        if "exceptionDetails" in r:
-            raise RuntimeError("%s: %s" % (expr, r["exceptionDetails"]))
-        return r["result"].get("value")
-
-    def wait(self, expr, limit=120):
-        t = time.time()
-        while time.time() - t < limit:
-            if self.js(expr):
-                return True
-            time.sleep(0.05)
-        return False
-
-    def errors(self):
-        out = []
-        for m in self.events:
-            if m.get("method") == "Runtime.exceptionThrown":
-                out.append(str(m["params"]["exceptionDetails"].get("text")))
-            if m.get("method") == "Runtime.consoleAPICalled" and m["params"]["type"] == "error":
-                out.append(" ".join(str(a.get("value")) for a in m["params"]["args"]))
-        return out
-
-    def close(self):
-        try:
-            self.call("Browser.close")
-        except Exception:
-            pass
-        try:
-            self.p.wait(20)
-        except subprocess.TimeoutExpired:
-            self.p.kill()
 
 
 def server():
@@ -244,7 +159,7 @@ want = table_b(os.path.join(WORK, "moved.tsv"))
 # ---- the page, live ----------------------------------------------------------
 p, url = server()
 ok(url.startswith("http://127.0.0.1:"), "the server is up: %s" % url)
-b = Browser(1100, 900)
+b = cdp.Browser(CHROMIUM, WORK + "/chrome", 1100, 900)
 b.call("Page.navigate", {"url": url}, session=True)
 ok(b.wait("document.getElementById('state-step') && "
           "document.getElementById('state-step').textContent.trim() === '0'"),

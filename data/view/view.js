@@ -338,6 +338,11 @@ const app = {
     orbit: { yaw: 0, pitch: 0, zoom: 1 },
     outlines: false,
     wasAdaptive: false,   // the last state drawn was the adaptive method's
+    /* when the page had its script, its scene, its WebGL context and
+     * programs, its first state and its first picture, in ms
+     * since the navigation began (performance.now()): `make bench` reads
+     * them as window.radiosityTiming */
+    timing: { script: performance.now(), scene: null, gl: null, state: null, picture: null },
     showShooter: false,
     frameQueued: false,
     busy: false,          // a request is on its way
@@ -350,6 +355,7 @@ const app = {
     heat: null,           // the heat map: { element, row, sum, lo, hi, rgb }
     refusal: '',          // the reason of the last refusal
 };
+window.radiosityTiming = app.timing;
 
 /* ---- the camera (render.c make_view) ------------------------------------ */
 
@@ -651,6 +657,8 @@ function draw() {
         drawView(gl, p, vw);
     }
     gl.disable(gl.SCISSOR_TEST);
+    if (app.timing.picture === null)
+        app.timing.picture = performance.now();
 }
 
 /* One viewport: the camera of the picture at the viewport's size (f
@@ -828,6 +836,8 @@ function receiveState(s) {
         return;
     app.version = s.version;
     app.pending = s;
+    if (app.timing.state === null)
+        app.timing.state = performance.now();
     if (needsScene(s))
         reloadScene(s.geometry);
     else
@@ -1964,15 +1974,20 @@ async function startLive() {
         setConnection('no scene');
         return;
     }
+    app.timing.scene = performance.now();
     app.geometry = app.scene.geometry;
     app.geom = buildGeometry(app.scene);
     sizeCanvas();
     attachPanel();
+    /* the state is asked for before WebGL starts, which takes the longest
+     * in a browser without a GPU: it is there when the context is */
+    const state = getJSON('api/state');
+    listen();
     if (startGL())
         attachMouse();
-    listen();
+    app.timing.gl = performance.now();
     try {
-        receiveState(await getJSON('api/state'));
+        receiveState(await state);
     } catch (e) {
         showMessage('cannot load the state: ' + e.message, true);
     }
