@@ -71,6 +71,10 @@ if shutil.which(CHROMIUM) is None:
     print("   (no %s: the browser's first picture is not measured)" % CHROMIUM)
     sys.exit(0)
 p, url = server()
+if not url:
+    p.kill()
+    print("   (the server did not start)")
+    sys.exit(0)
 cold, warm, floor = [], [], []
 try:
     for k in range(ROUNDS):
@@ -98,7 +102,10 @@ finally:
                     "c = h.HTTPConnection(sys.argv[1], int(sys.argv[2]), timeout=10); "
                     "c.request('POST', '/api/control?action=stop'); c.getresponse()",
                     *url.split("//")[1].rstrip("/").rsplit(":", 1)], check=False)
-    p.wait(60)
+    try:
+        p.wait(60)
+    except subprocess.TimeoutExpired:
+        p.kill()
 if not cold:
     print("   (the browser drew no picture)")
     sys.exit(0)
@@ -114,6 +121,7 @@ for name, rows in (("cold", cold), ("warm", warm)):
           % (name, med(rows, "script"), med(rows, "scene"), med(rows, "gl"), med(rows, "state"),
              med(rows, "picture"), " (target 1 s)" if name == "cold" else ""))
 if floor:
-    print("   the browser's floor, cold: one WebGL triangle drawn %.2f s after a page with "
-          "nothing to fetch began to open" % statistics.median(floor))
+    print("   the browser's floor, cold: one WebGL triangle drawn and read back %.2f s after "
+          "a page with nothing to fetch began to open (the page's own figures are taken when "
+          "its draw is issued, a little earlier than done)" % statistics.median(floor))
 print("   (medians: %d fresh browsers, %d pages opened again)" % (len(cold), len(warm)))

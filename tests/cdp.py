@@ -4,6 +4,7 @@
 # browser test (view_browser.py) and its benchmark (bench/view_browser.py).
 # WebGL runs on SwiftShader (the CPU), as on a machine without a GPU.
 # Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
+import fcntl
 import json
 import os
 import select
@@ -18,9 +19,11 @@ class Browser:
         r_in, w_in = os.pipe()
         r_out, w_out = os.pipe()
 
-        def fds():
-            os.dup2(r_in, 3)
-            os.dup2(w_out, 4)
+        def fds():  # by way of copies above 9, whatever numbers the pipes got
+            hi_in = fcntl.fcntl(r_in, fcntl.F_DUPFD, 10)
+            hi_out = fcntl.fcntl(w_out, fcntl.F_DUPFD, 10)
+            os.dup2(hi_in, 3)
+            os.dup2(hi_out, 4)
         self.p = subprocess.Popen(
             [chromium, "--headless", "--no-sandbox", "--use-angle=swiftshader",
              "--enable-unsafe-swiftshader", "--force-device-scale-factor=1",

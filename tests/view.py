@@ -585,6 +585,9 @@ subprocess.run([RAD, "solve", "-q", "--solver", "progressive", "--adaptive",
                 os.path.join(WORK, "adaptive.ply"), scene], check=True)
 rows = table(out)
 ref = [float(r[b]) for r in rows for b in ("r", "g", "b")]
+g1 = cl.json("/api/scene")["geometry"]
+ok(g1 == st["geometry"], "adaptive: the scene served carries the state's geometry (%s, %s)"
+   % (g1, st["geometry"]))
 ok(not st["running"] and not st["failure"] and st["geometry"] > s0["geometry"] and
    n1 == len(rows) > n0 and el == ref,
    "adaptive: converged at step %d on %d elements split from %d; leaves and B are those of "
@@ -592,10 +595,37 @@ ok(not st["running"] and not st["failure"] and st["geometry"] > s0["geometry"] a
 cl.control("action=reset&method=sorted")
 s1 = cl.wait_step(0)
 status, _ = cl.req("GET", "/api/row?element=0")
-ok(s1["method"] == "sorted" and cl.json("/api/scene")["elements"] == n0 and status == 200,
-   "adaptive, then sorted: the mesh as loaded is drawn again and its rows served")
+sc1 = cl.json("/api/scene")
+ok(s1["method"] == "sorted" and sc1["elements"] == n0 and status == 200 and
+   sc1["geometry"] == cl.json("/api/state")["geometry"],
+   "adaptive, then sorted: the mesh as loaded is drawn again, its rows served, the "
+   "geometry numbers agree")
 cl.control("action=stop")
 ok(p.wait(60) == 0, "stopped")
+# a change while the adaptive mesh is drawn: the animation's picture takes over
+boxed = with_box(0, "box.scene")
+p, url = start("--method", "adaptive", "--accuracy", "default", boxed)
+cl = Client(url)
+cl.control("action=step&steps=3")
+cl.wait_step(3)
+t = time.time()
+while time.time() - t < 120 and cl.json("/api/state")["changes"] == "building":
+    time.sleep(0.05)
+status, _ = cl.req("POST", "/api/change", "move box 0.1 0 0\n")
+st = wait_frame(1)
+status2, _ = cl.req("GET", "/api/row?element=0")
+status3, _ = cl.control("action=reset&method=adaptive")
+sc = cl.json("/api/scene")
+el = cl.json("/api/elements")["element_b"]
+ok(status == 200 and st is not None and st["mode"] == "animate" and status2 == 200 and
+   status3 == 409 and sc["geometry"] == st["geometry"] and
+   close(el, solve_b(with_box(0.1, "moved.scene")), 1e-9),
+   "adaptive, then a move: the frame equals a fresh solve, the animation's mesh is drawn, "
+   "rows are served again (%s), methods refused (%s)" % (status2, status3))
+cl.control("action=stop")
+ok(p.wait(60) == 0, "stopped")
+for name in ("box.scene", "moved.scene"):
+    os.remove(os.path.join(WORK, name))
 for name in ("adaptive.tsv", "adaptive.ply"):
     os.remove(os.path.join(WORK, name))
 

@@ -66,7 +66,7 @@ static void help(void)
            "                          sorted (largest unshot power first),\n"
            "                          sorted_ambient (sorted, shown with the ambient\n"
            "                          term; the default), gathering (Gauss-Seidel,\n"
-           "                          one element a step), jacobi (one sweep a step)\n"
+           "                          one element a step), jacobi (one sweep a step),\n"
            "                          race (the first four side by side, as in\n"
            "                          figure 7 of the paper) or adaptive (sorted\n"
            "                          shooting with adaptive subdivision, section 4:\n"

@@ -15,7 +15,8 @@
  * and the vertex radiosity by its rules) and then waits, as the worker
  * does between steps, for the next step the page asks for: run (paced by
  * the rate), step, pause.  A reset, another method, a change of the scene
- * or stop end the solve from inside the watcher.  The converged run is the
+ * (the animation's picture then takes over) or stop end the solve from
+ * inside the watcher.  The converged run is the
  * solver's own, so its leaves and their B are those of `solve --adaptive`
  * with the same options.
  *
@@ -61,20 +62,23 @@ static int publish_leaves(adapt_run *r, const rad_adapt_view *v)
     jbuf js;
     jb_init(&js);
     const int split = m.nelements != r->leaves;
-    if (split && view_scene_json(s, &m, s->scene, NULL, &js) != 0)
-        bad = -1;
     pthread_mutex_lock(&s->lock);
-    if (!bad && !s->animate && view_reserve(s, n, nv) != 0)
+    if (!s->animate && view_reserve(s, n, nv) != 0)
         bad = -1;
-    if (!bad && !s->animate) {
-        if (split) {
+    if (!bad && !s->animate && split) { /* the scene carries the new number */
+        s->geometry++;
+        if (view_scene_json(s, &m, s->scene, NULL, &js) != 0) {
+            s->geometry--;
+            bad = -1;
+        } else {
             free(s->scene_json);
             s->scene_json = js.s;
             s->scene_len = js.len;
             js.s = NULL;
-            s->geometry++;
             r->leaves = m.nelements;
         }
+    }
+    if (!bad && !s->animate) {
         for (size_t i = 0; i < n; i++)
             for (int b = 0; b < RAD_BANDS; b++)
                 s->element_b[3 * i + (size_t)b] = B[i + (size_t)b * n];
@@ -94,6 +98,7 @@ static int publish_leaves(adapt_run *r, const rad_adapt_view *v)
         s->unshot = s->lane_unshot[0] = r->emitted > 0 ? u / r->emitted : NAN;
         s->rms = s->lane_rms[0] = NAN;
         s->sps = 0;
+        s->ready = 1;
         s->version++;
         pthread_cond_broadcast(&s->changed);
     }
@@ -123,7 +128,7 @@ static int on_step(void *user, const rad_adapt_view *v)
     if (v->converged)
         return 0; /* the solve ends after this call */
     pthread_mutex_lock(&s->lock);
-    const int w = view_wait_for_work(s, r->last_step);
+    const int w = view_wait_for_work(s, r->last_step, 1);
     r->stepping = w == -1 && s->pending > 0;
     if (r->stepping)
         s->pending--;
@@ -131,7 +136,7 @@ static int on_step(void *user, const rad_adapt_view *v)
     r->last_step = radi_seconds();
     if (w == -1)
         return 0;
-    r->result = w; /* -2: stop; a method to reset to */
+    r->result = w == -3 ? VIEW_ADAPT_DONE : w; /* the scene changed; stop; a reset */
     return 1;
 }
 
@@ -156,6 +161,10 @@ int view_adaptive_run(view_session *s)
         pthread_mutex_lock(&s->lock);
         snprintf(s->failure, sizeof s->failure, "%.255s",
                  st != RAD_OK ? err.message : "out of memory for the adaptive mesh");
+        s->method = RADI_VIEW_ADAPTIVE; /* the failure is this method's */
+        s->step = 0;
+        s->unshot = s->rms = NAN;
+        s->ready = 1;
         s->running = s->pending = 0;
         s->version++;
         pthread_cond_broadcast(&s->changed);

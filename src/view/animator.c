@@ -89,7 +89,10 @@ static int publish_anim(anim_pub *p, const rad_anim *a, long shots, double unsho
                 s->vertex_b[3 * v + (size_t)k] = p->Bv[v + (size_t)k * nv];
         s->shown_elements = (int)n;
         s->shown_vertices = (int)nv;
+        if (!s->animate) /* a method waiting for its next step ends */
+            pthread_cond_broadcast(&s->wake);
         s->animate = 1;
+        s->leaves_shown = 0; /* the animation's mesh is drawn */
         s->running = s->pending = 0; /* the race stops: its F is frame 0's */
         s->frame_shots = (int)shots;
         s->frame_stage = stage;

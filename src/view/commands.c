@@ -30,19 +30,23 @@ static void deadline_after(struct timespec *ts, double seconds)
     }
 }
 
-int view_wait_for_work(view_session *s, double last_step)
+int view_wait_for_work(view_session *s, double last_step, int leave_on_change)
 {
     for (;;) {
         if (s->stopping)
             return -2;
+        if (s->animate) { /* the race is over: the scene changed; a reset
+                             asked for just before is void */
+            s->reset_method = -1;
+            if (leave_on_change)
+                return -3;
+            pthread_cond_wait(&s->wake, &s->lock);
+            continue;
+        }
         if (s->reset_method >= 0) {
             const int m = s->reset_method;
             s->reset_method = -1;
             return m;
-        }
-        if (s->animate) { /* the race is over: the scene changed */
-            pthread_cond_wait(&s->wake, &s->lock);
-            continue;
         }
         if (s->pending > 0)
             return -1;

@@ -437,7 +437,7 @@ static enum MHD_Result do_control(server *sv, struct MHD_Connection *c)
     if (!q.bad[0] && q.method && (method = radi_view_method(q.method)) < 0)
         snprintf(q.bad, sizeof q.bad,
                  "unknown method '%.64s': shooting, sorted, sorted_ambient, gathering, jacobi, "
-                 "race",
+                 "race, adaptive",
                  q.method);
     if (!q.bad[0] && q.steps) {
         const double x = number(&q, "steps", q.steps, 1, VIEW_MAX_STEPS);

@@ -221,14 +221,15 @@ static int loaded_mesh(view_session *s)
     jb_init(&js);
     if (!s->leaves_shown)
         return 0;
+    s->geometry++; /* the scene carries the new number */
     if (view_scene_json(s, s->mesh, s->scene, NULL, &js) != 0) {
+        s->geometry--;
         jb_free(&js);
         return -1;
     }
     free(s->scene_json);
     s->scene_json = js.s;
     s->scene_len = js.len;
-    s->geometry++;
     s->leaves_shown = 0;
     s->shown_elements = s->mesh->nelements;
     s->shown_vertices = s->mesh->nvertices;
@@ -250,7 +251,8 @@ static int fresh(view_session *s, lanes *l, int m)
     }
     bad = bad || smooth(s, l) != 0;
     pthread_mutex_lock(&s->lock);
-    bad = bad || (l->n > 0 && loaded_mesh(s) != 0);
+    bad = bad || (l->n > 0 && !s->animate && loaded_mesh(s) != 0);
+    s->ready |= bad || l->n > 0;
     if (bad) {
         lanes_free(l);
         snprintf(s->failure, sizeof s->failure, "%s", "out of memory for the method");
@@ -317,7 +319,7 @@ static void *worker(void *arg)
                 break;
             continue;
         }
-        const int r = view_wait_for_work(s, last_step);
+        const int r = view_wait_for_work(s, last_step, 0);
         if (r == -2)
             break;
         if (r >= 0 || !have) {
@@ -371,7 +373,7 @@ int view_session_start(view_session *s, rad_error *err)
         return radi_fail(err, RAD_ERR_NOMEM, "cannot start the solver's thread"), -1;
     s->worker_started = 1;
     pthread_mutex_lock(&s->lock); /* no request sees a state before step 0's */
-    while (s->version == 0)
+    while (!s->ready)
         pthread_cond_wait(&s->changed, &s->lock);
     pthread_mutex_unlock(&s->lock);
     return 0;

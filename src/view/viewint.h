@@ -97,6 +97,8 @@ typedef struct view_session {
     size_t scene_len;
     size_t cap_elements, cap_vertices; /* of element_b and vertex_b */
     int shown_elements, shown_vertices; /* of the mesh drawn now */
+    int ready;                  /* 1: the worker has published its first
+                                   state (or its failure) */
     int leaves_shown;           /* 1: the adaptive method's leaves are drawn
                                    (adaptview.c), not the mesh as loaded */
     double *element_now;        /* animate: the last converged frame, in the
@@ -161,8 +163,9 @@ int view_queue_undo(view_session *s, char *why, size_t cap);
 
 /* commands.c: wait (lock held) until there is a step to take (-1; the
  * rate paces a run from `last_step`), a reset (the method to reset to,
- * >= 0) or the end (-2). */
-int view_wait_for_work(view_session *s, double last_step);
+ * >= 0) or the end (-2); once the scene has changed, -3 with
+ * leave_on_change, else wait for the end. */
+int view_wait_for_work(view_session *s, double last_step, int leave_on_change);
 /* shown.c: the published buffers made room for this many elements and
  * vertices (lock held); 0, or -1 when memory ran out. */
 int view_reserve(view_session *s, size_t elements, size_t vertices);
