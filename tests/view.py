@@ -64,10 +64,14 @@ def table(path):
         return [dict(zip(head, line.rstrip("\n").split("\t"))) for line in f]
 
 
-def start(*extra, env=None):
+def start(*extra, env=None, sigint=False):
+    """sigint: the server gets SIGINT's default disposition even when this
+    suite was started with it ignored (a background job's, which the
+    program rightly keeps), so that the Ctrl-C check tests the program."""
     args = list(extra) if extra and extra[-1].endswith(".scene") else list(extra) + [scene]
+    pre = (lambda: signal.signal(signal.SIGINT, signal.SIG_DFL)) if sigint else None
     p = subprocess.Popen([RAD, "view", "-q", "--paused", "--assets", ASSETS, *args],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, preexec_fn=pre)
     ready, _, _ = select.select([p.stdout], [], [], 120)
     url = p.stdout.readline().decode().strip() if ready else ""
     return p, url
@@ -630,7 +634,7 @@ for name in ("adaptive.tsv", "adaptive.ply"):
     os.remove(os.path.join(WORK, name))
 
 # ---- Ctrl-C ---------------------------------------------------------------
-p, url = start("--listen", "127.0.0.1:0")
+p, url = start("--listen", "127.0.0.1:0", sigint=True)
 cl = Client(url)
 holder = []
 t = threading.Thread(target=events, args=(holder, 10 ** 9))
