@@ -10,21 +10,23 @@
 
 #include "view/viewint.h"
 
+/* *buf (3 doubles an item) holds at least `want` items; 0, or -1. */
+static int grow(double **buf, size_t *cap, size_t want)
+{
+    if (want <= *cap)
+        return 0;
+    double *b = realloc(*buf, sizeof *b * 3 * want);
+    if (!b)
+        return -1;
+    *buf = b;
+    *cap = want;
+    return 0;
+}
+
 int view_reserve(view_session *s, size_t elements, size_t vertices)
 {
-    if (elements > s->cap_elements) {
-        double *e = realloc(s->element_b, sizeof *e * 3 * elements);
-        if (!e)
-            return -1;
-        s->element_b = e;
-        s->cap_elements = elements;
-    }
-    if (vertices > s->cap_vertices) {
-        double *v = realloc(s->vertex_b, sizeof *v * 3 * vertices);
-        if (!v)
-            return -1;
-        s->vertex_b = v;
-        s->cap_vertices = vertices;
-    }
-    return 0;
+    return grow(&s->element_b, &s->cap_elements, elements) != 0 ||
+                   grow(&s->vertex_b, &s->cap_vertices, vertices) != 0
+               ? -1
+               : 0;
 }
