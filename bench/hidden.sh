@@ -1,7 +1,9 @@
 #!/bin/sh
 # hidden.sh -- `make bench`'s hidden-surface section: scenes of many small
 # blockers between a lamp and a floor (bench/scenes.py), one thread, per
-# accuracy mode: the fill's time, its pairs by route, the partly hidden
+# accuracy mode: the fill's time, its pairs by route, the candidate
+# blockers a blockable pair, the evaluations of the hidden part a partly
+# hidden pair, the partly hidden
 # pairs' share of the time and the growth of the time with the number of
 # blockers (the slope of log time against log blockers between the two
 # largest sizes).  Prints figures; asserts nothing.
@@ -24,7 +26,7 @@ here=$(dirname "$0")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 limit=${BENCH_HIDDEN_TIMEOUT:-300}
-printf 'scene\tblockers\tmode\tseconds\tpairs_tested\tunblocked\tfully_hidden\tpartly_hidden\tvisibility_s\tms_per_partial\n'
+printf 'scene\tblockers\tmode\tseconds\tpairs_tested\tunblocked\tfully_hidden\tpartly_hidden\tvisibility_s\tms_per_partial\tcandidates_per_pair\tevals_per_partial\n'
 run() { # NAME BLOCKERS SCENE
   for mode in ${BENCH_HIDDEN_MODES:-classic default reference}; do
     if timeout "$limit" "$rad" solve -q --threads 1 --accuracy "$mode" \
@@ -34,9 +36,11 @@ run() { # NAME BLOCKERS SCENE
           s = substr(s, RSTART + length(key) + 4, RLENGTH - length(key) - 4); return s + 0 }
         { t = num("form_factors") ; if (t > 0) ff = t
           if (index($0, "\"visibility\"")) { pt = num("pairs_tested"); pb = num("pairs_blockable")
-            hid = num("pairs_blocked"); par = num("pairs_partial"); vs = num("seconds") } }
-        END { printf "%s\t%s\t%s\t%.3f\t%d\t%d\t%d\t%d\t%.3f\t%.3f\n", name, nb, mode, ff, pt,
-                pt - hid - par, hid, par, vs, (par > 0 ? 1000 * vs / par : 0) }' "$tmp/r.json" \
+            hid = num("pairs_blocked"); par = num("pairs_partial"); vs = num("seconds")
+            cand = num("candidates"); ev = num("evaluations") } }
+        END { printf "%s\t%s\t%s\t%.3f\t%d\t%d\t%d\t%d\t%.3f\t%.3f\t%.2f\t%.0f\n", name, nb, mode,
+                ff, pt, pt - hid - par, hid, par, vs, (par > 0 ? 1000 * vs / par : 0),
+                (pb > 0 ? cand / pb : 0), (par > 0 ? ev / par : 0) }' "$tmp/r.json" \
         | tee -a "$tmp/all"
     else
       printf '%s\t%s\t%s\tover %s s\n' "$1" "$2" "$mode" "$limit"

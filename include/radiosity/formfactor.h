@@ -98,6 +98,12 @@ typedef struct rad_ff_stats {
     double vis_seconds;         /* visibility setup + thread time */
     double clamped_to_one;      /* pairs whose value exceeded 1 one way by no more
                                    than its error bound, set to 1 */
+    double vis_candidates;      /* candidate blockers summed over the blockable
+                                   pairs (what the shaft test and the culls of
+                                   coplanar patches, solids and closed meshes
+                                   left each) */
+    double vis_evaluations;     /* points at which the hidden part was computed
+                                   (the integrand of the partly hidden pairs) */
 } rad_ff_stats;
 
 /* All form factors of a mesh: F is n x n column-major, F[i + j*n] = F_ij,

@@ -326,7 +326,9 @@ typedef struct cli_solve {
     "                          radiosity (B - E) in the scene, in some band\n" \
     "                          (default 0.1)\n"                                \
     "      --max-depth D       --adaptive: at most D splits below a starting\n"\
-    "                          element, 0 to 8 (default 3: sides down to 1/8)\n"\
+    "                          element, 0 to 8 (default 3: sides down to 1/8);\n"\
+    "                          refused when every level's elements together\n"\
+    "                          could pass 4,000,000\n"                       \
     "      --subdivide-test difference|error  --adaptive: what T bounds: the\n"\
     "                          difference itself (default, the paper's test)\n"\
     "                          or the difference times the element's side\n" \

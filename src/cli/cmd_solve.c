@@ -379,9 +379,14 @@ static void summary(const cli_run *r)
         fprintf(stderr, CLI_PROGRAM ": visibility: the hemicubes' z-buffers\n");
     else if (in.ff && in.ff->vis_needed)
         fprintf(stderr, CLI_PROGRAM ": visibility: %.0f of %.0f pairs blockable, %.0f hidden, "
-                        "%.0f partly; %.3g s\n",
+                        "%.0f partly; %.3g s; %.3g candidate blockers a blockable pair; "
+                        "%.3g evaluations of the hidden part a partly hidden pair\n",
                 in.ff->vis_pairs_blockable, in.ff->vis_pairs_tested, in.ff->vis_pairs_blocked,
-                in.ff->vis_pairs_partial, in.ff->vis_seconds);
+                in.ff->vis_pairs_partial, in.ff->vis_seconds,
+                in.ff->vis_pairs_blockable > 0 ? in.ff->vis_candidates / in.ff->vis_pairs_blockable
+                                               : 0.0,
+                in.ff->vis_pairs_partial > 0 ? in.ff->vis_evaluations / in.ff->vis_pairs_partial
+                                             : 0.0);
     else if (in.ff)
         fprintf(stderr, CLI_PROGRAM ": visibility: no pair can be blocked, none computed\n");
     if (!s)

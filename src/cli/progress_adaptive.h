@@ -55,7 +55,9 @@ typedef struct progress_adaptive_run {
     "                          B_neighbour| > T times the largest reflected\n"  \
     "                          radiosity (B - E), in some band (default 0.1)\n" \
     "      --max-depth D       --adaptive: at most D splits below a starting\n"\
-    "                          element, 0 to 8 (default 3)\n"                 \
+    "                          element, 0 to 8 (default 3); refused when\n"   \
+    "                          every level's elements together could pass\n"  \
+    "                          4,000,000\n"                                   \
     "      --subdivide-test difference|error  --adaptive: T bounds the\n"     \
     "                          difference (default) or the difference times\n"\
     "                          the element's side over the largest patch's\n"

@@ -437,9 +437,10 @@ rad_status rad_export_report(FILE *out, const rad_run_info *in)
         fprintf(out,
                 "  \"visibility\": {\"needed\": %s, \"pairs_tested\": %.0f, "
                 "\"pairs_blockable\": %.0f, \"pairs_blocked\": %.0f, \"pairs_partial\": %.0f, "
-                "\"seconds\": %.6g},\n",
+                "\"candidates\": %.0f, \"evaluations\": %.0f, \"seconds\": %.6g},\n",
                 f->vis_needed ? "true" : "false", f->vis_pairs_tested, f->vis_pairs_blockable,
-                f->vis_pairs_blocked, f->vis_pairs_partial, f->vis_seconds);
+                f->vis_pairs_blocked, f->vis_pairs_partial, f->vis_candidates,
+                f->vis_evaluations, f->vis_seconds);
     }
     if (s) {
         jstr(out, "solver", rad_solver_name(s->solver));

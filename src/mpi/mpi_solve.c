@@ -73,13 +73,13 @@ typedef struct work {
 static void ff_stats_reduce(const work *w, rad_ff_tally *t, rad_ff_stats *st, int classic)
 {
     const int n = w->n;
-    double s[10] = {t->entries, t->nonzero, t->negative, t->above_one, t->unmet, t->clamped,
+    double s[12] = {t->entries, t->nonzero, t->negative, t->above_one, t->unmet, t->clamped,
                     t->vis.pairs_tested, t->vis.pairs_blockable, t->vis.pairs_blocked,
-                    t->vis.pairs_partial};
+                    t->vis.pairs_partial, t->vis.candidates, t->vis.evaluations};
     double mx[6] = {t->max_value, -t->min_value, t->max_errest, t->max_relerr,
                     t->vis.seconds, (double)t->vis.needed};
-    double S[10], MX[6];
-    MPI_Reduce(s, S, 10, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+    double S[12], MX[6];
+    MPI_Reduce(s, S, 12, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
     MPI_Reduce(mx, MX, 6, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
     double *rs = w->g.rank == 0 ? malloc(sizeof *rs * (size_t)(n ? n : 1) * 2) : NULL;
     MPI_Reduce(t->row_sum, rs, n, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
@@ -98,6 +98,8 @@ static void ff_stats_reduce(const work *w, rad_ff_tally *t, rad_ff_stats *st, in
     st->vis_pairs_blockable = 0.5 * S[7];
     st->vis_pairs_blocked = 0.5 * S[8];
     st->vis_pairs_partial = 0.5 * S[9];
+    st->vis_candidates = 0.5 * S[10];
+    st->vis_evaluations = 0.5 * S[11];
     st->max_value = n > 1 ? MX[0] : 0;
     st->min_value = n > 1 ? -MX[1] : 0;
     st->max_errest = classic ? NAN : MX[2];

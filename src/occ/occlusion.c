@@ -159,6 +159,7 @@ void radi_occ_stats_add(rad_occ_stats *into, const rad_occ_stats *from)
     into->pairs_blockable += from->pairs_blockable;
     into->pairs_blocked += from->pairs_blocked;
     into->pairs_partial += from->pairs_partial;
+    into->candidates += from->candidates;
     into->evaluations += from->evaluations;
     into->max_errest = fmax(into->max_errest, from->max_errest);
     into->seconds += from->seconds;
@@ -221,6 +222,7 @@ int radi_occ_pair(rad_occ_work *w, const rad_ff_poly *polys, int i, int j, doubl
     double snew = *s, e0 = errest ? *errest : 0, eocc = 0;
     if (nb > 0) {
         w->stats.pairs_blockable++;
+        w->stats.candidates += nb;
         int direct = 0;
         if (occ_occluded_sum(o, sp, &w->stats, nb, pi, pj, *s, &snew, &eocc, &direct))
             nb = -1;
@@ -267,4 +269,6 @@ void radi_occ_stats_to_ff(const rad_occ_stats *v, rad_ff_stats *st)
     st->vis_pairs_blocked = v->pairs_blocked;
     st->vis_pairs_partial = v->pairs_partial;
     st->vis_seconds = v->seconds;
+    st->vis_candidates = v->candidates;
+    st->vis_evaluations = v->evaluations;
 }

@@ -37,6 +37,9 @@ typedef struct rad_occ_stats {
     double pairs_blockable;     /* ... whose shaft meets another surface */
     double pairs_blocked;       /* ... found fully hidden: F = 0 */
     double pairs_partial;       /* ... found partly hidden */
+    double candidates;          /* blockers summed over the blockable pairs:
+                                   what the shaft test and the culls of
+                                   occ_pair_blockers left each */
     double evaluations;         /* point evaluations of the hidden part */
     double max_errest;          /* largest estimated absolute error of an
                                    occluded F_ij (either direction) */

@@ -430,6 +430,12 @@ static void test_blocker_monte_carlo(void)
                fabs(fd - fr) / fr);
         tap_ok(fr < 0.19982489569838746 && vs.pairs_partial == 1,
                "blocker: one partly hidden pair, below the unblocked 0.1998249 (Howell C-11)");
+        /* the plates' pair is the only one the blocker can stand in (the
+         * blocker's own pairs with the plates have nothing between them),
+         * and of the square's two faces the culls leave one */
+        tap_ok(vs.pairs_blockable == 1 && vs.candidates == 1 && vs.evaluations > 0,
+               "blocker: one blockable pair, one candidate blocker, %.0f evaluations",
+               vs.evaluations);
     }
     free(Fd);
     free(Fr);
