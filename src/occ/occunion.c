@@ -295,6 +295,32 @@ static int cmp_interval(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Lists at most this long are sorted in place by insertion: most of an
+ * evaluation's lists (a few shadows, a few intervals of an edge), where
+ * qsort's set-up and copies cost more than the sort.  Insertion is stable,
+ * as glibc's qsort is (a merge sort), so equal keys keep their order
+ * either way and the union's segments come out in the same order. */
+#define OCC_INSERTION_SORT 32
+
+/* The n intervals (t0, t1) of iv in order of t0, stably. */
+static void sort_intervals(double *iv, int n)
+{
+    if (n > OCC_INSERTION_SORT) {
+        qsort(iv, (size_t)n, 2 * sizeof *iv, cmp_interval);
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        const double t0 = iv[2 * i], t1 = iv[2 * i + 1];
+        int j = i;
+        for (; j > 0 && iv[2 * j - 2] > t0; j--) {
+            iv[2 * j] = iv[2 * j - 2];
+            iv[2 * j + 1] = iv[2 * j - 1];
+        }
+        iv[2 * j] = t0;
+        iv[2 * j + 1] = t1;
+    }
+}
+
 /* Do boxes p and q (ulo, uhi, vlo, vhi) meet, edges included? */
 static inline int boxes_meet(const double *p, const double *q)
 {
@@ -310,6 +336,22 @@ static int cmp_sweep(const void *x, const void *y)
 {
     const double a = ((const sweep_key *)x)->ulo, b = ((const sweep_key *)y)->ulo;
     return (a > b) - (a < b);
+}
+
+/* The n keys in order of ulo, stably (OCC_INSERTION_SORT). */
+static void sort_sweep(sweep_key *key, int n)
+{
+    if (n > OCC_INSERTION_SORT) {
+        qsort(key, (size_t)n, sizeof *key, cmp_sweep);
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        const sweep_key x = key[i];
+        int j = i;
+        for (; j > 0 && key[j - 1].ulo > x.ulo; j--)
+            key[j] = key[j - 1];
+        key[j] = x;
+    }
 }
 
 /* For each shadow, the others whose boxes meet its box, into
@@ -337,7 +379,7 @@ static int neighbours(occ_space *sp)
         key[i].i = i;
         sp->nbr_off[i + 1] = 0;
     }
-    qsort(key, (size_t)k, sizeof *key, cmp_sweep);
+    sort_sweep(key, k);
     for (int pass = 0; pass < 2; pass++) {
         for (int p = 0; p < k; p++) {
             const int i = key[p].i;
@@ -503,7 +545,7 @@ static int edge_boundary(occ_space *sp, const pair_ctx *c, int a, rad_vec3 p, ra
         ni++;
     }
     if (ni > 1)
-        qsort(sp->iv, (size_t)ni, 2 * sizeof *sp->iv, cmp_interval);
+        sort_intervals(sp->iv, ni);
     /* walk the covered intervals in order: a shadow's edge keeps the gaps
      * between them within [in0, in1], the inner element's the intervals */
     double t = in0;
