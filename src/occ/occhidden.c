@@ -87,9 +87,9 @@ static double touch_factor(const pair_ctx *c, const tri_node *t)
 }
 
 /* A node's value and error estimate from its cell (t->p, t->nv, t->area).
- * With the 3-point rule (c->order 0): the rule on the triangle (q) and on
- * its four midpoint children (qc), the value their sum and the estimate
- * |q - sum qc|.  With the product rules (occrule.c): the rules of
+ * With the 3-point rule (c->order 0, classic mode): the rule on its four
+ * midpoint children (qc), the value their sum, and no estimate (0: the
+ * mode makes none).  With the product rules (occrule.c): the rules of
  * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
  * and node_raise goes on from there (the three rules take 13
@@ -118,17 +118,20 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
         t->stalled = 0;
         return 0;
     }
+    /* The rule on the whole cell too would give an estimate |q - sum qc|,
+     * but classic mode has none to give (its kernel's is NaN:
+     * radi_ff_pair), and those three evaluations were a fifth of its
+     * visibility time, so they are not made. */
     rad_vec3 ch[4][4];
     occ_cell_children(t->p, 3, ch);
     double sum = 0;
-    if (occ_rule(sp, c, t->p, t->area, &t->q))
-        return -1;
+    t->q = NAN;
     for (int k = 0; k < 4; k++) {
         if (occ_rule(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
             return -1;
         sum += t->qc[k];
     }
-    t->err = fabs(t->q - sum);
+    t->err = 0;
     t->order = 0;
     t->stalled = 1;
     return 0;

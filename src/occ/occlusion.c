@@ -31,8 +31,8 @@
  * of element i), so that the points the cuts construct keep the digits
  * of the pair, not those of its distance from the origin (local_frame).
  *
- * Accuracy modes: classic evaluates the pieces once (two levels of the
- * 3-point rule on each fan triangle) and stops.  Default and reference
+ * Accuracy modes: classic evaluates the pieces once (the 3-point rule on
+ * the four midpoint children of each fan triangle) and stops.  Default and reference
  * cut the pieces along the event planes of each blocker (occdomain.c,
  * split_events; in default mode only where the events happen
  * (occevent.c) for a pair with few blockers, and the events of two

@@ -443,6 +443,48 @@ static void test_blocker_monte_carlo(void)
     rad_scene_free(&s);
 }
 
+/* Classic mode makes no error estimate: asked for one through the
+ * library, every nonzero entry's is NaN (its kernel has none), so its
+ * hidden-part rule makes none either, and F is the same bit for bit with
+ * or without the request. */
+static void test_classic_estimate(void)
+{
+    rad_scene s;
+    rad_mesh m;
+    if (load("blocker.scene", 4, &s, &m)) {
+        tap_ok(0, "load the blocker scene");
+        return;
+    }
+    size_t n = (size_t)m.nelements;
+    double *F = malloc(sizeof *F * n * n), *G = malloc(sizeof *G * n * n),
+           *E = malloc(sizeof *E * n * n);
+    rad_ff_options o;
+    rad_occ_stats v1, v2;
+    rad_error err;
+    rad_ff_options_init(&o);
+    o.accuracy = RAD_ACCURACY_CLASSIC;
+    int ok = F && G && E &&
+             radi_ff_matrix_occ(&m, &o, RAD_OCC_AUTO, F, NULL, NULL, &v1, &err) == RAD_OK &&
+             radi_ff_matrix_occ(&m, &o, RAD_OCC_AUTO, G, E, NULL, &v2, &err) == RAD_OK;
+    size_t differ = 0, estimated = 0;
+    for (size_t i = 0; ok && i < n; i++)
+        for (size_t j = 0; j < n; j++) {
+            const size_t k = i + j * n;
+            differ += memcmp(&F[k], &G[k], sizeof *F) != 0;
+            estimated += F[k] != 0 && !isnan(E[k]);
+        }
+    tap_ok(ok && differ == 0 && estimated == 0 && v1.pairs_partial > 0 &&
+               v1.evaluations == v2.evaluations,
+           "classic: no estimate (%zu nonzero entries have one), and F the same bit for bit with and "
+           "without asking (%zu of %zu differ; %.0f partly hidden pairs, %.0f evaluations)",
+           estimated, differ, n * n, v1.pairs_partial, v1.evaluations);
+    free(F);
+    free(G);
+    free(E);
+    rad_mesh_free(&m);
+    rad_scene_free(&s);
+}
+
 /* The blocker scene's text without its blocker (the `quad grey` lines). */
 static char *without_blocker(size_t *len)
 {
@@ -645,6 +687,7 @@ int main(void)
     test_cube_untouched();
     test_blocker_monte_carlo();
     test_blocker_monotone();
+    test_classic_estimate();
     test_culling_conservative();
     test_closed_mesh();
     /* the shipped mesh (3023 elements) takes minutes per mode since the
