@@ -44,6 +44,22 @@
  * face edge on, so the rule lets light through a band of O about a snap
  * wide along the planes of M's faces: a share of the pair's unoccluded
  * factor of about the snap over O's size (occsolid.c discusses it).
+ *
+ * The rule at a point.  The same argument holds for each point x of O
+ * alone: a face B of M whose plane x is behind (by more than the snap,
+ * so that B is not seen edge on) can only be crossed by a segment from x
+ * on its way out of the solid, and that segment went in through a face
+ * whose plane x is in front of, which is kept.  So the union of the
+ * shadows from x (occunion.c) leaves such faces out, for x on the element
+ * taken as O here, or on either element when no face was left out for
+ * the pair: a face B behind the whole of O is the case where x is behind
+ * it wherever x is.  (Never on the other element once faces were left
+ * out for O: those left out and those behind x could be a segment's
+ * entry and its exit.)  The faces left out at a point are mostly the far
+ * side of a model, whose shadows overlap those of the near side and
+ * would each be tested against them: on bench/scenes.py torus 150 in
+ * classic mode the fill takes 9% fewer instructions.  Where it is allowed
+ * is set for each blocker of the pair in sp->xcull.
  */
 #include <config.h>
 
@@ -238,45 +254,53 @@ static int behind(const rad_occ *o, const occ_space *sp, int k, const rad_ff_pol
 int occ_closed_cull(const rad_occ *o, occ_space *sp, int nb, int sa, int sb,
                     const rad_ff_poly *pi, const rad_ff_poly *pj, rad_vec3 origin)
 {
-    if (o->nclosed == 0 || nb < 2)
+    sp->nxcull = 0;
+    if (o->nclosed == 0 || nb < 1)
         return nb;
-    if (occ_grow_i(&sp->ccut, &sp->capccut, 2 * nb))
+    /* ccut: [0, 2 nb) the cuts per side, [2 nb, 4 nb) whether the side's
+     * element is outside the blocker's mesh */
+    if (occ_grow_i(&sp->ccut, &sp->capccut, 4 * nb) || occ_grow_i(&sp->xcull, &sp->capxcull, 2 * nb))
         return -1;
-    int *cut = sp->ccut, count[2] = {0, 0};
+    int *cut = sp->ccut, *out = sp->ccut + 2 * nb, count[2] = {0, 0};
     for (int side = 0; side < 2; side++) {
         const rad_ff_poly *p = side ? pj : pi;
         const int s = side ? sb : sa;
         int last = -1, ok = 0; /* the last mesh judged, and whether O is outside it */
         for (int k = 0; k < nb; k++) {
             const int c = o->closed[sp->bid[k]];
-            cut[side * nb + k] = 0;
+            cut[side * nb + k] = out[side * nb + k] = 0;
             if (c < 0)
                 continue;
             if (c != last) {
                 ok = outside(o, c, s, p, origin);
                 last = c;
             }
-            if (ok && behind(o, sp, k, p)) {
+            out[side * nb + k] = ok;
+            if (ok && nb >= 2 && behind(o, sp, k, p)) {
                 cut[side * nb + k] = 1;
                 count[side]++;
             }
         }
     }
-    if (count[0] == 0 && count[1] == 0)
-        return nb;
-    const int *f = cut + (count[1] > count[0] ? nb : 0);
+    /* the side whose cuts are taken (-1: none), and the rule at a point
+     * (exit_faces, below) on that side alone */
+    const int taken = count[0] == 0 && count[1] == 0 ? -1 : count[1] > count[0];
+    const int *f = cut + (taken > 0 ? nb : 0);
     int w = 0, at = 0;
     for (int k = 0; k < nb; k++) {
         const int first = sp->blk.first[k], n = sp->blk.first[k + 1] - first;
-        if (f[k])
+        if (taken >= 0 && f[k])
             continue;
         memmove(sp->blk.v + at, sp->blk.v + first, sizeof *sp->blk.v * (size_t)n);
         sp->blk.first[w] = at;
+        for (int side = 0; side < 2; side++)
+            sp->xcull[2 * w + side] = out[side * nb + k] && (taken < 0 || taken == side);
         sp->bid[w++] = sp->bid[k];
         at += n;
     }
     sp->blk.first[w] = at;
     sp->blk.np = w;
     sp->blk.nv = at;
+    sp->nxcull = w;
     return w;
 }

@@ -352,11 +352,15 @@ static int hides_all(const rad_vec3 *p, int np, const rad_vec3 *q, int nq, const
 }
 
 /* Clip the pair's blockers to the front of the inner plane (normal tn
- * through tp), dropping those with nothing in front; fill normals and
- * centroids.  Returns the number kept, or -1. */
-static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp)
+ * through tp), dropping those with nothing in front; fill normals,
+ * centroids and whether a point of the outer element (side 0: element i,
+ * 1: j) behind a blocker's plane may leave it out (sp->bx, occclosed.c).
+ * Returns the number kept, or -1. */
+static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp,
+                         int side)
 {
-    if (occ_grow_v3(&sp->bn, &sp->capbn, nb) || occ_grow_v3(&sp->bc, &sp->capbc, nb))
+    if (occ_grow_v3(&sp->bn, &sp->capbn, nb) || occ_grow_v3(&sp->bc, &sp->capbc, nb) ||
+        occ_grow_i(&sp->bx, &sp->capbx, nb))
         return -1;
     occ_ps_clear(&sp->blkc);
     int kept = 0;
@@ -369,6 +373,7 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
             continue;
         sp->bn[kept] = o->snormal[sp->bid[b]];
         sp->bc[kept] = poly_mean(sp->blkc.v + sp->blkc.first[kept], m);
+        sp->bx[kept] = sp->nxcull == nb && sp->xcull[2 * b + side];
         kept++;
     }
     return kept;
@@ -587,7 +592,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     const rad_vec3 *co = outer_i ? ci : cj, *ct = outer_i ? cj : ci;
     int no = outer_i ? ni : nj, nt = outer_i ? nj : ni;
     memset(res, 0, sizeof *res);
-    int kept = clip_blockers(o, sp, nb, pt->normal, ct[0]);
+    int kept = clip_blockers(o, sp, nb, pt->normal, ct[0], !outer_i);
     if (kept < 0)
         return -1;
     pair_ctx c;

@@ -545,6 +545,7 @@ int occ_pair_shaft(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff
 int occ_pair_blockers(const rad_occ *o, occ_space *sp, int sa, int sb, const rad_ff_poly *pi,
                       const rad_ff_poly *pj, rad_vec3 origin)
 {
+    sp->nxcull = 0; /* no exit faces known until occ_closed_cull says */
     int nb = occ_pair_shaft(o, sp, sa, sb, pi, pj, origin);
     if (nb <= 0 || o->mode == RAD_OCC_ALL)
         return nb;

@@ -106,6 +106,8 @@ void occ_space_free(occ_space *sp)
     ps_free(&sp->cur);
     ps_free(&sp->next);
     free(sp->bid);
+    free(sp->xcull);
+    free(sp->bx);
     free(sp->bn);
     free(sp->bc);
     free(sp->rem);

@@ -293,6 +293,13 @@ typedef struct occ_space {
     int *ccut;                  /* blockers a closed mesh makes redundant,
                                    per side (occclosed.c) */
     int capccut;
+    int *xcull;                 /* blocker k of the pair, x on element i
+                                   (2k) or j (2k + 1): 1 when a point x behind
+                                   k's plane may leave k out (occclosed.c) */
+    int capxcull, nxcull;       /* nxcull: the blockers it is for, 0: none */
+    int *bx;                    /* the same for the clipped blockers, x on
+                                   the outer element (occhidden.c) */
+    int capbx;
     rad_vec3 *seg;              /* the union's boundary: pairs of ends */
     int capseg, nseg;
     int *mflag;                 /* each vertex of blkc: OCC_MESH_EDGE when the

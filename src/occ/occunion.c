@@ -132,8 +132,11 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
 {
     occ_ps_clear(&sp->sh);
     for (int b = 0; b < c->nb; b++) {
-        if (fabs(v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]))) <= c->snap)
+        const double ahead = v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]));
+        if (fabs(ahead) <= c->snap)
             continue; /* seen edge on: hides nothing (occpoint.c, cone_planes) */
+        if (ahead < 0 && sp->bx[b])
+            continue; /* a closed mesh's face x is behind: an exit (header) */
         int m = in_pyramid(sp, c, b, x);
         if (m <= 0) {
             if (m < 0)
