@@ -575,7 +575,9 @@ static void count_entries(const rad_anim *a, const rad_redist *old, const double
     for (size_t k = 0; k < pl->n; k++) {
         const int i = pl->pi[k], j = pl->pj[k];
         const double dij = fij[k] - a->F[i + j * n], dji = fji[k] - a->F[j + i * n];
-        rep->pairs_changed += dij != 0 || dji != 0;
+        /* of the pairs recomputed (both ends present), as the report says;
+         * a pair that lost an end changes to 0 without being computed */
+        rep->pairs_changed += (dij != 0 || dji != 0) && a->present[i] && a->present[j];
         count[j] += dij != 0 && a->present[i] && has_shot(T, n, j);
         count[i] += dji != 0 && a->present[j] && has_shot(T, n, i);
     }

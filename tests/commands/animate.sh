@@ -147,6 +147,10 @@ r=$(awk '/"frame": / { match($0, /"pairs_share": [0-9.e+-]*/); v = substr($0, RS
                       printf " %.3g", v; n++; if (v > 1) bad = 1 } END { exit bad || n != 6 }' rep.json) &&
   [ "$(grep -c '"pairs_share": [0-9]' rep.json)" -eq 6 ]
 ok $? "every frame's pairs_share is at most 1 (the box's removal too):$r"
+r=$(awk '/"frame": / { match($0, /"pairs_recomputed": [0-9.e+-]*/); p = substr($0, RSTART + 20, RLENGTH - 20) + 0
+                      match($0, /"pairs_changed": [0-9.e+-]*/); c = substr($0, RSTART + 17, RLENGTH - 17) + 0
+                      printf " %d/%d", c, p; n++; if (c > p) bad = 1 } END { exit bad || n != 6 }' rep.json)
+ok $? "every frame's pairs_changed is among its pairs_recomputed (the box's removal too):$r"
 head -n 1 trace.tsv | grep -q '^frame	step	shooter	kind	sign	power	unshot	redistribution_left	error	error_top1	gather$'
 ok $? "the trace's header"
 awk -F '\t' 'NR > 1 && $4 == "redistribute" && $5 == -1 { neg = 1 } NR > 1 && $4 == "redistribute" && $5 == 1 { pos = 1 } END { exit !(neg && pos) }' trace.tsv
