@@ -282,8 +282,8 @@ int occ_closed_cull(const rad_occ *o, occ_space *sp, int nb, int sa, int sb,
             }
         }
     }
-    /* the side whose cuts are taken (-1: none), and the rule at a point
-     * (exit_faces, below) on that side alone */
+    /* the side whose cuts are taken (-1: none); the rule at a point
+     * (header; occunion.c, shadows) holds on that side alone */
     const int taken = count[0] == 0 && count[1] == 0 ? -1 : count[1] > count[0];
     const int *f = cut + (taken > 0 ? nb : 0);
     int w = 0, at = 0;

@@ -124,13 +124,10 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
      * visibility time, so they are not made. */
     rad_vec3 ch[4][4];
     occ_cell_children(t->p, 3, ch);
-    double sum = 0;
     t->q = NAN;
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 4; k++)
         if (occ_rule(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
             return -1;
-        sum += t->qc[k];
-    }
     t->err = 0;
     t->order = 0;
     t->stalled = 1;

@@ -25,8 +25,7 @@ static int grow(double **buf, size_t *cap, size_t want)
 
 int view_reserve(view_session *s, size_t elements, size_t vertices)
 {
-    return grow(&s->element_b, &s->cap_elements, elements) != 0 ||
-                   grow(&s->vertex_b, &s->cap_vertices, vertices) != 0
-               ? -1
-               : 0;
+    if (grow(&s->element_b, &s->cap_elements, elements))
+        return -1;
+    return grow(&s->vertex_b, &s->cap_vertices, vertices);
 }
