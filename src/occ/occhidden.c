@@ -350,14 +350,15 @@ static int hides_all(const rad_vec3 *p, int np, const rad_vec3 *q, int nq, const
 
 /* Clip the pair's blockers to the front of the inner plane (normal tn
  * through tp), dropping those with nothing in front; fill normals,
- * centroids and whether a point of the outer element (side 0: element i,
- * 1: j) behind a blocker's plane may leave it out (sp->bx, occclosed.c).
- * Returns the number kept, or -1. */
+ * centroids, the radii of the balls about those that hold the blockers
+ * (sp->br, occunion.c), and whether a point of the outer element (side 0:
+ * element i, 1: j) behind a blocker's plane may leave it out (sp->bx,
+ * occclosed.c).  Returns the number kept, or -1. */
 static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp,
                          int side)
 {
     if (occ_grow_v3(&sp->bn, &sp->capbn, nb) || occ_grow_v3(&sp->bc, &sp->capbc, nb) ||
-        occ_grow_i(&sp->bx, &sp->capbx, nb))
+        occ_grow_d(&sp->br, &sp->capbr, nb) || occ_grow_i(&sp->bx, &sp->capbx, nb))
         return -1;
     occ_ps_clear(&sp->blkc);
     int kept = 0;
@@ -370,6 +371,10 @@ static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, r
             continue;
         sp->bn[kept] = o->snormal[sp->bid[b]];
         sp->bc[kept] = poly_mean(sp->blkc.v + sp->blkc.first[kept], m);
+        double r = 0;
+        for (int k = 0; k < m; k++)
+            r = fmax(r, v3_norm(v3_sub(sp->blkc.v[sp->blkc.first[kept] + k], sp->bc[kept])));
+        sp->br[kept] = r;
         sp->bx[kept] = sp->nxcull == nb && sp->xcull[2 * b + side];
         kept++;
     }

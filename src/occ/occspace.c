@@ -110,6 +110,7 @@ void occ_space_free(occ_space *sp)
     free(sp->bx);
     free(sp->bn);
     free(sp->bc);
+    free(sp->br);
     free(sp->rem);
     free(sp->tmp);
     free(sp->tmp2);

@@ -224,6 +224,9 @@ typedef struct occ_space {
     int capb;
     rad_vec3 *bn, *bc;          /* clipped blockers: normal, centroid */
     int capbn, capbc;
+    double *br;                 /* the radius of a ball about bc holding the
+                                   clipped blocker (occunion.c, in_pyramid) */
+    int capbr;
     polyset cur, next;          /* visible pieces before / after a blocker */
     rad_vec3 *rem, *tmp, *tmp2; /* the piece being cut, and the cut's output
                                    (tmp2: the other side, occdomain.c) */

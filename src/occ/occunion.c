@@ -77,6 +77,11 @@
  * meet them at a grazing angle on every evaluation). */
 #define OCC_UNION_WIDEN 3.0
 
+/* A bound, relative to the sizes involved, far above the round-off of a
+ * signed distance nrm . (p - x) in double (about 3 sqrt(3) eps |p - x|):
+ * in_pyramid's ball test. */
+#define SIDE_MARGIN 1e-12
+
 /* The planes through x and each edge of the inner element widened by
  * OCC_UNION_WIDEN, unit normals pointing inside, into sp->upl; returns their count, 0 when
  * some edge is seen end on from x, -1 when memory ran out. */
@@ -109,7 +114,20 @@ static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
         occ_grow_d(&sp->d, &sp->capd, m + c->nt))
         return -1;
     memcpy(sp->pj0, p, sizeof *p * (size_t)m);
+    /* the ball about bc of radius br holds the blocker and every part of
+     * it that a clip keeps; where it lies beyond the snap (and the
+     * round-off of the distances, far below SIDE_MARGIN of the sizes) on
+     * one side of a plane, so does every vertex, and the distances need
+     * not be taken: the clip would keep all, or nothing */
+    const rad_vec3 bc = sp->bc[b];
+    const double br = sp->br[b],
+                 margin = c->snap + SIDE_MARGIN * (3 * v3_maxabs(v3_sub(bc, x)) + br);
     for (int k = 0; k < c->nt && m >= 3; k++) {
+        const double dc = v3_dot(sp->upl[k], v3_sub(bc, x));
+        if (dc - br > margin)
+            continue;
+        if (dc + br < -margin)
+            return 0;
         double lo, hi;
         poly_distances(sp->pj0, m, sp->upl[k], x, c->snap, sp->d, &lo, &hi);
         poly_settle_signs(sp->d, m, &lo, &hi);
@@ -123,12 +141,63 @@ static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
     return m >= 3 ? m : 0;
 }
 
+/* Do boxes p and q (ulo, uhi, vlo, vhi) meet, edges included? */
+static inline int boxes_meet(const double *p, const double *q)
+{
+    return p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3];
+}
+
+/* Shadow s's vertices (sp->pj0, m of them) in the plane's axes e, from
+ * the inner element's first vertex, into sp->uv from f, and their box
+ * into sp->box + 4 s; 0, -1. */
+static int shadow_uv(occ_space *sp, const pair_ctx *c, const rad_vec3 e[2], int s, int f, int m)
+{
+    if (occ_grow_d(&sp->uv, &sp->capuv, 2 * (f + m)) ||
+        occ_grow_d(&sp->box, &sp->capbox, 4 * (s + 1)))
+        return -1;
+    double *bx = sp->box + 4 * s;
+    for (int k = 0; k < m; k++) {
+        const rad_vec3 r = v3_sub(sp->pj0[k], c->t[0]);
+        const double u = v3_dot(r, e[0]), v = v3_dot(r, e[1]);
+        sp->uv[2 * (f + k)] = u;
+        sp->uv[2 * (f + k) + 1] = v;
+        if (k == 0 || u < bx[0])
+            bx[0] = u;
+        if (k == 0 || u > bx[1])
+            bx[1] = u;
+        if (k == 0 || v < bx[2])
+            bx[2] = v;
+        if (k == 0 || v > bx[3])
+            bx[3] = v;
+    }
+    return 0;
+}
+
+/* Reverse the m vertices of sp->pj0 and their m points of sp->uv from f. */
+static void shadow_reverse(occ_space *sp, int f, int m)
+{
+    for (int k = 0; k < m / 2; k++) {
+        const rad_vec3 t = sp->pj0[k];
+        sp->pj0[k] = sp->pj0[m - 1 - k];
+        sp->pj0[m - 1 - k] = t;
+        double *p = sp->uv + 2 * (f + k), *q = sp->uv + 2 * (f + m - 1 - k);
+        const double u = p[0], v = p[1];
+        p[0] = q[0];
+        p[1] = q[1];
+        q[0] = u;
+        q[1] = v;
+    }
+}
+
 /* The shadows of the blockers on the inner plane into sp->sh, each turned
  * like the inner element (sense: +1 or -1 against tn), with their bounding
  * boxes; returns 1, 0 when some blocker touches x (the caller then cuts by
- * cones), -1. */
+ * cones), -1.  A shadow whose box misses the inner element's (tbox) is
+ * left out: it hides nothing of the inner element, its edges lie outside
+ * it, and so do the intervals it covers of other edges, so it adds no
+ * segment to the boundary and removes none. */
 static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, double sense,
-                   const rad_vec3 e[2])
+                   const rad_vec3 e[2], const double *tbox)
 {
     occ_ps_clear(&sp->sh);
     for (int b = 0; b < c->nb; b++) {
@@ -150,36 +219,18 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
                 return 0;
             sp->pj0[k] = v3_add(x, v3_scale(r, h / dk));
         }
+        const int s = sp->sh.np, f = sp->sh.nv;
+        if (shadow_uv(sp, c, e, s, f, m))
+            return -1;
+        if (!boxes_meet(sp->box + 4 * s, tbox))
+            continue;
         const double turn = v3_dot(v3_newell(sp->pj0, m), c->tn) * sense;
         if (!(poly_area(sp->pj0, m) > c->sliver))
             continue;
         if (turn < 0)
-            for (int k = 0; k < m / 2; k++) {
-                const rad_vec3 t = sp->pj0[k];
-                sp->pj0[k] = sp->pj0[m - 1 - k];
-                sp->pj0[m - 1 - k] = t;
-            }
-        const int s = sp->sh.np;
-        if (occ_ps_push(&sp->sh, sp->pj0, m) || occ_grow_d(&sp->box, &sp->capbox, 4 * (s + 1)))
+            shadow_reverse(sp, f, m);
+        if (occ_ps_push(&sp->sh, sp->pj0, m))
             return -1;
-        const int f = sp->sh.first[s];
-        if (occ_grow_d(&sp->uv, &sp->capuv, 2 * (f + m)))
-            return -1;
-        double *bx = sp->box + 4 * s;
-        for (int k = 0; k < m; k++) {
-            const rad_vec3 r = v3_sub(sp->pj0[k], c->t[0]);
-            const double u = v3_dot(r, e[0]), v = v3_dot(r, e[1]);
-            sp->uv[2 * (f + k)] = u;
-            sp->uv[2 * (f + k) + 1] = v;
-            if (k == 0 || u < bx[0])
-                bx[0] = u;
-            if (k == 0 || u > bx[1])
-                bx[1] = u;
-            if (k == 0 || v < bx[2])
-                bx[2] = v;
-            if (k == 0 || v > bx[3])
-                bx[3] = v;
-        }
     }
     return 1;
 }
@@ -324,11 +375,6 @@ static void sort_intervals(double *iv, int n)
     }
 }
 
-/* Do boxes p and q (ulo, uhi, vlo, vhi) meet, edges included? */
-static inline int boxes_meet(const double *p, const double *q)
-{
-    return p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3];
-}
 
 typedef struct sweep_key {
     double ulo;
@@ -519,15 +565,17 @@ static int add_seg(occ_space *sp, rad_vec3 p, rad_vec3 q, double t0, double t1)
  * sp->seg: of a shadow's edge, what lies strictly inside the inner
  * element and inside no other shadow; of the inner element's edge, what
  * lies inside some shadow.  Returns 0, -1. */
-static int edge_boundary(occ_space *sp, const pair_ctx *c, int a, rad_vec3 p, rad_vec3 q,
-                         const double *pu, const double *qu)
+static int edge_boundary(occ_space *sp, const pair_ctx *c, const double *tbox, int a, rad_vec3 p,
+                         rad_vec3 q, const double *pu, const double *qu)
 {
     double in0 = 0, in1 = 1;
-    if (a >= 0 && !inside_interval(sp->tuv, c->nt, 0, pu, qu, &in0, &in1))
-        return 0;
-    int ni = 0;
     const double ebox[4] = {pu[0] < qu[0] ? pu[0] : qu[0], pu[0] < qu[0] ? qu[0] : pu[0],
                             pu[1] < qu[1] ? pu[1] : qu[1], pu[1] < qu[1] ? qu[1] : pu[1]};
+    /* a shadow's edge whose box misses the inner element's is outside it */
+    if (a >= 0 && (!boxes_meet(ebox, tbox) ||
+                   !inside_interval(sp->tuv, c->nt, 0, pu, qu, &in0, &in1)))
+        return 0;
+    int ni = 0;
     /* a shadow's edge meets only its neighbours; the element's, any */
     const int n0 = a >= 0 ? sp->nbr_off[a] : 0, n1 = a >= 0 ? sp->nbr_off[a + 1] : sp->sh.np;
     for (int l = n0; l < n1; l++) {
@@ -630,7 +678,15 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
         sp->tuv[2 * k] = v3_dot(d, e[0]);
         sp->tuv[2 * k + 1] = v3_dot(d, e[1]);
     }
-    if ((r = shadows(sp, c, x, h, sense, e)) <= 0)
+    double tbox[4] = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+    for (int k = 0; k < c->nt; k++) {
+        const double u = sp->tuv[2 * k], v = sp->tuv[2 * k + 1];
+        tbox[0] = u < tbox[0] ? u : tbox[0];
+        tbox[1] = u > tbox[1] ? u : tbox[1];
+        tbox[2] = v < tbox[2] ? v : tbox[2];
+        tbox[3] = v > tbox[3] ? v : tbox[3];
+    }
+    if ((r = shadows(sp, c, x, h, sense, e, tbox)) <= 0)
         return r;
     sp->nseg = 0;
     if (neighbours(sp) || inner_edges(sp))
@@ -641,14 +697,14 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
             const int k0 = f + k, k1 = f + (k + 1) % n;
             if (sp->inner[k0])
                 continue;
-            if (edge_boundary(sp, c, a, sp->sh.v[k0], sp->sh.v[k1], sp->uv + 2 * k0,
+            if (edge_boundary(sp, c, tbox, a, sp->sh.v[k0], sp->sh.v[k1], sp->uv + 2 * k0,
                               sp->uv + 2 * k1))
                 return -1;
         }
     }
     for (int k = 0; k < c->nt && sp->sh.np > 0; k++) {
         const int k1 = (k + 1) % c->nt;
-        if (edge_boundary(sp, c, -1, c->t[k], c->t[k1], sp->tuv + 2 * k, sp->tuv + 2 * k1))
+        if (edge_boundary(sp, c, tbox, -1, c->t[k], c->t[k1], sp->tuv + 2 * k, sp->tuv + 2 * k1))
             return -1;
     }
     sp->evals++;
