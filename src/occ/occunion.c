@@ -224,8 +224,9 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
             return -1;
         if (!boxes_meet(sp->box + 4 * s, tbox))
             continue;
-        const double turn = v3_dot(v3_newell(sp->pj0, m), c->tn) * sense;
-        if (!(poly_area(sp->pj0, m) > c->sliver))
+        const rad_vec3 nw = v3_newell(sp->pj0, m); /* poly_area's, taken once */
+        const double turn = v3_dot(nw, c->tn) * sense;
+        if (!(0.5 * v3_norm(nw) > c->sliver))
             continue;
         if (turn < 0)
             shadow_reverse(sp, f, m);
