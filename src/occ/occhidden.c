@@ -88,8 +88,9 @@ static double touch_factor(const pair_ctx *c, const tri_node *t)
 
 /* A node's value and error estimate from its cell (t->p, t->nv, t->area).
  * With the 3-point rule (c->order 0, classic mode): the rule on its four
- * midpoint children (qc), the value their sum, and no estimate (0: the
- * mode makes none).  With the product rules (occrule.c): the rules of
+ * midpoint children (qc), or on the cell alone (qc[0]) when it is smaller
+ * than OCC_CLASSIC_ONCE of the outer element, the value their sum, and no
+ * estimate (0: the mode makes none).  With the product rules (occrule.c): the rules of
  * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
  * and node_raise goes on from there (the three rules take 13
@@ -122,12 +123,18 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
      * but classic mode has none to give (its kernel's is NaN:
      * radi_ff_pair), and those three evaluations were a fifth of its
      * visibility time, so they are not made. */
-    rad_vec3 ch[4][4];
-    occ_cell_children(t->p, 3, ch);
     t->q = NAN;
-    for (int k = 0; k < 4; k++)
-        if (occ_rule(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
+    if (t->area < OCC_CLASSIC_ONCE * c->outer_area) {
+        t->qc[1] = t->qc[2] = t->qc[3] = 0;
+        if (occ_rule(sp, c, t->p, t->area, &t->qc[0]))
             return -1;
+    } else {
+        rad_vec3 ch[4][4];
+        occ_cell_children(t->p, 3, ch);
+        for (int k = 0; k < 4; k++)
+            if (occ_rule(sp, c, ch[k], 0.25 * t->area, &t->qc[k]))
+                return -1;
+    }
     t->err = 0;
     t->order = 0;
     t->stalled = 1;
@@ -606,6 +613,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.nb = kept;
     c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
+    c.outer_area = poly_area(co, no);
     c.events = o->accuracy == RAD_ACCURACY_CLASSIC ? 0
                : o->accuracy == RAD_ACCURACY_DEFAULT && kept <= OCC_WEDGE_BLOCKERS
                    ? OCC_SPLIT_WEDGES
