@@ -90,8 +90,9 @@ static double touch_factor(const pair_ctx *c, const tri_node *t)
  * With the 3-point rule (c->order 0, classic mode): the rule on its four
  * midpoint children (qc), or on the cell alone (qc[0]) when it is smaller
  * than OCC_CLASSIC_ONCE of the outer element, the value their sum, and no
- * estimate (0: the mode makes none).  With the product rules (occrule.c): the rules of
- * orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the estimate
+ * estimate (0: the mode makes none).  With the product rules (occrule.c):
+ * the rules of orders 1, 2 and 3 (Q1, Q2, Q3), the value Q3 and the
+ * estimate
  *     max(|Q3 - Q2|, |Q2 - Q1|),                                       (2)
  * and node_raise goes on from there (the three rules take 13
  * evaluations, not 14: orders 1 and 3 share their centre point, and order
@@ -356,11 +357,11 @@ static int hides_all(const rad_vec3 *p, int np, const rad_vec3 *q, int nq, const
 }
 
 /* Clip the pair's blockers to the front of the inner plane (normal tn
- * through tp), dropping those with nothing in front; fill normals,
- * centroids, the radii of the balls about those that hold the blockers
- * (sp->br, occunion.c), and whether a point of the outer element (side 0:
- * element i, 1: j) behind a blocker's plane may leave it out (sp->bx,
- * occclosed.c).  Returns the number kept, or -1. */
+ * through tp), dropping those with nothing in front; fill their normals,
+ * their centroids, the radius of a ball about each centroid that holds
+ * its blocker (sp->br, occunion.c), and whether a point of the outer
+ * element (side 0: element i, 1: j) behind a blocker's plane may leave it
+ * out (sp->bx, occclosed.c).  Returns the number kept, or -1. */
 static int clip_blockers(const rad_occ *o, occ_space *sp, int nb, rad_vec3 tn, rad_vec3 tp,
                          int side)
 {
@@ -450,7 +451,7 @@ static int domain_integral(const rad_occ *o, occ_space *sp, pair_ctx *c, const r
     sp->any_hidden = sp->any_visible = 0;
     sp->arc_err = 0;
     c->direct = 0;
-    const double area_o = poly_area(co, no);
+    const double area_o = c->outer_area;
     /* until the integral is under way: the largest target, for the
      * lenses' samples (occeee.c) and the first leaves */
     sp->noise_tol = rel * fabs(s) / (2 * RAD_PI) / area_o;

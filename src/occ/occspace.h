@@ -344,7 +344,7 @@ typedef struct pair_ctx {
                                    (occhidden.c, orient_integral): shadows may
                                    be taken on its plane (occpoint.c,
                                    hidden_last; occunion.c) */
-    int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc */
+    int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc, sp->br */
     double snap, sliver;        /* distance and area tolerances */
     int events;                 /* split the domain along the event planes:
                                    0 not at all (classic), OCC_SPLIT_ALL along

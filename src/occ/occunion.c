@@ -44,6 +44,18 @@
  * nearly coincident edges could each be judged inside the other's shadow
  * and both be dropped, leaving a hole in the boundary.
  *
+ * What cannot reach A_t is left out before any edge test: a blocker whose
+ * ball (about its centroid, through its farthest vertex) lies wholly
+ * outside the widened pyramid, and a shadow, or a shadow's edge, whose box
+ * misses A_t's box.  Such a shadow lies outside A_t, and so do its edges
+ * and the intervals it covers of other edges: it adds no segment to the
+ * boundary and removes none, and the sum is the same.  The ball also
+ * spares the clip's distances where it lies wholly inside a pyramid
+ * plane.  Its test is taken beyond the snap (at least 1e-11 of the
+ * scene's size, occspace.h), which covers the round-off of the ball and
+ * of the vertices the clips construct, rounded to the pair frame's
+ * coordinates; OCC_BALL_MARGIN adds the round-off of the distance itself.
+ *
  * The cost is O(K^2) edge tests for K blockers (pairs of shadows whose
  * boxes miss are skipped), where cutting the visible pieces by each
  * blocker's cone in turn (occpoint.c, hidden_at) leaves pieces whose
@@ -79,8 +91,8 @@
 
 /* A bound, relative to the sizes involved, far above the round-off of a
  * signed distance nrm . (p - x) in double (about 3 sqrt(3) eps |p - x|):
- * in_pyramid's ball test. */
-#define SIDE_MARGIN 1e-12
+ * in_pyramid's ball test, beyond the snap (header). */
+#define OCC_BALL_MARGIN 1e-12
 
 /* The planes through x and each edge of the inner element widened by
  * OCC_UNION_WIDEN, unit normals pointing inside, into sp->upl; returns their count, 0 when
@@ -115,13 +127,12 @@ static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
         return -1;
     memcpy(sp->pj0, p, sizeof *p * (size_t)m);
     /* the ball about bc of radius br holds the blocker and every part of
-     * it that a clip keeps; where it lies beyond the snap (and the
-     * round-off of the distances, far below SIDE_MARGIN of the sizes) on
+     * it that a clip keeps; where it lies beyond the margin (header) on
      * one side of a plane, so does every vertex, and the distances need
      * not be taken: the clip would keep all, or nothing */
     const rad_vec3 bc = sp->bc[b];
     const double br = sp->br[b],
-                 margin = c->snap + SIDE_MARGIN * (3 * v3_maxabs(v3_sub(bc, x)) + br);
+                 margin = c->snap + OCC_BALL_MARGIN * (3 * v3_maxabs(v3_sub(bc, x)) + br);
     for (int k = 0; k < c->nt && m >= 3; k++) {
         const double dc = v3_dot(sp->upl[k], v3_sub(bc, x));
         if (dc - br > margin)
@@ -375,7 +386,6 @@ static void sort_intervals(double *iv, int n)
         iv[2 * j + 1] = t1;
     }
 }
-
 
 typedef struct sweep_key {
     double ulo;
@@ -674,14 +684,12 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     e[1] = v3_cross(v3_scale(c->tn, sense), e[0]);
     if (occ_grow_d(&sp->tuv, &sp->captuv, 2 * c->nt))
         return -1;
-    for (int k = 0; k < c->nt; k++) {
-        const rad_vec3 d = v3_sub(c->t[k], c->t[0]);
-        sp->tuv[2 * k] = v3_dot(d, e[0]);
-        sp->tuv[2 * k + 1] = v3_dot(d, e[1]);
-    }
     double tbox[4] = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     for (int k = 0; k < c->nt; k++) {
-        const double u = sp->tuv[2 * k], v = sp->tuv[2 * k + 1];
+        const rad_vec3 d = v3_sub(c->t[k], c->t[0]);
+        const double u = v3_dot(d, e[0]), v = v3_dot(d, e[1]);
+        sp->tuv[2 * k] = u;
+        sp->tuv[2 * k + 1] = v;
         tbox[0] = u < tbox[0] ? u : tbox[0];
         tbox[1] = u > tbox[1] ? u : tbox[1];
         tbox[2] = v < tbox[2] ? v : tbox[2];
