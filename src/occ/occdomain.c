@@ -338,6 +338,61 @@ static int split_events(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int
     return occ_split_three_edges(sp, c, o, no);
 }
 
+/* Keep the penumbra planes (sp->sn, sa, sfirst) for occ_cell_blockers
+ * in sp->pn, pa, pfirst, before the umbras' take their place. */
+static void keep_penumbras(occ_space *sp)
+{
+    occ_swap_v3(&sp->pn, &sp->cappn, &sp->sn, &sp->capsn);
+    occ_swap_v3(&sp->pa, &sp->cappa, &sp->sa, &sp->capsa);
+    int *f = sp->pfirst, cap = sp->cappf;
+    sp->pfirst = sp->sfirst;
+    sp->cappf = sp->capsf;
+    sp->sfirst = f;
+    sp->capsf = cap;
+}
+
+/* The blockers of the list sp->clist[lfirst .. lfirst + ln) (all c->nb
+ * when lfirst < 0) that may hide anything from some point of the convex cell p (nv
+ * vertices on the outer element), appended to sp->clist; returns their
+ * count, or -1.  Blocker b is left out when every vertex of the cell, and
+ * so every point of it, lies more than the snap outside one plane of
+ * b's penumbra region W_b (kept by occ_support_domain): from such a
+ * point no segment to the inner element passes through b, its shadow
+ * misses the inner element, and the union of the shadows (occunion.c)
+ * has the same boundary inside it without b.  So is a face of a closed
+ * mesh that every vertex lies more than the snap behind, when its
+ * points may leave it out (sp->bx: the exit rule of occclosed.c, which
+ * occunion.c applies point by point).  A cell of a piece cut from W_b
+ * keeps b; the others are mostly left out here once instead of at each
+ * of the cell's evaluation points. */
+int occ_cell_blockers(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int nv, int lfirst,
+                      int ln)
+{
+    const int n = lfirst >= 0 ? ln : c->nb;
+    if (occ_grow_i(&sp->clist, &sp->capclist, sp->nclist + n))
+        return -1;
+    const int *from = lfirst >= 0 ? sp->clist + lfirst : NULL;
+    int kept = 0;
+    for (int i = 0; i < n; i++) {
+        const int b = from ? from[i] : i;
+        int out = 0;
+        if (sp->bx[b]) {
+            out = 1;
+            for (int k = 0; k < nv && out; k++)
+                out = v3_dot(sp->bn[b], v3_sub(p[k], sp->bc[b])) < -c->snap;
+        }
+        for (int g = sp->pfirst[b]; g < sp->pfirst[b + 1] && !out; g++) {
+            out = 1;
+            for (int k = 0; k < nv && out; k++)
+                out = v3_dot(sp->pn[g], v3_sub(p[k], sp->pa[g])) < -c->snap;
+        }
+        if (!out)
+            sp->clist[sp->nclist + kept++] = b;
+    }
+    sp->nclist += kept;
+    return kept;
+}
+
 /* The domain of integration: the outer polygon o cut to the union of the
  * blockers' penumbras, as disjoint convex pieces (each in the W_b of one
  * blocker b and in no earlier W), then cut along every umbra, the pieces
@@ -372,6 +427,7 @@ int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int 
     for (int b = 0; b < c->nb && sp->da.np > 0; b++)
         if (cut_set(sp, c, b, OCC_SLIVERS_MERGE, &sp->dom))
             return -1;
+    keep_penumbras(sp);
     if (sp->dom.np == 0)
         return 0;
     if (all_region_planes(sp, c, UMBRA))

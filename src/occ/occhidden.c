@@ -102,7 +102,7 @@ static double touch_factor(const pair_ctx *c, const tri_node *t)
  * two stands in for the case where two rules agree by chance (seen: Q2
  * and Q3 within 4e-9 of each other and both 5e-8 off, on a triangle
  * whose Q4 was right). */
-static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
+static int node_rules(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     if (c->order >= 2) {
         double q1, q2, q3;
@@ -142,6 +142,31 @@ static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t)
     return 0;
 }
 
+/* Put node t's list of blockers in force for its evaluations (occunion.c)
+ * while `on`. */
+static void cell_list(occ_space *sp, const tri_node *t, int on)
+{
+    sp->cell_on = on;
+    sp->cell_first = t->lfirst;
+    sp->cell_n = t->ln;
+}
+
+/* node_rules on node t with its list of blockers: those of the list
+ * sp->clist[lfirst .. lfirst + ln) (all, when lfirst < 0) that may hide
+ * anything from its cell (occdomain.c, occ_cell_blockers). */
+static int node_eval(occ_space *sp, const pair_ctx *c, tri_node *t, int lfirst, int ln)
+{
+    const int n = occ_cell_blockers(sp, c, t->p, t->nv, lfirst, ln);
+    if (n < 0)
+        return -1;
+    t->lfirst = sp->nclist - n;
+    t->ln = n;
+    cell_list(sp, t, 1);
+    const int r = node_rules(sp, c, t);
+    cell_list(sp, t, 0);
+    return r;
+}
+
 /* The estimate of a rule whose last difference d did not fall to half
  * the one before it, d1: the order is not converging geometrically as it
  * does where hidden(x) is analytic on the cell, and d, or d1, says
@@ -176,7 +201,10 @@ static double slow_tail(double d, double d1)
 static int node_raise(occ_space *sp, const pair_ctx *c, tri_node *t)
 {
     double q;
-    if (occ_rule_order(sp, c, t->order + 1, t->p, t->nv, t->area, &q, &t->center))
+    cell_list(sp, t, 1);
+    const int r = occ_rule_order(sp, c, t->order + 1, t->p, t->nv, t->area, &q, &t->center);
+    cell_list(sp, t, 0);
+    if (r)
         return -1;
     double d = fabs(q - t->qc[0]);
     t->stalled = !(d <= 0.5 * t->dlast);
@@ -204,7 +232,7 @@ static int node_split(occ_space *sp, const pair_ctx *c, int k, int *nleaf)
         /* a triangle's midpoint children are quarters; a quadrilateral's
          * are not, unless it is a parallelogram */
         t->area = parent.nv == 4 ? poly_area(t->p, 4) : 0.25 * parent.area;
-        if (node_eval(sp, c, t))
+        if (node_eval(sp, c, t, parent.lfirst, parent.ln))
             return -1;
     }
     return 0;
@@ -222,6 +250,7 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
     const int nsets = c->direct ? 1 : 2;
     if (c->direct && sp->umb.np > 0)
         sp->any_hidden = 1;
+    sp->nclist = 0;
     if (occ_grow_node(&sp->node, &sp->capnode, sp->dom.nv + sp->umb.nv))
         return -1;
     for (int set = 0; set < nsets; set++)
@@ -243,7 +272,7 @@ static int first_leaves(occ_space *sp, const pair_ctx *c, int *nleaf)
                                                               v3_sub(t->p[2], t->p[0])));
                 if (!(t->area > 0))
                     continue;
-                if (node_eval(sp, c, t))
+                if (node_eval(sp, c, t, -1, 0))
                     return -1;
                 ++*nleaf;
             }
@@ -625,6 +654,8 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
                                                     : 0;
     c.arc_tol = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ARC_TOL_REFERENCE : OCC_ARC_TOL_DEFAULT;
     touch_points(sp, &c, co, no);
+    if (occ_union_frame(sp, &c))
+        return -1;
     int met;
     const double before = sp->evals;
     double budget = c.events == OCC_SPLIT_WEDGES ? OCC_WEDGE_BUDGET : 1;

@@ -121,6 +121,11 @@ void occ_space_free(occ_space *sp)
     free(sp->sa);
     free(sp->sfirst);
     free(sp->empty);
+    free(sp->tw);
+    free(sp->pn);
+    free(sp->pa);
+    free(sp->pfirst);
+    free(sp->clist);
     ps_free(&sp->da);
     ps_free(&sp->db);
     ps_free(&sp->dom);

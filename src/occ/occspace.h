@@ -208,6 +208,9 @@ typedef struct tri_node {
     int stalled;                /* raising the order did not help: split */
     double center;              /* hidden(x) at the point the odd orders
                                    share, or NaN (occrule.c) */
+    int lfirst, ln;             /* the blockers that may hide anything from
+                                   the cell: sp->clist[lfirst .. lfirst + ln)
+                                   (occdomain.c, occ_cell_blockers) */
 } tri_node;
 
 /* The leaves of the adaptive rule as a tournament tree (occleaves.c):
@@ -255,6 +258,18 @@ typedef struct occ_space {
     int capsf;
     int *empty;                 /* blocker b's umbra has no interior */
     int capem;
+    rad_vec3 *pn, *pa;          /* the penumbra planes of all blockers, kept
+                                   for the cells (occ_cell_blockers) */
+    int cappn, cappa;
+    int *pfirst;                /* blocker b's: [pfirst[b], pfirst[b+1]) */
+    int cappf;
+    int *clist;                 /* the cells' lists of blockers, one after
+                                   another (tri_node.lfirst, ln) */
+    int capclist, nclist;
+    int cell_on;                /* 1 while a cell is evaluated: only the
+                                   blockers clist[cell_first ..
+                                   cell_first + cell_n) are taken (occunion.c) */
+    int cell_first, cell_n;
     polyset da, db;             /* the support domain while it is built */
     polyset dom;                /* the support domain: disjoint convex pieces */
     rad_vec3 *pcen, *qcen;      /* bounding spheres of dom's (p) and db's (q)
@@ -300,6 +315,9 @@ typedef struct occ_space {
     int capuv, captuv;
     rad_vec3 *upl;              /* the pyramid from x over the inner element */
     int capupl;
+    rad_vec3 *tw;               /* the inner element widened (its edges: the
+                                   pyramid's), set once a pair (occunion.c) */
+    int captw;
     double *iv;                 /* an edge's covered intervals */
     int capiv;
     int *inner;                 /* each shadow edge: 1 when it is interior
@@ -362,6 +380,16 @@ typedef struct pair_ctx {
     rad_vec3 touch[OCC_TOUCH_MAX]; /* blocker vertices on the outer element
                                       (occhidden.c, touch_points) */
     int ntouch;
+    /* the inner plane as occunion.c sees it, set once a pair by
+     * occ_union_frame (its vertices in these axes: sp->tuv; widened
+     * about their mean: sp->tw) */
+    int uframe;                 /* 1 when set (0: not flat, or its first
+                                   edge has no length) */
+    rad_vec3 ue[2];             /* the plane's axes */
+    double usense;              /* +1 or -1: the inner element's turn about tn */
+    double tbox[4];             /* its box in those axes: ulo, uhi, vlo, vhi */
+    rad_vec3 tmean;             /* the mean of its vertices */
+    double tarea;               /* its area */
 } pair_ctx;
 
 
@@ -427,9 +455,12 @@ int occ_solid_cull(const rad_occ *o, occ_space *sp, int nb, rad_vec3 origin);
 
 /* occdomain.c: the domain of integration */
 int occ_support_domain(occ_space *sp, const pair_ctx *c, const rad_vec3 *o, int no);
+int occ_cell_blockers(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int nv, int lfirst,
+                      int ln);
 
 /* occunion.c: hidden(x) from the boundary of the union of the shadows
  * (1; 0 where it does not apply, -1) */
+int occ_union_frame(occ_space *sp, pair_ctx *c);
 int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out);
 
 /* occsplit.c: sp->dom's pieces split by a plane (their bounding spheres

@@ -45,9 +45,11 @@
  * and both be dropped, leaving a hole in the boundary.
  *
  * What cannot reach A_t is left out before any edge test: a blocker whose
- * ball (about its centroid, through its farthest vertex) lies wholly
- * outside the widened pyramid, and a shadow, or a shadow's edge, whose box
- * misses A_t's box.  Such a shadow lies outside A_t, and so do its edges
+ * penumbra misses the cell of the outer element that x belongs to (found
+ * once a cell: occdomain.c, occ_cell_blockers), a blocker whose ball
+ * (about its centroid, through its farthest vertex) lies wholly outside
+ * the widened pyramid, and a shadow, or a shadow's edge, whose box misses
+ * A_t's box.  Such a shadow lies outside A_t, and so do its edges
  * and the intervals it covers of other edges: it adds no segment to the
  * boundary and removes none, and the sum is the same.  The ball also
  * spares the clip's distances where it lies wholly inside a pyramid
@@ -101,10 +103,9 @@ static int pyramid(occ_space *sp, const pair_ctx *c, rad_vec3 x)
 {
     if (occ_grow_v3(&sp->upl, &sp->capupl, c->nt))
         return -1;
-    const rad_vec3 m = poly_mean(c->t, c->nt), mid = v3_sub(m, x);
+    const rad_vec3 mid = v3_sub(c->tmean, x);
     for (int k = 0; k < c->nt; k++) {
-        const rad_vec3 a = v3_add(m, v3_scale(v3_sub(c->t[k], m), OCC_UNION_WIDEN));
-        const rad_vec3 b = v3_add(m, v3_scale(v3_sub(c->t[(k + 1) % c->nt], m), OCC_UNION_WIDEN));
+        const rad_vec3 a = sp->tw[k], b = sp->tw[(k + 1) % c->nt];
         rad_vec3 nrm = v3_cross(v3_sub(a, x), v3_sub(b, x));
         const double len = v3_norm(nrm);
         if (!(len > 0))
@@ -211,7 +212,10 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
                    const rad_vec3 e[2], const double *tbox)
 {
     occ_ps_clear(&sp->sh);
-    for (int b = 0; b < c->nb; b++) {
+    const int *list = sp->cell_on ? sp->clist + sp->cell_first : NULL;
+    const int nlist = list ? sp->cell_n : c->nb;
+    for (int i = 0; i < nlist; i++) {
+        const int b = list ? list[i] : i;
         const double ahead = v3_dot(sp->bn[b], v3_sub(x, sp->bc[b]));
         if (fabs(ahead) <= c->snap)
             continue; /* seen edge on: hides nothing (occpoint.c, cone_planes) */
@@ -315,6 +319,12 @@ static inline int orient(const double *a, const double *b, const double *c, doub
     if (fabs(d) > 0x1p40 * bound) {
         *det = d; /* c is no vertex of a -> b: that would make d 0 */
         return d > 0 ? 1 : -1;
+    }
+    if ((c[0] == a[0] && c[1] == a[1]) || (c[0] == b[0] && c[1] == b[1])) {
+        *det = 0; /* a shared vertex (a mesh's neighbours), the most common
+                     case here: exactly 0 without the call (orient_exact's
+                     first test too) */
+        return 0;
     }
     return orient_exact(a, b, c, det);
 }
@@ -519,6 +529,10 @@ static int inner_edges(occ_space *sp)
         occ_grow_i(&sp->ehash, &sp->capehash, size))
         return -1;
     int *inner = sp->inner, *count = inner + ne, *mate = inner + 2 * ne, *owner = inner + 3 * ne;
+    if (sp->sh.np < 2) { /* no other shadow to share an edge with */
+        memset(inner, 0, sizeof *inner * (size_t)ne);
+        return 0;
+    }
     for (int i = 0; i < size; i++)
         sp->ehash[i] = -1;
     for (int a = 0; a < sp->sh.np; a++)
@@ -663,28 +677,35 @@ static double seg_area(const occ_space *sp, const pair_ctx *c, double sense)
     return 0.5 * s * sense;
 }
 
-int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
+/* What occ_hidden_union takes of the inner element at every point, set
+ * once for the pair c: the plane's axes (the first edge's direction, and
+ * up x it, so that the shadows, turned about up = sense tn, run
+ * counter-clockwise in (u, v)), the element's vertices in them (sp->tuv)
+ * and their box, its turn, mean and area, and its vertices widened
+ * OCC_UNION_WIDEN times about their mean (sp->tw: the pyramid's edges).
+ * 0, or -1 when memory ran out. */
+int occ_union_frame(occ_space *sp, pair_ctx *c)
 {
-    const double h = v3_dot(c->tn, v3_sub(c->t[0], x));
-    if (!c->flat || !(fabs(h) > c->snap))
+    c->uframe = 0;
+    if (!c->flat)
         return 0;
-    int r = pyramid(sp, c, x);
-    if (r <= 0)
-        return r;
-    const double sense = v3_dot(v3_newell(c->t, c->nt), c->tn) < 0 ? -1.0 : 1.0;
-    /* the plane's axes: the first edge's direction, and up x it, so that
-     * the shadows, turned about up = sense tn, run counter-clockwise in
-     * (u, v) */
-    rad_vec3 e[2];
+    if (occ_grow_d(&sp->tuv, &sp->captuv, 2 * c->nt) || occ_grow_v3(&sp->tw, &sp->captw, c->nt))
+        return -1;
+    c->tmean = poly_mean(c->t, c->nt);
+    for (int k = 0; k < c->nt; k++)
+        sp->tw[k] = v3_add(c->tmean, v3_scale(v3_sub(c->t[k], c->tmean), OCC_UNION_WIDEN));
+    c->tarea = poly_area(c->t, c->nt);
+    c->usense = v3_dot(v3_newell(c->t, c->nt), c->tn) < 0 ? -1.0 : 1.0;
+    rad_vec3 *e = c->ue;
     e[0] = v3_sub(c->t[1], c->t[0]);
     const double len = v3_norm(e[0]);
     if (!(len > 0))
         return 0;
     e[0] = v3_scale(e[0], 1.0 / len);
-    e[1] = v3_cross(v3_scale(c->tn, sense), e[0]);
-    if (occ_grow_d(&sp->tuv, &sp->captuv, 2 * c->nt))
-        return -1;
-    double tbox[4] = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+    e[1] = v3_cross(v3_scale(c->tn, c->usense), e[0]);
+    double *tbox = c->tbox;
+    tbox[0] = tbox[2] = HUGE_VAL;
+    tbox[1] = tbox[3] = -HUGE_VAL;
     for (int k = 0; k < c->nt; k++) {
         const rad_vec3 d = v3_sub(c->t[k], c->t[0]);
         const double u = v3_dot(d, e[0]), v = v3_dot(d, e[1]);
@@ -695,7 +716,20 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
         tbox[2] = v < tbox[2] ? v : tbox[2];
         tbox[3] = v > tbox[3] ? v : tbox[3];
     }
-    if ((r = shadows(sp, c, x, h, sense, e, tbox)) <= 0)
+    c->uframe = 1;
+    return 0;
+}
+
+int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
+{
+    const double h = v3_dot(c->tn, v3_sub(c->t[0], x));
+    if (!c->uframe || !(fabs(h) > c->snap))
+        return 0;
+    int r = pyramid(sp, c, x);
+    if (r <= 0)
+        return r;
+    const double sense = c->usense, *tbox = c->tbox;
+    if ((r = shadows(sp, c, x, h, sense, c->ue, tbox)) <= 0)
         return r;
     sp->nseg = 0;
     if (neighbours(sp) || inner_edges(sp))
@@ -723,7 +757,7 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     const double au = seg_area(sp, c, sense);
     if (au > c->sliver)
         sp->any_hidden = 1;
-    if (poly_area(c->t, c->nt) - au > c->sliver)
+    if (c->tarea - au > c->sliver)
         sp->any_visible = 1;
     *out = fabs(sum) / (2 * RAD_PI);
     return 1;
