@@ -653,6 +653,7 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
                                                     : 0;
     c.arc_tol = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ARC_TOL_REFERENCE : OCC_ARC_TOL_DEFAULT;
+    c.whole_near = o->accuracy == RAD_ACCURACY_CLASSIC;
     touch_points(sp, &c, co, no);
     if (occ_union_frame(sp, &c))
         return -1;

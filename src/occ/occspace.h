@@ -390,6 +390,9 @@ typedef struct pair_ctx {
     double tbox[4];             /* its box in those axes: ulo, uhi, vlo, vhi */
     rad_vec3 tmean;             /* the mean of its vertices */
     double tarea;               /* its area */
+    int whole_near;             /* leave a blocker that the pyramid crosses
+                                   whole when it is not near x's level
+                                   (classic mode; occunion.c, OCC_UNION_NEAR) */
 } pair_ctx;
 
 
