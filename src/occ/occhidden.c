@@ -21,8 +21,8 @@
  * unoccluded one.
  *
  * The integral runs over the domain of occdomain.c (the outer element's
- * part of the blockers' penumbras, cut along their umbras and, but in
- * classic mode, along the event planes: orient_integral): each piece is
+ * part of the blockers' penumbras, cut, but in classic mode, along their
+ * umbras and the event planes: orient_integral): each piece is
  * a fan of cells (quadrilaterals and at most one triangle; triangles
  * alone in classic mode), hidden(x) is integrated on each by the rules of
  * occrule.c, and the cell with the largest estimate has its rule's order

@@ -31,10 +31,11 @@
  * of element i), so that the points the cuts construct keep the digits
  * of the pair, not those of its distance from the origin (local_frame).
  *
- * Accuracy modes: classic evaluates the pieces once (the 3-point rule on
- * the four midpoint children of each fan triangle, or on a small triangle
- * itself: OCC_CLASSIC_ONCE) and stops.  Default and reference
- * cut the pieces along the event planes of each blocker (occdomain.c,
+ * Accuracy modes: classic evaluates the penumbras' pieces once, uncut by
+ * the umbras (occdomain.c; the 3-point rule on the four midpoint children
+ * of each fan triangle, or on a small triangle itself: OCC_CLASSIC_ONCE)
+ * and stops.  Default and reference cut the pieces along the umbras and
+ * along the event planes of each blocker (occdomain.c,
  * split_events; in default mode only where the events happen
  * (occevent.c) for a pair with few blockers, and the events of two
  * blockers only where they happen for every pair, when the pair meets
