@@ -69,7 +69,15 @@
  * box likewise (RMS errors up by at most 12%, on squares 6, largest by at
  * most 0.4%).  At 1/32 the squares' largest error doubled. */
 #define OCC_CLASSIC_ONCE (1.0 / 64)
-#define OCC_ORDER_DEFAULT 6
+/* Default mode raises a cell's order up to 8 before it must split it: a
+ * cell whose rule still converges spends about 64 evaluations on order 8
+ * where its four children would start at 52 and go on.  Against a limit
+ * of 6, measured by the fill's count of evaluations: torus 60
+ * (bench/scenes.py) 1,985,441 -> 1,719,305 (-13%), the cube on a table
+ * -6.7%, torus 250 -3.6% (with 28 entries left above the promise by
+ * their own estimates instead of 34), the Cornell box -0.5%, squares 6
+ * the same; every entry within 6e-9 of itself. */
+#define OCC_ORDER_DEFAULT 8
 #define OCC_ORDER_REFERENCE 10
 #define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
 #define OCC_TOUCH_MAX 8   /* blocker vertices on the outer element kept (touch_points) */
