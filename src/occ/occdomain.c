@@ -354,9 +354,9 @@ static void keep_penumbras(occ_space *sp)
 }
 
 /* The blockers of the list sp->clist[lfirst .. lfirst + ln) (all c->nb
- * when lfirst < 0) that may hide anything from some point of the convex cell p (nv
- * vertices on the outer element), appended to sp->clist; returns their
- * count, or -1.  Blocker b is left out when every vertex of the cell, and
+ * when lfirst < 0) that may hide anything from some point of the convex
+ * cell p (nv vertices on the outer element), appended to sp->clist;
+ * returns their count, or -1.  Blocker b is left out when every vertex of the cell, and
  * so every point of it, lies more than the snap outside one plane of
  * b's penumbra region W_b (kept by occ_support_domain): from such a
  * point no segment to the inner element passes through b, its shadow
