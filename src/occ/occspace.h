@@ -70,8 +70,10 @@
  * most 0.4%).  At 1/32 the squares' largest error doubled. */
 #define OCC_CLASSIC_ONCE (1.0 / 64)
 /* Default mode raises a cell's order up to 8 before it must split it: a
- * cell whose rule still converges spends about 64 evaluations on order 8
- * where its four children would start at 52 and go on.  Against a limit
+ * cell whose rule still converges at order 6 spends 112 evaluations more
+ * on orders 7 and 8 (48 and 64: the odd orders share their centre),
+ * where its four children would start at 52 and most go on to be raised
+ * or split again.  Against a limit
  * of 6, measured by the fill's count of evaluations: torus 60
  * (bench/scenes.py) 1,985,441 -> 1,719,305 (-13%), the cube on a table
  * -6.7%, torus 250 -3.6% (with 28 entries left above the promise by
@@ -373,7 +375,8 @@ typedef struct pair_ctx {
     int nb;                     /* blockers in sp->blkc, sp->bn, sp->bc, sp->br */
     double snap, sliver;        /* distance and area tolerances */
     int events;                 /* split the domain along the event planes:
-                                   0 not at all (classic), OCC_SPLIT_ALL along
+                                   0 not at all (classic, which leaves the
+                                   umbras uncut too), OCC_SPLIT_ALL along
                                    each plane, OCC_SPLIT_WEDGES only where its
                                    event happens (occevent.c) */
     int pair_wedges;            /* cut the planes of two blockers' events

@@ -15,7 +15,7 @@
  * S_P is finite, and the hidden part is A_t intersected with the union U
  * of the S_P.  In classic mode (pair_ctx.whole_near) a blocker that a
  * pyramid plane crosses is left whole when every vertex lies at least
- * OCC_UNION_NEAR of the way from x's level to that plane: its projection
+ * OCC_UNION_NEAR of the way from x's level to the inner plane: its projection
  * y = x + (p - x) h / (tn . (p - x)), h = tn . (t0 - x), is then finite,
  * at most 1 / OCC_UNION_NEAR times as far from x as the blocker, and what
  * the clip would cut off lies outside the pyramid, so outside A_t.  Its

@@ -6,11 +6,14 @@
  *
  * A unit square (the inner element) at z = 0 faces down to a square of
  * side 4 at z = -3 (the outer element); between them stand 12 small
- * triangles at random heights and places, tilted at random.  For 200
- * random cells (triangles inside the outer square, large and small) the
- * cell's list is taken, and at random points of the cell hidden(x) is
- * computed twice by occunion.c: with every blocker, and with the cell's
- * list alone.  The union of the shadows with or without a shadow that
+ * triangles at random heights and places, tilted at random, half of
+ * them facing up and half down; four (two each way) may be left out by
+ * points behind them (the exit rule of a closed mesh's faces, sp->bx).  For 200 random cells (triangles about random
+ * points of the outer square, of side 0.05 to 2, some reaching past it)
+ * the cell's list is taken, and each of its four midpoint children's
+ * from it, as node_split does; at random points of the cell and of each
+ * child hidden(x) is computed twice by occunion.c: with every blocker,
+ * and with the cell's or the child's list alone.  The union of the shadows with or without a shadow that
  * misses the inner element has the same boundary inside it, so the two
  * must agree to round-off (3e-15 of F(x -> inner element), a few ulps of
  * each term of the contour sum).  The check could fail: a list that left
@@ -52,6 +55,11 @@ static int blockers(occ_space *sp, unsigned *seed)
         for (int k = 0; k < 3; k++)
             t[k] = v3_add(o, v3(0.3 * cos(2.1 * k + uniform(seed)),
                                 0.3 * sin(2.1 * k + uniform(seed)), 0.2 * (uniform(seed) - 0.5)));
+        if (b % 2) { /* every other one turned to face the outer element */
+            const rad_vec3 w = t[1];
+            t[1] = t[2];
+            t[2] = w;
+        }
         if (occ_ps_push(&sp->blkc, t, 3))
             return -1;
         const rad_vec3 n = v3_newell(t, 3);
@@ -61,7 +69,7 @@ static int blockers(occ_space *sp, unsigned *seed)
         for (int k = 0; k < 3; k++)
             r = fmax(r, v3_norm(v3_sub(t[k], sp->bc[b])));
         sp->br[b] = r;
-        sp->bx[b] = 0;
+        sp->bx[b] = b % 3 == 0; /* 0, 3, 6, 9: the exit rule applies */
     }
     return 0;
 }
@@ -114,7 +122,7 @@ int main(void)
     if (occ_union_frame(&sp, &c) || occ_support_domain(&sp, &c, outer, 4))
         return 1;
 
-    int kept = 0, left = 0, points = 0, hiding = 0;
+    int kept = 0, left = 0, points = 0, hiding = 0, narrower = 0;
     double worst = 0;
     for (int cell = 0; cell < CELLS; cell++) {
         /* a cell about a random point, of side 0.05 to 2 */
@@ -129,30 +137,45 @@ int main(void)
             return 1;
         kept += n;
         left += NB - n;
-        for (int l = 0; l < POINTS; l++) {
-            const rad_vec3 x = inside(p, &seed);
-            double all, listed;
-            sp.cell_on = 0;
-            if (occ_hidden_union(&sp, &c, x, &all) != 1)
-                return 1;
-            sp.cell_on = 1;
-            sp.cell_first = 0;
-            sp.cell_n = n;
-            if (occ_hidden_union(&sp, &c, x, &listed) != 1)
-                return 1;
-            sp.cell_on = 0;
-            const double whole = point_polygon(x, c.nx, inner, 4);
-            worst = fmax(worst, fabs(listed - all) / whole);
-            hiding += all > 1e-6 * whole;
-            points++;
+        rad_vec3 ch[4][4];
+        occ_cell_children(p, 3, ch);
+        for (int part = -1; part < 4; part++) {
+            const rad_vec3 *q = part < 0 ? p : ch[part];
+            int first = 0, count = n;
+            if (part >= 0) { /* the child's list, from the cell's */
+                count = occ_cell_blockers(&sp, &c, q, 3, 0, n);
+                if (count < 0)
+                    return 1;
+                first = sp.nclist - count;
+                narrower += count < n;
+            }
+            for (int l = 0; l < POINTS; l++) {
+                const rad_vec3 x = inside(q, &seed);
+                double all, listed;
+                sp.cell_on = 0;
+                if (occ_hidden_union(&sp, &c, x, &all) != 1)
+                    return 1;
+                sp.cell_on = 1;
+                sp.cell_first = first;
+                sp.cell_n = count;
+                if (occ_hidden_union(&sp, &c, x, &listed) != 1)
+                    return 1;
+                sp.cell_on = 0;
+                const double whole = point_polygon(x, c.nx, inner, 4);
+                worst = fmax(worst, fabs(listed - all) / whole);
+                hiding += all > 1e-6 * whole;
+                points++;
+            }
         }
     }
     tap_ok(worst <= 3e-15,
-           "%d points of %d cells: hidden(x) with the cell's blockers within %.1e of F(x -> inner) "
-           "of hidden(x) with all (tol 3e-15)",
+           "%d points of %d cells and their children: hidden(x) with the cell's blockers "
+           "within %.1e of F(x -> inner) of hidden(x) with all (tol 3e-15)",
            points, CELLS, worst);
     tap_ok(left > kept && kept > 0,
            "the cells' lists leave blockers out (%d) and keep some (%d)", left, kept);
+    tap_ok(narrower > 0, "children's lists narrower than their cell's: %d of %d", narrower,
+           4 * CELLS);
     tap_ok(hiding > points / 10, "something is hidden at %d of the %d points", hiding, points);
     occ_space_free(&sp);
     return tap_done();
