@@ -51,9 +51,10 @@
  * an edge of P (the region on P's side) and by P's plane (the region away
  * from y_k).  When T reaches P's plane the umbra has no interior.  In
  * default and reference modes the pieces of the domain are cut along the
- * umbras too: hidden(x) then has no kink across a piece there, a thin strip that still sees past a
- * blocker's silhouette becomes a piece of its own with its own evaluation
- * points, and a piece inside an umbra is known to be fully hidden. */
+ * umbras too: hidden(x) then has no kink across a piece there, a thin
+ * strip that still sees past a blocker's silhouette becomes a piece of
+ * its own with its own evaluation points, and a piece inside an umbra is
+ * known to be fully hidden. */
 
 /* Append plane (nrm, a) with the region on the side where nrm . (q - a)
  * >= 0 if it separates p (that side) from t (the other side). */
@@ -356,12 +357,12 @@ static void keep_penumbras(occ_space *sp)
 /* The blockers of the list sp->clist[lfirst .. lfirst + ln) (all c->nb
  * when lfirst < 0) that may hide anything from some point of the convex
  * cell p (nv vertices on the outer element), appended to sp->clist;
- * returns their count, or -1.  Blocker b is left out when every vertex of the cell, and
- * so every point of it, lies more than the snap outside one plane of
- * b's penumbra region W_b (kept by occ_support_domain): from such a
- * point no segment to the inner element passes through b, its shadow
- * misses the inner element, and the union of the shadows (occunion.c)
- * has the same boundary inside it without b.  So is a face of a closed
+ * returns their count, or -1.  Blocker b is left out when every vertex
+ * of the cell, and so every point of it, lies more than the snap outside
+ * one plane of b's penumbra region W_b (kept by occ_support_domain):
+ * from such a point no segment to the inner element passes through b,
+ * its shadow misses the inner element, and the union of the shadows
+ * (occunion.c) has the same boundary inside it without b.  So is a face of a closed
  * mesh that every vertex lies more than the snap behind, when its
  * points may leave it out (sp->bx: the exit rule of occclosed.c, which
  * occunion.c applies point by point).  A cell of a piece cut from W_b

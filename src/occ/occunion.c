@@ -136,10 +136,9 @@ static int pyramid(occ_space *sp, const pair_ctx *c, rad_vec3 x)
 }
 
 /* Do the m vertices p all lie at least OCC_UNION_NEAR of the way from
- * x's level to the inner plane? */
-static int beyond_near(const pair_ctx *c, const rad_vec3 *p, int m, rad_vec3 x)
+ * x's level to the inner plane (h = tn . (t0 - x))? */
+static int beyond_near(const pair_ctx *c, const rad_vec3 *p, int m, rad_vec3 x, double h)
 {
-    const double h = v3_dot(c->tn, v3_sub(c->t[0], x));
     for (int l = 0; l < m; l++) {
         const double dk = v3_dot(c->tn, v3_sub(p[l], x));
         if (!(dk * h > 0 && fabs(dk) >= OCC_UNION_NEAR * fabs(h)))
@@ -152,7 +151,7 @@ static int beyond_near(const pair_ctx *c, const rad_vec3 *p, int m, rad_vec3 x)
  * c->whole_near all of it when it reaches the pyramid's inside and lies
  * wholly beyond OCC_UNION_NEAR of the way to the inner plane; returns
  * its vertex count (0: none), -1. */
-static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
+static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x, double h)
 {
     const rad_vec3 *p = sp->blkc.v + sp->blkc.first[b];
     int m = sp->blkc.first[b + 1] - sp->blkc.first[b];
@@ -176,7 +175,7 @@ static int in_pyramid(occ_space *sp, const pair_ctx *c, int b, rad_vec3 x)
         if (dc + br < -margin)
             return 0;
         if (whole < 0)
-            whole = beyond_near(c, p, m, x);
+            whole = beyond_near(c, p, m, x, h);
         if (whole)
             continue;
         double lo, hi;
@@ -198,11 +197,12 @@ static inline int boxes_meet(const double *p, const double *q)
     return p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3];
 }
 
-/* Shadow s's vertices (sp->pj0, m of them) in the plane's axes e, from
- * the inner element's first vertex, into sp->uv from f, and their box
- * into sp->box + 4 s; 0, -1. */
-static int shadow_uv(occ_space *sp, const pair_ctx *c, const rad_vec3 e[2], int s, int f, int m)
+/* Shadow s's vertices (sp->pj0, m of them) in the plane's axes c->ue,
+ * from the inner element's first vertex, into sp->uv from f, and their
+ * box into sp->box + 4 s; 0, -1. */
+static int shadow_uv(occ_space *sp, const pair_ctx *c, int s, int f, int m)
 {
+    const rad_vec3 *e = c->ue;
     if (occ_grow_d(&sp->uv, &sp->capuv, 2 * (f + m)) ||
         occ_grow_d(&sp->box, &sp->capbox, 4 * (s + 1)))
         return -1;
@@ -240,15 +240,16 @@ static void shadow_reverse(occ_space *sp, int f, int m)
     }
 }
 
-/* The shadows of the blockers on the inner plane into sp->sh, each turned
- * like the inner element (sense: +1 or -1 against tn), with their bounding
- * boxes; returns 1, 0 when some blocker touches x (the caller then cuts by
- * cones), -1.  A shadow whose box misses the inner element's (tbox) is
- * left out: it hides nothing of the inner element, its edges lie outside
- * it, and so do the intervals it covers of other edges, so it adds no
- * segment to the boundary and removes none. */
-static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, double sense,
-                   const rad_vec3 e[2], const double *tbox)
+/* The shadows of the blockers from x (h = tn . (t0 - x)) on the inner
+ * plane into sp->sh, each turned like the inner element (c->usense
+ * against tn), with their bounding boxes; returns 1, 0 when some blocker
+ * touches x (the caller then cuts by cones), -1.  Only the blockers of
+ * the cell being evaluated are taken (sp->cell_on: occdomain.c,
+ * occ_cell_blockers).  A shadow whose box misses the inner element's
+ * (c->tbox) is left out: it hides nothing of the inner element, its
+ * edges lie outside it, and so do the intervals it covers of other edges,
+ * so it adds no segment to the boundary and removes none. */
+static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h)
 {
     occ_ps_clear(&sp->sh);
     const int *list = sp->cell_on ? sp->clist + sp->cell_first : NULL;
@@ -260,7 +261,7 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
             continue; /* seen edge on: hides nothing (occpoint.c, cone_planes) */
         if (ahead < 0 && sp->bx[b])
             continue; /* a closed mesh's face x is behind: an exit (header) */
-        int m = in_pyramid(sp, c, b, x);
+        int m = in_pyramid(sp, c, b, x, h);
         if (m <= 0) {
             if (m < 0)
                 return -1;
@@ -274,12 +275,12 @@ static int shadows(occ_space *sp, const pair_ctx *c, rad_vec3 x, double h, doubl
             sp->pj0[k] = v3_add(x, v3_scale(r, h / dk));
         }
         const int s = sp->sh.np, f = sp->sh.nv;
-        if (shadow_uv(sp, c, e, s, f, m))
+        if (shadow_uv(sp, c, s, f, m))
             return -1;
-        if (!boxes_meet(sp->box + 4 * s, tbox))
+        if (!boxes_meet(sp->box + 4 * s, c->tbox))
             continue;
         const rad_vec3 nw = v3_newell(sp->pj0, m); /* poly_area's, taken once */
-        const double turn = v3_dot(nw, c->tn) * sense;
+        const double turn = v3_dot(nw, c->tn) * c->usense;
         if (!(0.5 * v3_norm(nw) > c->sliver))
             continue;
         if (turn < 0)
@@ -564,14 +565,15 @@ static int inner_edges(occ_space *sp)
         size *= 2;
     /* inner: [0, E) the answer, [E, 2E) how often each edge's first copy
      * was found, [2E, 3E) its second copy, [3E, 4E) each edge's shadow */
-    if (occ_grow_i(&sp->inner, &sp->capinner, 4 * ne) ||
-        occ_grow_i(&sp->ehash, &sp->capehash, size))
+    if (occ_grow_i(&sp->inner, &sp->capinner, 4 * ne))
         return -1;
     int *inner = sp->inner, *count = inner + ne, *mate = inner + 2 * ne, *owner = inner + 3 * ne;
     if (sp->sh.np < 2) { /* no other shadow to share an edge with */
         memset(inner, 0, sizeof *inner * (size_t)ne);
         return 0;
     }
+    if (occ_grow_i(&sp->ehash, &sp->capehash, size))
+        return -1;
     for (int i = 0; i < size; i++)
         sp->ehash[i] = -1;
     for (int a = 0; a < sp->sh.np; a++)
@@ -706,14 +708,15 @@ static long double seg_sum_long(const occ_space *sp, rad_vec3 x, rad_vec3 nrm)
 }
 
 /* The union's area, from its boundary: half the sum of tn . (a x b) over
- * its segments, taken about the inner element's first vertex. */
-static double seg_area(const occ_space *sp, const pair_ctx *c, double sense)
+ * its segments, taken about the inner element's first vertex, turned by
+ * c->usense. */
+static double seg_area(const occ_space *sp, const pair_ctx *c)
 {
     double s = 0;
     for (int k = 0; k < sp->nseg; k++)
         s += v3_dot(c->tn, v3_cross(v3_sub(sp->seg[2 * k], c->t[0]),
                                     v3_sub(sp->seg[2 * k + 1], c->t[0])));
-    return 0.5 * s * sense;
+    return 0.5 * s * c->usense;
 }
 
 /* What occ_hidden_union takes of the inner element at every point, set
@@ -767,8 +770,8 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     int r = pyramid(sp, c, x);
     if (r <= 0)
         return r;
-    const double sense = c->usense, *tbox = c->tbox;
-    if ((r = shadows(sp, c, x, h, sense, c->ue, tbox)) <= 0)
+    const double *tbox = c->tbox;
+    if ((r = shadows(sp, c, x, h)) <= 0)
         return r;
     sp->nseg = 0;
     if (neighbours(sp) || inner_edges(sp))
@@ -793,7 +796,7 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     double size = 0, sum = seg_sum(sp, x, c->nx, &size);
     if (OCC_NOISE_EPS * DBL_EPSILON * size > 2 * RAD_PI * sp->noise_tol)
         sum = (double)(seg_sum_long(sp, x, c->nx) / (2 * RAD_PI_LONG)) * (2 * RAD_PI);
-    const double au = seg_area(sp, c, sense);
+    const double au = seg_area(sp, c);
     if (au > c->sliver)
         sp->any_hidden = 1;
     if (c->tarea - au > c->sliver)
