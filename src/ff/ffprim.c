@@ -180,28 +180,62 @@ double radi_ff_promise(rad_accuracy a)
     return a == RAD_ACCURACY_REFERENCE ? 1e-9 : a == RAD_ACCURACY_DEFAULT ? 1e-6 : NAN;
 }
 
+/* Counts and extremes of the entries i0 <= i < i1 of one column. */
+typedef struct fill_tally {
+    double lo, hi;
+    size_t neg, above, nonzero;
+} fill_tally;
+
+static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
+{
+    double lo = t->lo, hi = t->hi;
+    size_t neg = 0, above = 0, nonzero = 0;
+    for (size_t i = i0; i < i1; i++) {
+        const double f = col[i];
+        neg += f < 0;
+        above += f > 1;
+        nonzero += f != 0;
+        lo = f < lo ? f : lo; /* as fmin: a NaN is passed over */
+        hi = f > hi ? f : hi;
+    }
+    t->lo = lo;
+    t->hi = hi;
+    t->neg += neg;
+    t->above += above;
+    t->nonzero += nonzero;
+}
+
+/* One pass down F's columns (F is column-major) for the off-diagonal
+ * entries' counts and extremes; each row's sum is taken over j in
+ * ascending order, in a second pass that adds whole columns to the n sums
+ * when memory allows and walks each row across the columns otherwise:
+ * the same order, so the same sums bit for bit. */
 void radi_ff_fill_stats(const double *F, int n, rad_ff_stats *st)
 {
+    const size_t nn = n > 0 ? (size_t)n : 0;
+    fill_tally t = {HUGE_VAL, -HUGE_VAL, 0, 0, 0};
     st->pairs = 0.5 * (double)n * (n - 1);
-    st->min_value = HUGE_VAL;
-    st->max_value = -HUGE_VAL;
-    for (size_t k = 0; k < (size_t)n * n; k++) {
-        double f = F[k];
-        if (k % ((size_t)n + 1) == 0)
-            continue; /* diagonal */
-        st->negative += f < 0;
-        st->above_one += f > 1;
-        st->min_value = fmin(st->min_value, f);
-        st->max_value = fmax(st->max_value, f);
-        if (f != 0)
-            st->integrated += 0.5;
+    for (size_t j = 0; j < nn; j++) {
+        tally_run(F + j * nn, 0, j, &t);
+        tally_run(F + j * nn, j + 1, nn, &t);
     }
-    if (n < 2)
-        st->min_value = st->max_value = 0;
-    for (int i = 0; i < n; i++) { /* rows: F is column-major */
+    st->negative += (long)t.neg;
+    st->above_one += (long)t.above;
+    st->integrated += 0.5 * (double)t.nonzero;
+    st->min_value = n < 2 ? 0 : t.lo;
+    st->max_value = n < 2 ? 0 : t.hi;
+    double *row = calloc(nn ? nn : 1, sizeof *row);
+    for (size_t j = 0; row && j < nn; j++)
+        for (size_t i = 0; i < nn; i++)
+            row[i] += F[i + j * nn];
+    for (size_t i = 0; i < nn; i++) {
         double r = 0;
-        for (int j = 0; j < n; j++)
-            r += F[(size_t)i + (size_t)j * n];
+        if (row)
+            r = row[i];
+        else
+            for (size_t j = 0; j < nn; j++)
+                r += F[i + j * nn];
         st->rows_above_one += r > 1 + RAD_ROW_SUM_SLACK;
     }
+    free(row);
 }

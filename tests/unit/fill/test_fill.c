@@ -64,6 +64,9 @@
  *     inside, and radi_ff_pairs' two entries of a list of pairs, memcmp
  *     against the dense F; a whole-matrix block's row sums (the tally)
  *     equal the dense rows' to round-off;
+ *   - the statistics of a filled F (radi_ff_fill_stats) on a 3 x 3 matrix
+ *     written here, whose counts are read off by eye: the diagonal, which
+ *     would change every count, left out of all but the row sums;
  *   - the dense fill itself is the same doubles on 1 thread and on 2 (each
  *     pair's value does not depend on which thread computes it);
  *   - per-surface factors (persurface.h): radi_ff_surfaces' F_SK equals
@@ -103,6 +106,7 @@
 #include "fill/ffpairs.h"
 #include "fill/ffrow.h"
 #include "fill/persurface.h"
+#include "ff/formfactor.h"
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
 #include "radiosity/mesh.h"
@@ -754,8 +758,27 @@ static void test_visibility_setup(void)
     rad_mesh_free(&m);
 }
 
+/* Rows (5, -1/4, 1/2), (3/2, -3, 0), (3/10, 1/5, 7), stored by columns.
+ * Off the diagonal: one entry below 0 (-1/4, the smallest), one above 1
+ * (3/2, the largest), five nonzero (2.5 pairs); rows 0 and 2 sum above 1
+ * with their diagonals (5.25, 7.5), row 1 does not (-1.5). */
+static void test_stats(void)
+{
+    const double F[9] = {5, 1.5, 0.3, -0.25, -3, 0.2, 0.5, 0, 7};
+    rad_ff_stats st;
+    memset(&st, 0, sizeof st);
+    radi_ff_fill_stats(F, 3, &st);
+    tap_ok(st.pairs == 3 && st.negative == 1 && st.above_one == 1 && st.min_value == -0.25 &&
+               st.max_value == 1.5 && st.integrated == 2.5 && st.rows_above_one == 2,
+           "a 3 x 3 matrix's statistics: %g pairs, %ld below 0, %ld above 1, in [%g, %g], %g "
+           "integrated, %ld rows above 1",
+           st.pairs, st.negative, st.above_one, st.min_value, st.max_value, st.integrated,
+           st.rows_above_one);
+}
+
 int main(void)
 {
+    test_stats();
     rad_mesh m;
     test_closed_forms();
     if (build_cube(&m) != 0) {
