@@ -319,7 +319,7 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
 {
     const int na = a->nedges, nb = b->nedges;
     int m = 0, q = *pos / na, p = *pos - q * na;
-    double sum = 0;
+    double sum = 0, skipped = skip ? *skip : 0; /* (in a register) */
     while (q < nb && m < BATCH) {
         const rad_ff_edge *ep = &a->edges[p], *eq = &b->edges[q];
         const double dot = v3_dot(ep->e, eq->e);
@@ -327,7 +327,7 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
          * ones left out are bounded (see the top of the file) */
         const int kept = fabs(dot) >= 1e-14;
         if (skip && !kept)
-            *skip += fabs(dot) * ep->len * eq->len;
+            skipped += fabs(dot) * ep->len * eq->len;
         if (kept && !(col && fabs(dot) > 1 - 1e-12 && colinear_closed(ep, eq, shift, dot, col))) {
             const rad_vec3 w = v3_sub(ep->mid, v3_add(eq->mid, shift));
             bt->wx[m] = w.x;
@@ -350,6 +350,8 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
     }
     *pos = q * na + p;
     *acf += sum;
+    if (skip)
+        *skip = skipped;
     const int m4 = (m + 3) & ~3;
     for (int k = m; k < m4; k++) {
         double *const arrays[9] = {bt->wx, bt->wy, bt->wz, bt->px, bt->py,
