@@ -535,12 +535,19 @@ for body, ctype, want, what in (
         ('{"moves": "move box 1 0 0"}', "application/json", b"JSON body", "another key"),
         ('["move box", 3]', "application/json", b"JSON body", "a number in the array"),
         ('"move box \\ud800 1 0 0"', "application/json", b"JSON body", "a lone surrogate"),
-        ("# nothing but a comment\n\n", "text/plain", b"no change", "a comment alone")):
+        ("# nothing but a comment\n\n", "text/plain", b"no change", "a comment alone"),
+        # parsed, but no element of the moved box has a double's area:
+        # refused before it runs, rather than failing the frame and all
+        # frames after it (it did, and ended the session's changes)
+        ("move box 0 0 0\nmove box 1e300 0 0\n", "text/plain",
+         b"request:2: frame 7: after its changes, ", "a move out of double's range")):
     status, data = cl.req("POST", "/api/change", body, {"Content-Type": ctype})
     ok(status == 400 and want in data, "%s: %d %s" % (what, status, data.decode()))
 status, data = cl.req("POST", "/api/change?x=1", "move box 0 0 0")
 ok(status == 400, "a parameter on /api/change: %d %s" % (status, data.decode()))
-ok(cl.json("/api/state")["frames"] == 6, "no refused change was queued")
+st = cl.json("/api/state")
+ok(st["frames"] == 6 and st["changes"] == "ready",
+   "no refused change was queued; the session still takes changes (%s)" % st["changes"])
 el6 = cl.json("/api/elements")["element_b"]
 cl.control("action=stop")
 ok(p.wait(60) == 0, "stopped")

@@ -11,7 +11,9 @@
  * with the request after it (rad_changes_parse), so that what the parser
  * follows from frame to frame (whether an object is in the scene) is
  * checked as the frames will run; its line numbers are then those of the
- * request's own text.
+ * request's own text.  Each new frame's scene is then meshed as the
+ * engine will mesh it (mesh_frames), so that a frame that could not even
+ * be meshed is refused with the request rather than failing when it runs.
  *
  * Undo is a frame of the inverse changes in the reverse order, written
  * from the scene as it is just before the frame runs (inverse_frame):
@@ -94,6 +96,58 @@ static int count_lines(const char *s, size_t n)
     return k;
 }
 
+/* The line to blame for a frame the mesh refuses: its last move or
+ * rotate, else its first change (as the animation blames it). */
+static int frame_blame(const rad_changes *ch, int frame)
+{
+    int line = 0;
+    for (int k = 0; k < ch->nchanges; k++) {
+        const rad_change *c = &ch->changes[k];
+        if (c->frame == frame &&
+            (!line || c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE))
+            line = c->line;
+    }
+    return line;
+}
+
+/* The frames after `from` meshed as the animation meshes them: every
+ * surface, absent or not, after the frames before.  A move the parser
+ * takes can still carry an element out of double's range (by 1e300); the
+ * frame would fail, and with it every frame after it, so the request is
+ * refused here instead.  0, or -1 with the reason (its line in the
+ * whole text) in msg. */
+static int mesh_frames(const rad_scene *scene, const rad_changes *all, int from, char *msg,
+                       size_t cap)
+{
+    rad_scene sc;
+    rad_error err;
+    unsigned char *every = malloc((size_t)scene->nobjects + 1);
+    if (!every || (memset(every, 1, (size_t)scene->nobjects + 1),
+                   rad_scene_present_copy(scene, every, &sc, &err) != RAD_OK)) {
+        free(every);
+        return snprintf(msg, cap, "out of memory"), -1;
+    }
+    free(every);
+    for (int o = 0; o < scene->nobjects; o++)
+        sc.objects[o].absent = scene->objects[o].absent;
+    int bad = 0;
+    for (int f = 1; !bad && f <= all->nframes; f++) {
+        rad_changes_apply(&sc, all, f, NULL);
+        rad_mesh m;
+        if (f <= from)
+            continue;
+        if (rad_mesh_build(&m, &sc, &err) != RAD_OK) {
+            bad = 1;
+            snprintf(msg, cap, "%s:%d: frame %d: after its changes, %s", all->filename,
+                     frame_blame(all, f), f, err.message);
+        } else {
+            rad_mesh_free(&m);
+        }
+    }
+    rad_scene_free(&sc);
+    return bad ? -1 : 0;
+}
+
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
                        const char *req, size_t rlen, int empty_ok, int *frames, char *why,
                        size_t cap)
@@ -122,13 +176,17 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
     } else {
         *frames = all.nframes - before.nframes;
         const int added = all.nchanges - before.nchanges;
-        rad_changes_free(&before);
-        rad_changes_free(&all);
+        char msg[RAD_ERRMSG_MAX + 64];
         if (*frames < 1 || (!empty_ok && added == 0)) {
             snprintf(why, cap, "request: no change (a change file's lines: move, rotate, "
                                "remove, add, material, frame)");
             ok = 0;
+        } else if (mesh_frames(scene, &all, before.nframes, msg, sizeof msg) != 0) {
+            shift_line(msg, "request", count_lines(history, hlen) + (hk ? 1 : 0), why, cap);
+            ok = 0;
         }
+        rad_changes_free(&before);
+        rad_changes_free(&all);
     }
     free(text);
     return ok ? 0 : -1;
