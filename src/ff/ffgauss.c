@@ -319,7 +319,9 @@ fill_pairs(const rad_ff_poly *a, const rad_ff_poly *b, rad_vec3 shift, pair_batc
 {
     const int na = a->nedges, nb = b->nedges;
     int m = 0, q = *pos / na, p = *pos - q * na;
-    double sum = 0, skipped = skip ? *skip : 0; /* (in a register) */
+    /* a local sum, which stays in a register: through the pointer, every
+     * pair stored it (the same additions in the same order) */
+    double sum = 0, skipped = skip ? *skip : 0;
     while (q < nb && m < BATCH) {
         const rad_ff_edge *ep = &a->edges[p], *eq = &b->edges[q];
         const double dot = v3_dot(ep->e, eq->e);

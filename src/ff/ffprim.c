@@ -195,7 +195,10 @@ static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
         neg += f < 0;
         above += f > 1;
         nonzero += f != 0;
-        lo = f < lo ? f : lo; /* as fmin: a NaN is passed over */
+        /* as fmin and fmax, a NaN is passed over; of +0 and -0 the first
+         * is kept, where glibc's kept the later (the sign of a zero
+         * extreme only; the form <= costs 5 instructions an entry) */
+        lo = f < lo ? f : lo;
         hi = f > hi ? f : hi;
     }
     t->lo = lo;

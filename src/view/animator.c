@@ -25,6 +25,7 @@
  */
 #include <config.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -322,8 +323,10 @@ static int append(view_session *s, const char *req, size_t len, int nf, int undo
 int view_queue_changes(view_session *s, const char *req, size_t len, int limited, char *why,
                        size_t cap)
 {
-    int nf = 0, code = 0;
+    int nf = 0, code = 0, checked;
     pthread_mutex_lock(&s->lock);
+    /* frames past the queue's room are refused below, not meshed first */
+    const int room = limited ? VIEW_MAX_QUEUED - (s->frames - s->applied) : INT_MAX;
     if (s->anim_state < 0) {
         snprintf(why, cap, "the animation failed: %s", s->anim_failure);
         code = 503;
@@ -331,9 +334,10 @@ int view_queue_changes(view_session *s, const char *req, size_t len, int limited
         snprintf(why, cap, "%d frames are waiting to run: try again when they have",
                  s->frames - s->applied);
         code = 429;
-    } else if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
-                                  req, len, !limited, &nf, why, cap) != 0) {
-        code = 400;
+    } else if ((checked = view_history_check(s->scene, s->changes.s ? s->changes.s : "",
+                                             s->changes.len, req, len, !limited, room, &nf, why,
+                                             cap)) != 0) {
+        code = checked == -2 ? 500 : 400;
     } else if (limited && s->frames - s->applied + nf > VIEW_MAX_QUEUED) {
         snprintf(why, cap, "%d frames at once: at most %d may wait", nf, VIEW_MAX_QUEUED);
         code = 429;
@@ -361,7 +365,7 @@ int view_queue_undo(view_session *s, char *why, size_t cap)
     } else {
         jbuf *inv = &s->inverse[s->ninverse - 1];
         if (view_history_check(s->scene, s->changes.s ? s->changes.s : "", s->changes.len,
-                               inv->s, inv->len, 1, &nf, why, cap) != 0)
+                               inv->s, inv->len, 1, INT_MAX, &nf, why, cap) != 0)
             code = 500; /* the inverse of a frame that ran: cannot fail */
         else if (append(s, inv->s, inv->len, nf, 1) != 0) {
             snprintf(why, cap, "out of memory for the changes");

@@ -97,14 +97,14 @@ static int count_lines(const char *s, size_t n)
 }
 
 /* The line to blame for a frame the mesh refuses: its last move or
- * rotate, else its first change (as the animation blames it). */
+ * rotate (as the animation blames it); 0 when it has none, and its
+ * geometry is the frame before's. */
 static int frame_blame(const rad_changes *ch, int frame)
 {
     int line = 0;
     for (int k = 0; k < ch->nchanges; k++) {
         const rad_change *c = &ch->changes[k];
-        if (c->frame == frame &&
-            (!line || c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE))
+        if (c->frame == frame && (c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE))
             line = c->line;
     }
     return line;
@@ -114,50 +114,52 @@ static int frame_blame(const rad_changes *ch, int frame)
  * surface, absent or not, after the frames before.  A move the parser
  * takes can still carry an element out of double's range (by 1e300); the
  * frame would fail, and with it every frame after it, so the request is
- * refused here instead.  0, or -1 with the reason (its line in the
- * whole text) in msg. */
+ * refused here instead.  Only a frame that moves or turns something is
+ * meshed: the others keep the geometry of the frame before.  0, or -1
+ * with the reason (its line in the whole text) in msg, or -2 when memory
+ * ran out. */
 static int mesh_frames(const rad_scene *scene, const rad_changes *all, int from, char *msg,
                        size_t cap)
 {
     rad_scene sc;
     rad_error err;
     unsigned char *every = malloc((size_t)scene->nobjects + 1);
-    if (!every || (memset(every, 1, (size_t)scene->nobjects + 1),
-                   rad_scene_present_copy(scene, every, &sc, &err) != RAD_OK)) {
+    rad_status st = every ? RAD_OK : RAD_ERR_NOMEM;
+    if (every) {
+        memset(every, 1, (size_t)scene->nobjects + 1);
+        st = rad_scene_present_copy(scene, every, &sc, &err);
         free(every);
-        return snprintf(msg, cap, "out of memory"), -1;
     }
-    free(every);
-    for (int o = 0; o < scene->nobjects; o++)
+    if (st != RAD_OK)
+        return snprintf(msg, cap, "out of memory"), -2;
+    for (int o = 0; o < scene->nobjects; o++) /* as the engine's copy */
         sc.objects[o].absent = scene->objects[o].absent;
-    int bad = 0;
-    for (int f = 1; !bad && f <= all->nframes; f++) {
+    for (int f = 1; st == RAD_OK && f <= all->nframes; f++) {
         rad_changes_apply(&sc, all, f, NULL);
+        const int line = f > from ? frame_blame(all, f) : 0;
         rad_mesh m;
-        if (f <= from)
-            continue;
-        if (rad_mesh_build(&m, &sc, &err) != RAD_OK) {
-            bad = 1;
-            snprintf(msg, cap, "%s:%d: frame %d: after its changes, %s", all->filename,
-                     frame_blame(all, f), f, err.message);
-        } else {
+        if (line && (st = rad_mesh_build(&m, &sc, &err)) == RAD_OK)
             rad_mesh_free(&m);
-        }
+        else if (line && st != RAD_ERR_NOMEM)
+            snprintf(msg, cap, "%s:%d: frame %d: after its changes, %s", all->filename, line, f,
+                     err.message);
     }
     rad_scene_free(&sc);
-    return bad ? -1 : 0;
+    if (st == RAD_ERR_NOMEM)
+        snprintf(msg, cap, "out of memory");
+    return st == RAD_OK ? 0 : st == RAD_ERR_NOMEM ? -2 : -1;
 }
 
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
-                       const char *req, size_t rlen, int empty_ok, int *frames, char *why,
-                       size_t cap)
+                       const char *req, size_t rlen, int empty_ok, int max_frames, int *frames,
+                       char *why, size_t cap)
 {
     const int starts = starts_frame(req, rlen);
     static const char head[] = "frame\n";
     const size_t hk = starts ? 0 : sizeof head - 1;
     char *text = malloc(hlen + hk + rlen + 2);
     if (!text)
-        return snprintf(why, cap, "out of memory"), -1;
+        return snprintf(why, cap, "out of memory"), -2;
     memcpy(text, history, hlen);
     memcpy(text + hlen, head, hk);
     memcpy(text + hlen + hk, req, rlen);
@@ -166,7 +168,7 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
         text[n++] = '\n';
     rad_changes all, before;
     rad_error err;
-    int ok = rad_changes_parse(&all, scene, text, n, "request", &err) == RAD_OK;
+    int ok = rad_changes_parse(&all, scene, text, n, "request", &err) == RAD_OK, mesh = 0;
     if (!ok)
         shift_line(err.message, "request", count_lines(history, hlen) + (hk ? 1 : 0), why, cap);
     else if (rad_changes_parse(&before, scene, history, hlen, "session", &err) != RAD_OK) {
@@ -181,7 +183,8 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
             snprintf(why, cap, "request: no change (a change file's lines: move, rotate, "
                                "remove, add, material, frame)");
             ok = 0;
-        } else if (mesh_frames(scene, &all, before.nframes, msg, sizeof msg) != 0) {
+        } else if (*frames <= max_frames && /* (more: the caller refuses them) */
+                   (mesh = mesh_frames(scene, &all, before.nframes, msg, sizeof msg)) != 0) {
             shift_line(msg, "request", count_lines(history, hlen) + (hk ? 1 : 0), why, cap);
             ok = 0;
         }
@@ -189,7 +192,7 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
         rad_changes_free(&all);
     }
     free(text);
-    return ok ? 0 : -1;
+    return ok ? 0 : mesh == -2 ? -2 : -1;
 }
 
 /* Append text[0..n) to b as the frame after what b holds. */

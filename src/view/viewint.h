@@ -126,13 +126,15 @@ int view_scene_json(const view_session *s, const rad_mesh *m, const rad_scene *s
 
 /* history.c: check a request's change lines against the session's change
  * file (frames: how many it adds; lines with no change are refused unless
- * empty_ok: an undo's frame may be empty), append them, and write the
+ * empty_ok: an undo's frame may be empty) and mesh the scene of each new
+ * frame that moves or turns something, unless the request adds more than
+ * max_frames frames (which the caller refuses); append them; and write the
  * frame that undoes frame `frame` of ch, from the scene as it is before
  * that frame.  0, or -1 with the reason in why (check) or when memory ran
- * out. */
+ * out; the check gives -2 when memory ran out. */
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
-                       const char *req, size_t rlen, int empty_ok, int *frames, char *why,
-                       size_t cap);
+                       const char *req, size_t rlen, int empty_ok, int max_frames, int *frames,
+                       char *why, size_t cap);
 int view_history_append(jbuf *b, const char *req, size_t rlen);
 /* The offsets of the `frame` lines of s[from..n) (the lines begin at
  * from and after each '\n'), at most cap of them stored; their count. */

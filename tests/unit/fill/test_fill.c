@@ -774,6 +774,11 @@ static void test_stats(void)
            "integrated, %ld rows above 1",
            st.pairs, st.negative, st.above_one, st.min_value, st.max_value, st.integrated,
            st.rows_above_one);
+    memset(&st, 0, sizeof st); /* one element: no pair, its row is its diagonal */
+    radi_ff_fill_stats(F, 1, &st);
+    tap_ok(st.pairs == 0 && st.min_value == 0 && st.max_value == 0 && st.integrated == 0 &&
+               st.rows_above_one == 1,
+           "a 1 x 1 matrix: no pair, extremes 0, its one row (5) above 1");
 }
 
 int main(void)
