@@ -106,21 +106,24 @@ double rad_ff_polygons(const rad_vec3 *a, int na, const rad_vec3 *b, int nb,
  * that the fill can store their zeros without the kernel: every element
  * has one normal n (bit for bit: the surface's), and every vertex v lies
  * within h of the plane through c0, the first element's centroid, as
- * computed.  A vertex of element B then lies within 2 h + r of element
- * A's plane through its centroid (a convex combination of A's vertices,
- * within h of that plane too), r the round-off of the distances computed
- * here and in the kernel, each a few eps (|v - c0| + |c0|): 64 eps of
- * that is r's bound here.  The kernel takes as on the plane anything
- * within its tolerance, which is at least the scene's snap (pair_setup).
- * So a surface is flat when snap > 0 and 2 h + 64 eps (R + C) <= snap,
- * R the largest |v - c0|, C the largest coordinate of c0.  A twisted
- * surface, whose elements may see a little of each other (a saddle),
- * fails the test and its pairs go through the kernel.  Returns, per
- * element, its surface when flat, else -1; NULL (no pair skipped) when
- * memory ran out. */
+ * computed.  For a vertex v_B of element B and any vertex v_A of A,
+ *     |n.(v_B - c_A)| <= |n.(v_B - c0)| + |n.(c0 - v_A)| + |n.(v_A - c_A)|
+ *                     <= 2 h + twist_A,
+ * plus the round-off of the distances, computed here and in the kernel,
+ * a few eps |v - c| each (the subtraction is rounded once): 64 eps (R +
+ * C) bounds it, R the largest |v - c0| and C the largest coordinate of
+ * c0 (the C term is margin).  The kernel's tolerance for "on the plane"
+ * is at least the twists plus the scene's snap (pair_setup), so a
+ * surface is flat when snap > 0 and 2 h + 64 eps (R + C) <= snap.  A
+ * twisted surface, whose elements may see a little of each other (a
+ * saddle), fails the test and its pairs go through the kernel.  Returns,
+ * per element, its surface when flat, else -1; NULL (no pair skipped)
+ * when memory ran out. */
 static int *flat_surfaces(const rad_mesh *m, const rad_ff_poly *polys, double snap)
 {
     int *flat = malloc(sizeof *flat * (size_t)(m->nelements > 0 ? m->nelements : 1));
+    for (int e = 0; flat && e < m->nelements; e++)
+        flat[e] = -1;
     for (int sf = 0; flat && sf < m->nsurfaces; sf++) {
         const int e0 = m->surface_first[sf], e1 = m->surface_first[sf + 1];
         if (e0 >= e1)
@@ -161,10 +164,12 @@ static int fill_column(const rad_ff_poly *polys, const int *flat, const double *
     double row_i = 0;
     for (int j = i + 1; j < n; j++) {
         double s, e = 0;
-        if (flat && flat[i] >= 0 && flat[i] == flat[j]) { /* what the kernel gives */
-            col[j] = 0;
+        if (flat && flat[i] >= 0 && flat[i] == flat[j]) {
+            /* what the kernel's S = +0 and estimate 0 give below, even
+             * where inv_t overflows (a subnormal area: NaN, refused) */
+            col[j] = 0 * inv_t[j];
             if (ecol)
-                ecol[j] = want ? 0 : NAN;
+                ecol[j] = want ? 0 * inv_t[j] : NAN;
             continue;
         }
         double fij = radi_ff_pair(&polys[i], &polys[j], opt, w, &s, want ? &e : NULL);
