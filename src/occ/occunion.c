@@ -631,14 +631,14 @@ static int add_seg(occ_space *sp, rad_vec3 p, rad_vec3 q, double t0, double t1)
  * sp->seg: of a shadow's edge, what lies strictly inside the inner
  * element and inside no other shadow; of the inner element's edge, what
  * lies inside some shadow.  Returns 0, -1. */
-static int edge_boundary(occ_space *sp, const pair_ctx *c, const double *tbox, int a, rad_vec3 p,
-                         rad_vec3 q, const double *pu, const double *qu)
+static int edge_boundary(occ_space *sp, const pair_ctx *c, int a, rad_vec3 p, rad_vec3 q,
+                         const double *pu, const double *qu)
 {
     double in0 = 0, in1 = 1;
     const double ebox[4] = {pu[0] < qu[0] ? pu[0] : qu[0], pu[0] < qu[0] ? qu[0] : pu[0],
                             pu[1] < qu[1] ? pu[1] : qu[1], pu[1] < qu[1] ? qu[1] : pu[1]};
     /* a shadow's edge whose box misses the inner element's is outside it */
-    if (a >= 0 && (!boxes_meet(ebox, tbox) ||
+    if (a >= 0 && (!boxes_meet(ebox, c->tbox) ||
                    !inside_interval(sp->tuv, c->nt, 0, pu, qu, &in0, &in1)))
         return 0;
     int ni = 0;
@@ -770,7 +770,6 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
     int r = pyramid(sp, c, x);
     if (r <= 0)
         return r;
-    const double *tbox = c->tbox;
     if ((r = shadows(sp, c, x, h)) <= 0)
         return r;
     sp->nseg = 0;
@@ -782,14 +781,14 @@ int occ_hidden_union(occ_space *sp, const pair_ctx *c, rad_vec3 x, double *out)
             const int k0 = f + k, k1 = f + (k + 1) % n;
             if (sp->inner[k0])
                 continue;
-            if (edge_boundary(sp, c, tbox, a, sp->sh.v[k0], sp->sh.v[k1], sp->uv + 2 * k0,
+            if (edge_boundary(sp, c, a, sp->sh.v[k0], sp->sh.v[k1], sp->uv + 2 * k0,
                               sp->uv + 2 * k1))
                 return -1;
         }
     }
     for (int k = 0; k < c->nt && sp->sh.np > 0; k++) {
         const int k1 = (k + 1) % c->nt;
-        if (edge_boundary(sp, c, tbox, -1, c->t[k], c->t[k1], sp->tuv + 2 * k, sp->tuv + 2 * k1))
+        if (edge_boundary(sp, c, -1, c->t[k], c->t[k1], sp->tuv + 2 * k, sp->tuv + 2 * k1))
             return -1;
     }
     sp->evals++;

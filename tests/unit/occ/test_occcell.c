@@ -8,13 +8,15 @@
  * side 4 at z = -3 (the outer element); between them stand 12 small
  * triangles at random heights and places, tilted at random, half of
  * them facing up and half down; four (two each way) may be left out by
- * points behind them (the exit rule of a closed mesh's faces, sp->bx).  For 200 random cells (triangles about random
- * points of the outer square, of side 0.05 to 2, some reaching past it)
+ * points behind them (the exit rule of a closed mesh's faces, sp->bx).
+ * For 200 random cells (triangles about random points of the outer
+ * square, of side 0.05 to 2, some reaching past it)
  * the cell's list is taken, and each of its four midpoint children's
  * from it, as node_split does; at random points of the cell and of each
  * child hidden(x) is computed twice by occunion.c: with every blocker,
- * and with the cell's or the child's list alone.  The union of the shadows with or without a shadow that
- * misses the inner element has the same boundary inside it, so the two
+ * and with the cell's or the child's list alone.  The union of the
+ * shadows with or without a shadow that misses the inner element has the
+ * same boundary inside it, so the two
  * must agree to round-off (3e-15 of F(x -> inner element), a few ulps of
  * each term of the contour sum).  The check could fail: a list that left
  * out a blocker whose shadow reaches the inner element from some point of
