@@ -91,6 +91,11 @@ static void help(void)
            "      --rate R            steps a second at most while running (default\n"
            "                          30; 0: as fast as the machine goes)\n"
            "      --max-connections N connections served at once (1-1000, default 16)\n"
+           "      --max-iterations N  give up on a frame of changes that has not\n"
+           "                          converged after N shots: the frame is dropped,\n"
+           "                          with those queued after it, and the scene stays\n"
+           "                          as before it (default 1000 n + 100000, n the\n"
+           "                          elements; frame 0 too)\n"
            "      --assets DIR        the folder of the page (index.html, view.js;\n"
            "                          default: the installed one)\n" CLI_COMMON_HELP
            "\n"
@@ -103,6 +108,7 @@ typedef struct view_args {
     int given_adaptive;
     const char *listen, *assets, *method, *record;
     int paused, connections, open;
+    long max_shots;             /* --max-iterations; 0: the engine's default */
     double rate;
     char addr[64];              /* --listen's address, for the options */
 } view_args;
@@ -140,6 +146,15 @@ static int parse_option(view_args *a, int opt, const char *arg)
             return 2;
         }
         return 0;
+    case OPT_MAX_ITERATIONS: { /* animate's option: the shots a frame may take */
+        int k;
+        if (cli_parse_int(arg, 1, 2000000000, &k)) {
+            cli_error("--max-iterations needs a whole number from 1, not '%s'", arg);
+            return 2;
+        }
+        a->max_shots = k;
+        return 0;
+    }
     default: {
         const int r = cli_adaptive_option(&a->adaptive, &a->given_adaptive, opt, arg);
         if (r != 1)
@@ -295,6 +310,7 @@ int cmd_view(int argc, char **argv)
         {"record", required_argument, NULL, OPT_RECORD},
         {"rate", required_argument, NULL, OPT_RATE},
         {"max-connections", required_argument, NULL, OPT_CONNECTIONS},
+        {"max-iterations", required_argument, NULL, OPT_MAX_ITERATIONS},
         {"subdivide-threshold", required_argument, NULL, OPT_SUBDIVIDE_THRESHOLD},
         {"max-depth", required_argument, NULL, OPT_MAX_DEPTH},
         {"subdivide-test", required_argument, NULL, OPT_SUBDIVIDE_TEST},
@@ -338,6 +354,7 @@ int cmd_view(int argc, char **argv)
     o.paused = a.paused;
     o.rate = a.rate;
     o.max_connections = a.connections;
+    o.max_shots = a.max_shots;
     o.open_browser = a.open;
     return run(&a, &o, argv[optind], optind + 1 < argc ? argv[optind + 1] : NULL);
 #else

@@ -22,6 +22,17 @@
  * fetches it again.  When a frame has converged, element_now holds its B
  * numbered as a fresh solve of its scene numbers it
  * (rad_anim_present_result), for a client that compares the two.
+ *
+ * A frame that fails as it runs (not converged within the options'
+ * max_shots, or out of memory) leaves the engine half changed.  So the
+ * engine's state is kept before each frame, as its change log
+ * (rad_anim_log_write, in memory: B, dB, H and the pending amounts to 17
+ * digits, which read back to the same doubles).  When the frame fails,
+ * it and the frames queued after it leave the change file, and
+ * rad_anim_resume builds the animation again at the frame before, from
+ * that log and the shortened file (frame_back): F filled again as a fresh
+ * solve fills it, the radiosity as it was, bit for bit.  The session's
+ * changes end only when that fails too.
  */
 #include <config.h>
 
@@ -168,9 +179,139 @@ static int frame_done(view_session *s, const rad_anim *a, const rad_anim_report 
     return 0;
 }
 
+/* The state before a frame, as the change log (rad_anim_log_write) in
+ * memory: what rad_anim_resume needs to bring the animation back to it
+ * when the frame fails.  NULL when memory ran out: the frame then runs
+ * with no way back. */
+static char *state_log(const rad_anim *a, size_t *len)
+{
+    char *buf = NULL;
+    size_t n = 0;
+    FILE *f = open_memstream(&buf, &n);
+    if (!f)
+        return NULL;
+    const rad_status st = rad_anim_log_write(f, a);
+    if (fclose(f) != 0 || st != RAD_OK) {
+        free(buf);
+        return NULL;
+    }
+    *len = n;
+    return buf;
+}
+
+/* Frames k and after leave the session (lock held): the change file ends
+ * before frame k, and an undo among them goes back on the stack (its
+ * place there is still allocated: it was taken from it). */
+static void drop_frames(view_session *s, int k)
+{
+    s->changes.len = s->frame_start[k];
+    s->changes.s[s->changes.len] = '\0';
+    if (s->undo_frame >= k) {
+        s->inverse[s->ninverse++] = s->undo_running;
+        jb_init(&s->undo_running);
+        s->undo_frame = 0;
+    }
+    s->frames = k - 1;
+}
+
+/* Frame k failed with err after it began to change *ap: the animation is
+ * built again at frame k - 1 from the state log taken before it (lock
+ * held on entry and on return, not while F is filled again), the frame
+ * and those queued after it dropped, and the failure said in the state.
+ * 0, or -1 when that failed too (the changes end) or the server stops. */
+static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim_options *opt,
+                      int k, char *log, size_t loglen, const rad_error *failed)
+{
+    const int queued = s->frames - k;
+    const double unshot = s->unshot_done;
+    const int shots = s->shots_done;
+    drop_frames(s, k);
+    s->anim_state = 0; /* requests wait, as while the animation was built */
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    char *text = malloc(s->changes.len + 1);
+    const size_t len = s->changes.len;
+    if (text)
+        memcpy(text, s->changes.s ? s->changes.s : "", len);
+    pthread_mutex_unlock(&s->lock);
+    rad_changes ch;
+    rad_error err;
+    rad_anim *b = NULL;
+    FILE *f = NULL;
+    rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
+                         : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
+    free(text);
+    if (st == RAD_OK) {
+        f = fmemopen(log, loglen, "r");
+        st = f ? rad_anim_resume(&b, s->scene, &ch, f, "state", opt, &err)
+               : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the state");
+        if (f)
+            fclose(f);
+        rad_changes_free(&ch);
+    }
+    if (st == RAD_OK && publish_anim(p, b, shots, unshot, VIEW_STAGE_DONE) != 0)
+        st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory publishing frame %d", k - 1);
+    pthread_mutex_lock(&s->lock);
+    if (st != RAD_OK) {
+        rad_anim_free(b);
+        if (!s->stopping) {
+            s->anim_state = -1;
+            snprintf(s->anim_failure, sizeof s->anim_failure,
+                     "frame %d failed (%.80s), and going back to frame %d failed: %.80s", k,
+                     failed->message, k - 1, err.message);
+        }
+        return -1;
+    }
+    rad_anim_free(*ap);
+    *ap = b;
+    s->anim_state = 1;
+    snprintf(s->anim_failure, sizeof s->anim_failure,
+             "frame %d failed and was dropped, with the %d frame%s queued after it; the scene "
+             "is as after frame %d: %.120s",
+             k, queued, queued == 1 ? "" : "s", k - 1, failed->message);
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    return 0;
+}
+
+/* Frame k has run (lock held): its undo frame on the stack, unless it
+ * was one.  0, or -1 when memory ran out (the changes end). */
+static int frame_kept(view_session *s, int k, int undo, jbuf *inv)
+{
+    if (undo) {
+        jb_free(&s->undo_running);
+        s->undo_frame = 0;
+    } else {
+        if (s->ninverse == s->cap_inverse) {
+            const int cap = s->cap_inverse ? 2 * s->cap_inverse : 16;
+            jbuf *more = realloc(s->inverse, sizeof *more * (size_t)cap);
+            if (!more) {
+                jb_free(inv);
+                s->anim_state = -1;
+                snprintf(s->anim_failure, sizeof s->anim_failure, "out of memory for undo");
+                return -1;
+            }
+            s->inverse = more;
+            s->cap_inverse = cap;
+        }
+        s->inverse[s->ninverse++] = *inv;
+    }
+    s->anim_failure[0] = '\0'; /* a frame dropped before is no longer the news */
+    s->unshot_done = s->unshot;
+    s->shots_done = s->frame_shots;
+    s->applied = k;
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+    return 0;
+}
+
 /* Run frame k of the session's change file (lock held on entry and on
- * return, not while the frame runs).  0, or -1 with the failure set. */
-static int run_frame(view_session *s, anim_pub *p, rad_anim *a, int k)
+ * return, not while the frame runs).  A frame that fails is dropped, with
+ * the frames queued after it, and the animation goes back to the frame
+ * before (frame_back); 0 then too.  -1 when the changes end (the failure
+ * set) or the server stops. */
+static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim_options *opt,
+                     int k)
 {
     const size_t len = s->changes.len;
     char *text = malloc(len ? len : 1);
@@ -183,48 +324,51 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim *a, int k)
     rad_error err;
     jbuf inv;
     jb_init(&inv);
+    size_t loglen = 0;
+    char *log = NULL;
+    int ran = 0; /* rad_anim_next was called: the animation may be half changed */
     rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
                          : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
     free(text);
     if (st == RAD_OK) {
-        if (!undo && view_inverse_frame(&inv, rad_anim_scene(a), &ch, k) != 0)
+        if (!undo && view_inverse_frame(&inv, rad_anim_scene(*ap), &ch, k) != 0)
             st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the undo frame");
-        if (st == RAD_OK)
-            st = rad_anim_next(a, &ch, &rep, &err);
+        if (st == RAD_OK) {
+            log = state_log(*ap, &loglen);
+            ran = 1;
+            st = rad_anim_next(*ap, &ch, &rep, &err);
+        }
         rad_changes_free(&ch);
     }
     if (st == RAD_OK &&
-        (publish_anim(p, a, rep.shots, rep.unshot / p->emitted, VIEW_STAGE_DONE) != 0 ||
-         frame_done(s, a, &rep) != 0))
+        (publish_anim(p, *ap, rep.shots, rep.unshot / p->emitted, VIEW_STAGE_DONE) != 0 ||
+         frame_done(s, *ap, &rep) != 0))
         st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory publishing frame %d", k);
     pthread_mutex_lock(&s->lock);
-    if (st != RAD_OK) {
+    int r = 0;
+    if (st == RAD_OK) {
+        r = frame_kept(s, k, undo, &inv);
+    } else {
         jb_free(&inv);
-        if (!s->stopping) {
+        if (s->stopping) {
+            r = -1;
+        } else if (!ran) { /* nothing changed yet: the frame goes, the animation stays */
+            drop_frames(s, k);
+            snprintf(s->anim_failure, sizeof s->anim_failure,
+                     "frame %d was dropped, with the frames queued after it: %.150s", k,
+                     err.message);
+            s->version++;
+            pthread_cond_broadcast(&s->changed);
+        } else if (log) {
+            r = frame_back(s, p, ap, opt, k, log, loglen, &err);
+        } else {
             s->anim_state = -1;
             snprintf(s->anim_failure, sizeof s->anim_failure, "%.250s", err.message);
+            r = -1;
         }
-        return -1;
     }
-    if (!undo) {
-        if (s->ninverse == s->cap_inverse) {
-            const int cap = s->cap_inverse ? 2 * s->cap_inverse : 16;
-            jbuf *more = realloc(s->inverse, sizeof *more * (size_t)cap);
-            if (!more) {
-                jb_free(&inv);
-                s->anim_state = -1;
-                snprintf(s->anim_failure, sizeof s->anim_failure, "out of memory for undo");
-                return -1;
-            }
-            s->inverse = more;
-            s->cap_inverse = cap;
-        }
-        s->inverse[s->ninverse++] = inv;
-    }
-    s->applied = k;
-    s->version++;
-    pthread_cond_broadcast(&s->changed);
-    return 0;
+    free(log);
+    return r;
 }
 
 static void *animator(void *arg)
@@ -250,6 +394,8 @@ static void *animator(void *arg)
     } else if (st == RAD_OK) {
         s->anim_state = 1;
         p.emitted = rep.emitted > 0 ? rep.emitted : 1;
+        s->unshot_done = rep.unshot / p.emitted;
+        s->shots_done = (int)rep.shots;
     }
     s->version++;
     pthread_cond_broadcast(&s->changed);
@@ -258,7 +404,7 @@ static void *animator(void *arg)
             pthread_cond_wait(&s->anim_wake, &s->lock);
             continue;
         }
-        if (run_frame(s, &p, a, s->applied + 1) != 0)
+        if (run_frame(s, &p, &a, &opt, s->applied + 1) != 0)
             break;
     }
     pthread_mutex_unlock(&s->lock);
@@ -370,8 +516,9 @@ int view_queue_undo(view_session *s, char *why, size_t cap)
         else if (append(s, inv->s, inv->len, nf, 1) != 0) {
             snprintf(why, cap, "out of memory for the changes");
             code = 500;
-        } else {
-            jb_free(inv);
+        } else { /* kept until its frame has run: a frame dropped gives it back */
+            s->undo_running = *inv;
+            s->undo_frame = s->frames;
             s->ninverse--;
         }
     }

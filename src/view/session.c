@@ -77,6 +77,8 @@ int view_session_init(view_session *s, const rad_scene *scene, const rad_result 
     s->exposure = rad_mesh_auto_exposure(m, res->B, RAD_EXPOSURE_REFLECTORS);
     rad_anim_options_init(&s->anim_opt);
     s->anim_opt.ff = o->ff;
+    if (o->max_shots > 0)
+        s->anim_opt.max_shots = o->max_shots;
     jb_init(&s->changes);
     jbuf js;
     jb_init(&js);
@@ -114,6 +116,7 @@ void view_session_free(view_session *s)
     for (int k = 0; k < s->ninverse; k++)
         jb_free(&s->inverse[k]);
     free(s->inverse);
+    jb_free(&s->undo_running);
     jb_free(&s->changes);
     s->area = s->rho = s->Bv = s->vertex_b = s->element_b = s->element_now = NULL;
     s->scene_json = NULL;

@@ -32,6 +32,9 @@ typedef struct radi_view_options {
     double rate;                /* steps a second at most while running; 0: as
                                    many as the machine does */
     int max_connections;        /* connections served at once */
+    long max_shots;             /* shots a frame of the animation may take
+                                   before it fails (rad_anim_options); 0: the
+                                   engine's default */
     rad_vertex_rule vertex_rule;  /* how vertex radiosity is smoothed, */
     double crease;              /* ... and across which surfaces (degrees) */
     FILE *announce;             /* where the URL is printed, then flushed */

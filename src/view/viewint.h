@@ -90,6 +90,11 @@ typedef struct view_session {
     size_t *frame_start;        /* per frame (1-based): its offset in changes */
     jbuf *inverse;              /* undo: the inverse of frames run, a stack */
     int ninverse, cap_inverse;
+    jbuf undo_running;          /* the inverse taken off the stack for frame
+                                   undo_frame (0: none), until it has run */
+    int undo_frame;
+    double unshot_done;         /* unshot and shots of the last frame run */
+    int shots_done;
     int frame_shots, frame_converged;
     int frame_stage;            /* of the frame running: VIEW_STAGE_* */
     long geometry;              /* the version of scene_json */
