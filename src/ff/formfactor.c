@@ -162,20 +162,23 @@ static double ln_gauss3(const ff_edge *p, const ff_edge *q, double inv_s2)
 static int plane_side(const rad_vec3 *p, int np, rad_vec3 nrm, rad_vec3 c, double tol,
                       double ntol, double *dist, int *neg, int *near, double *smin)
 {
-    int pos = 0;
-    *neg = 0;
-    *near = 0;
-    *smin = HUGE_VAL;
+    /* (in locals: *smin and dist may alias, and stores through them
+     * would be kept in every iteration) */
+    int pos = 0, ng = 0, nr = 0;
+    double lo = HUGE_VAL;
     for (int k = 0; k < np; k++) {
         double s = v3_dot(v3_sub(p[k], c), nrm);
-        *near += fabs(s) <= ntol;
-        *smin = s < *smin ? s : *smin;
+        nr += fabs(s) <= ntol;
+        lo = s < lo ? s : lo;
         if (fabs(s) <= tol)
             s = 0;
         dist[k] = s;
         pos |= s > 0;
-        *neg |= s < 0;
+        ng |= s < 0;
     }
+    *neg = ng;
+    *near = nr;
+    *smin = lo;
     return pos;
 }
 
