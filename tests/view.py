@@ -568,13 +568,16 @@ for name in ("box.scene", "moved.scene", "session.changes"):
     os.remove(os.path.join(WORK, name))
 
 # ---- a frame that fails as it runs ---------------------------------------
-# Frame 0 of the room converges in about 460 shots and a lighter wall in
-# fewer; walls of reflectance 0.99 take more than twice that (`radiosity
-# animate --report` of the room), so with --max-iterations 700 that frame
-# fails.  It is dropped, the animation goes back to the frame before it
-# (its radiosity bit for bit, from the state kept before the frame), and
-# the session goes on taking changes (it used to end them: 503 until the
-# server stopped).
+# Shots a frame takes on the room in default mode (`radiosity animate
+# --report`): frame 0, 460; a lighter white wall after it, 385; then a
+# darker red one, 325; a lamp 100 times brighter, 460, and back to its own
+# light (the undo of that), 539; walls of reflectance 0.99, over 1,000.
+# With --max-iterations 500 the last two fail.  A frame that fails is
+# dropped, the animation goes back to the frame before it (its radiosity
+# bit for bit, from the state kept before the frame; frame 0 too, which
+# is converged as a fresh solve), an undo frame that fails goes back on
+# the undo stack, and the session goes on taking changes (it used to end
+# them: 503 until the server stopped).
 
 
 def room_with(*materials):
@@ -589,55 +592,80 @@ def room_with(*materials):
     return path
 
 
+def wait_failure(k):
+    t = time.time()
+    st = cl.json("/api/state")
+    while time.time() - t < 120 and not (st["changes_failure"] and st["changes"] == "ready" and
+                                         "failed and was dropped" in st["changes_failure"] and
+                                         ("frame %d " % k) in st["changes_failure"]):
+        time.sleep(0.05)
+        st = cl.json("/api/state")
+    return st
+
+
+bright = "".join("material %s reflect 0.99 0.99 0.99\n" % m for m in ("white", "red", "green"))
 record = os.path.join(WORK, "failed.changes")
-p, url = start("--accuracy", "default", "--max-iterations", "700", "--record", record)
+p, url = start("--accuracy", "default", "--max-iterations", "500", "--record", record)
 cl = Client(url)
 t = time.time()
 while time.time() - t < 120 and cl.json("/api/state")["changes"] == "building":
     time.sleep(0.05)
-lighter = "material white reflect 0.6 0.6 0.6"
-status, _ = cl.req("POST", "/api/change", lighter + "\n")
+status, _ = cl.req("POST", "/api/change", bright)
+st = wait_failure(1)
+why = st["changes_failure"] or ""
+el0 = cl.json("/api/elements")["element_b"]
+ok(status == 200 and st["changes"] == "ready" and st["frame"] == 0 and st["frames"] == 0 and
+   st["converged"] and "not converged after 500 shots" in why and
+   close(el0, solve_b(scene), 1e-9),
+   "--max-iterations 500: frame 1 fails and is dropped; the session is back at frame 0, "
+   "equal to a fresh solve (1e-9): %s" % why)
+lamp = "material lamp reflect 0 emit 100 90 80"
+status, _ = cl.req("POST", "/api/change", lamp + "\n")
 st = wait_frame(1)
 el1 = cl.json("/api/elements")["element_b"]
-ok(status == 200 and st is not None and close(el1, solve_b(room_with(lighter)), 1e-9),
-   "--max-iterations 700: frame 1 runs and equals a fresh solve (1e-9)")
-status, data = cl.req("POST", "/api/change", "".join(
-    "material %s reflect 0.99 0.99 0.99\n" % m for m in ("white", "red", "green")))
-t = time.time()
-st = cl.json("/api/state")
-while time.time() - t < 120 and not (st["changes_failure"] and st["changes"] == "ready"):
-    time.sleep(0.05)
-    st = cl.json("/api/state")
-why = st["changes_failure"] or ""
-ok(status == 200 and st["changes"] == "ready" and st["frame"] == 1 and st["frames"] == 1 and
-   st["undo"] == 1 and "frame 2 failed and was dropped" in why and
-   "not converged after 700 shots" in why,
-   "a frame past --max-iterations is dropped and said; the session is at frame 1: %s" % why)
-ok(cl.json("/api/elements")["element_b"] == el1,
-   "after the failed frame, the radiosity is frame 1's bit for bit")
-darker = "material red reflect 0.3 0.1 0.1"
-status, data = cl.req("POST", "/api/change", darker + "\n")
+ok(status == 200 and st is not None and st["changes_failure"] is None and st["undo"] == 1 and
+   close(el1, solve_b(room_with(lamp)), 1e-9),
+   "the next change runs as frame 1 and equals a fresh solve (1e-9)")
+status, _ = cl.control("action=undo")
+st = wait_failure(2)
+ok(status == 200 and st["frame"] == 1 and st["frames"] == 1 and st["undo"] == 1 and
+   cl.json("/api/elements")["element_b"] == el1,
+   "its undo fails as frame 2: dropped, frame 1's radiosity bit for bit, and the undo is "
+   "on the stack again: %s" % st["changes_failure"])
+lighter = "material white reflect 0.6 0.6 0.6"
+status, _ = cl.req("POST", "/api/change", lighter + "\n")
 st = wait_frame(2)
 el2 = cl.json("/api/elements")["element_b"]
+ok(status == 200 and st is not None and st["undo"] == 2 and st["changes_failure"] is None,
+   "a lighter wall runs as frame 2")
+status, _ = cl.req("POST", "/api/change", bright)
+st = wait_failure(3)
+ok(status == 200 and st["frame"] == 2 and st["frames"] == 2 and st["undo"] == 2 and
+   cl.json("/api/elements")["element_b"] == el2,
+   "frame 3 fails too; the radiosity is frame 2's bit for bit: %s" % st["changes_failure"])
+darker = "material red reflect 0.3 0.1 0.1"
+status, data = cl.req("POST", "/api/change", darker + "\n")
+st = wait_frame(3)
+el3 = cl.json("/api/elements")["element_b"]
 ok(status == 200 and st is not None and st["converged"] and st["changes_failure"] is None and
-   close(el2, solve_b(room_with(lighter, darker)), 1e-9),
-   "the next change runs as frame 2 and equals a fresh solve (1e-9): %d %s"
+   st["undo"] == 3 and close(el3, solve_b(room_with(lamp, lighter, darker)), 1e-9),
+   "a change after it runs as frame 3 and equals a fresh solve (1e-9): %d %s"
    % (status, data.decode()))
 cl.control("action=stop")
 ok(p.wait(60) == 0, "stopped")
 with open(record) as f:
     rec = f.read()
-ok(rec == "frame\n%s\nframe\n%s\n" % (lighter, darker),
-   "--record holds the frames that ran, not the dropped one: %r" % rec)
+ok(rec == "frame\n%s\nframe\n%s\nframe\n%s\n" % (lamp, lighter, darker),
+   "--record holds the frames that ran, not the dropped ones: %r" % rec)
 frames = os.path.join(WORK, "frame%d.tsv")
 r = subprocess.run([RAD, "animate", "-q", "--accuracy", "default", "--elements", frames, scene,
                     record], capture_output=True)
 ok(r.returncode == 0 and
-   [float(x[b]) for x in table(frames % 2) for b in ("r", "g", "b")] == el2,
-   "radiosity animate replays that record: frame 2 bit for bit")
-for k in range(3):
+   [float(x[b]) for x in table(frames % 3) for b in ("r", "g", "b")] == el3,
+   "radiosity animate replays that record: frame 3 bit for bit")
+for k in range(4):
     os.remove(frames % k)
-for name in ("failed.changes", "room1.scene", "room2.scene"):
+for name in ("failed.changes", "room1.scene", "room3.scene"):
     os.remove(os.path.join(WORK, name))
 
 # ---- the adaptive mesh as it splits ------------------------------------------

@@ -95,7 +95,9 @@ static void help(void)
            "                          converged after N shots: the frame is dropped,\n"
            "                          with those queued after it, and the scene stays\n"
            "                          as before it (default 1000 n + 100000, n the\n"
-           "                          elements; frame 0 too)\n"
+           "                          elements); frame 0, the scene as loaded, is held\n"
+           "                          to it too, and when it fails the session takes\n"
+           "                          no changes\n"
            "      --assets DIR        the folder of the page (index.html, view.js;\n"
            "                          default: the installed one)\n" CLI_COMMON_HELP
            "\n"

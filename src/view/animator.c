@@ -214,11 +214,25 @@ static void drop_frames(view_session *s, int k)
     s->frames = k - 1;
 }
 
-/* Frame k failed with err after it began to change *ap: the animation is
- * built again at frame k - 1 from the state log taken before it (lock
- * held on entry and on return, not while F is filled again), the frame
- * and those queued after it dropped, and the failure said in the state.
- * 0, or -1 when that failed too (the changes end) or the server stops. */
+/* Why frames k and after were dropped, into the state (lock held). */
+static void say_dropped(view_session *s, int k, int queued, const char *why, const char *then)
+{
+    char more[64] = "";
+    if (queued > 0)
+        snprintf(more, sizeof more, ", with the %d frame%s queued after it", queued,
+                 queued == 1 ? "" : "s");
+    snprintf(s->anim_failure, sizeof s->anim_failure,
+             "frame %d failed and was dropped%s; %s frame %d: %.120s", k, more, then, k - 1,
+             why);
+}
+
+/* Frame k failed with `failed` after it began to change *ap: it and the
+ * frames queued after it are dropped, and the animation is built again
+ * at frame k - 1 from the state log taken before frame k (lock held on
+ * entry and on return, not while F is filled again).  The half-changed
+ * animation is freed first: two matrices F at once could fail for want
+ * of memory where one did not.  0, or -1 when going back failed too (the
+ * changes end) or the server stops. */
 static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim_options *opt,
                       int k, char *log, size_t loglen, const rad_error *failed)
 {
@@ -227,29 +241,37 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
     const int shots = s->shots_done;
     drop_frames(s, k);
     s->anim_state = 0; /* requests wait, as while the animation was built */
+    say_dropped(s, k, queued, failed->message, "building the animation again at");
     s->version++;
     pthread_cond_broadcast(&s->changed);
-    char *text = malloc(s->changes.len + 1);
     const size_t len = s->changes.len;
-    if (text)
-        memcpy(text, s->changes.s ? s->changes.s : "", len);
+    char *text = malloc(len + 1);
+    if (text && len)
+        memcpy(text, s->changes.s, len);
     pthread_mutex_unlock(&s->lock);
+    rad_anim_free(*ap);
+    *ap = NULL;
     rad_changes ch;
     rad_error err;
     rad_anim *b = NULL;
-    FILE *f = NULL;
     rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
                          : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
     free(text);
     if (st == RAD_OK) {
-        f = fmemopen(log, loglen, "r");
+        FILE *f = fmemopen(log, loglen, "r");
         st = f ? rad_anim_resume(&b, s->scene, &ch, f, "state", opt, &err)
                : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the state");
         if (f)
             fclose(f);
         rad_changes_free(&ch);
     }
-    if (st == RAD_OK && publish_anim(p, b, shots, unshot, VIEW_STAGE_DONE) != 0)
+    /* frame k - 1 had converged (a frame of the session runs until it
+     * does, or fails): its radiosity and element table as then */
+    rad_anim_report done;
+    memset(&done, 0, sizeof done);
+    done.converged = 1;
+    if (st == RAD_OK && (publish_anim(p, b, shots, unshot, VIEW_STAGE_DONE) != 0 ||
+                         frame_done(s, b, &done) != 0))
         st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory publishing frame %d", k - 1);
     pthread_mutex_lock(&s->lock);
     if (st != RAD_OK) {
@@ -262,13 +284,9 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
         }
         return -1;
     }
-    rad_anim_free(*ap);
     *ap = b;
     s->anim_state = 1;
-    snprintf(s->anim_failure, sizeof s->anim_failure,
-             "frame %d failed and was dropped, with the %d frame%s queued after it; the scene "
-             "is as after frame %d: %.120s",
-             k, queued, queued == 1 ? "" : "s", k - 1, failed->message);
+    say_dropped(s, k, queued, failed->message, "the scene is as after");
     s->version++;
     pthread_cond_broadcast(&s->changed);
     return 0;
@@ -316,7 +334,7 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim
     const size_t len = s->changes.len;
     char *text = malloc(len ? len : 1);
     const int undo = s->is_undo[k];
-    if (text)
+    if (text && len)
         memcpy(text, s->changes.s, len);
     pthread_mutex_unlock(&s->lock);
     rad_changes ch;
@@ -353,10 +371,9 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim
         if (s->stopping) {
             r = -1;
         } else if (!ran) { /* nothing changed yet: the frame goes, the animation stays */
+            const int queued = s->frames - k;
             drop_frames(s, k);
-            snprintf(s->anim_failure, sizeof s->anim_failure,
-                     "frame %d was dropped, with the frames queued after it: %.150s", k,
-                     err.message);
+            say_dropped(s, k, queued, err.message, "the scene is as after");
             s->version++;
             pthread_cond_broadcast(&s->changed);
         } else if (log) {
