@@ -49,6 +49,15 @@ static int grow(jbuf *b, size_t more)
     return 0;
 }
 
+void jb_put(jbuf *b, const char *s, size_t n)
+{
+    if (grow(b, n) != 0)
+        return; /* (failed set) */
+    memcpy(b->s + b->len, s, n);
+    b->len += n;
+    b->s[b->len] = '\0';
+}
+
 void jb_printf(jbuf *b, const char *fmt, ...)
 {
     va_list ap;

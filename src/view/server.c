@@ -290,6 +290,26 @@ static int wait_version(stream *st)
     return st->s->stopping ? -1 : 1;
 }
 
+/* The state of the session's version as an event, in s->event (lock
+ * held): formatted by the first stream to send that version, copied by
+ * the others, which then send the same bytes.  0, or -1 when memory ran
+ * out. */
+static int state_event(view_session *s)
+{
+    if (s->event.s && s->event_version == s->version)
+        return 0;
+    s->event.len = 0;
+    jb_printf(&s->event, "event: state\ndata: ");
+    view_state_json(s, &s->event, 1, 0);
+    jb_printf(&s->event, "\n\n");
+    if (s->event.failed) {
+        jb_free(&s->event);
+        return -1;
+    }
+    s->event_version = s->version;
+    return 0;
+}
+
 static ssize_t stream_read(void *cls, uint64_t pos, char *buf, size_t max)
 {
     stream *st = cls;
@@ -300,9 +320,10 @@ static ssize_t stream_read(void *cls, uint64_t pos, char *buf, size_t max)
         pthread_mutex_lock(&st->s->lock);
         const int w = wait_version(st);
         if (w > 0) {
-            jb_printf(&st->msg, "event: state\ndata: ");
-            view_state_json(st->s, &st->msg, 1, 0);
-            jb_printf(&st->msg, "\n\n");
+            if (state_event(st->s) == 0)
+                jb_put(&st->msg, st->s->event.s, st->s->event.len);
+            else
+                st->msg.failed = 1;
             st->sent = st->s->version;
         }
         pthread_mutex_unlock(&st->s->lock);

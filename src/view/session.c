@@ -117,6 +117,7 @@ void view_session_free(view_session *s)
         jb_free(&s->inverse[k]);
     free(s->inverse);
     jb_free(&s->undo_running);
+    jb_free(&s->event);
     jb_free(&s->changes);
     s->area = s->rho = s->Bv = s->vertex_b = s->element_b = s->element_now = NULL;
     s->scene_json = NULL;

@@ -30,6 +30,8 @@ typedef struct jbuf {
 void jb_init(jbuf *b);
 void jb_free(jbuf *b);
 void jb_printf(jbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Append n bytes of s. */
+void jb_put(jbuf *b, const char *s, size_t n);
 /* A number with 9 digits (float32 needs 9 for the round trip), with 17
  * when exact, or null for a NaN or an infinity (JSON has neither). */
 void jb_num(jbuf *b, double x, int exact);
@@ -75,6 +77,10 @@ typedef struct view_session {
     double history[VIEW_HISTORY][1 + VIEW_LANES]; /* step, each lane's rms */
     int nhistory;
     char failure[256];          /* a step that failed: the worker stops */
+    jbuf event;                 /* the state as an event of the streams,
+                                   formatted once for version event_version
+                                   (server.c, state_event) */
+    long event_version;
     double exposure;            /* the converged solution's, fixed */
     /* changes (animator.c), under lock */
     rad_anim_options anim_opt;
