@@ -365,9 +365,9 @@ static void keep_penumbras(occ_space *sp)
  * (occunion.c) has the same boundary inside it without b.  So is a face
  * of a closed mesh that every vertex lies more than the snap behind,
  * when its points may leave it out (sp->bx: the exit rule of
- * occclosed.c, which occunion.c applies point by point).  A cell of a piece cut from W_b
- * keeps b; the others are mostly left out here once instead of at each
- * of the cell's evaluation points. */
+ * occclosed.c, which occunion.c applies point by point).  A cell of a
+ * piece cut from W_b keeps b; the others are mostly left out here once
+ * instead of at each of the cell's evaluation points. */
 int occ_cell_blockers(occ_space *sp, const pair_ctx *c, const rad_vec3 *p, int nv, int lfirst,
                       int ln)
 {

@@ -179,6 +179,27 @@ static int frame_done(view_session *s, const rad_anim *a, const rad_anim_report 
     return 0;
 }
 
+/* A copy of the session's change file (lock held), so that it is parsed
+ * after the lock is let go; NULL when memory ran out. */
+static char *changes_copy(const view_session *s, size_t *len)
+{
+    *len = s->changes.len;
+    char *text = malloc(*len ? *len : 1);
+    if (text && *len)
+        memcpy(text, s->changes.s, *len);
+    return text;
+}
+
+/* That copy parsed against the scene, then freed (NULL: out of memory). */
+static rad_status changes_parse(const view_session *s, char *text, size_t len, rad_changes *ch,
+                                rad_error *err)
+{
+    const rad_status st = text ? rad_changes_parse(ch, s->scene, text, len, "session", err)
+                               : radi_fail(err, RAD_ERR_NOMEM, "out of memory for the changes");
+    free(text);
+    return st;
+}
+
 /* The state before a frame, as the change log (rad_anim_log_write) in
  * memory: what rad_anim_resume needs to bring the animation back to it
  * when the frame fails.  NULL when memory ran out: the frame then runs
@@ -244,19 +265,15 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
     say_dropped(s, k, queued, failed->message, "building the animation again at");
     s->version++;
     pthread_cond_broadcast(&s->changed);
-    const size_t len = s->changes.len;
-    char *text = malloc(len + 1);
-    if (text && len)
-        memcpy(text, s->changes.s, len);
+    size_t len;
+    char *text = changes_copy(s, &len);
     pthread_mutex_unlock(&s->lock);
     rad_anim_free(*ap);
     *ap = NULL;
     rad_changes ch;
     rad_error err;
     rad_anim *b = NULL;
-    rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
-                         : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
-    free(text);
+    rad_status st = changes_parse(s, text, len, &ch, &err);
     if (st == RAD_OK) {
         FILE *f = fmemopen(log, loglen, "r");
         st = f ? rad_anim_resume(&b, s->scene, &ch, f, "state", opt, &err)
@@ -331,11 +348,9 @@ static int frame_kept(view_session *s, int k, int undo, jbuf *inv)
 static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim_options *opt,
                      int k)
 {
-    const size_t len = s->changes.len;
-    char *text = malloc(len ? len : 1);
+    size_t len;
+    char *text = changes_copy(s, &len);
     const int undo = s->is_undo[k];
-    if (text && len)
-        memcpy(text, s->changes.s, len);
     pthread_mutex_unlock(&s->lock);
     rad_changes ch;
     rad_anim_report rep;
@@ -345,9 +360,7 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim
     size_t loglen = 0;
     char *log = NULL;
     int ran = 0; /* rad_anim_next was called: the animation may be half changed */
-    rad_status st = text ? rad_changes_parse(&ch, s->scene, text, len, "session", &err)
-                         : radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the changes");
-    free(text);
+    rad_status st = changes_parse(s, text, len, &ch, &err);
     if (st == RAD_OK) {
         if (!undo && view_inverse_frame(&inv, rad_anim_scene(*ap), &ch, k) != 0)
             st = radi_fail(&err, RAD_ERR_NOMEM, "out of memory for the undo frame");
