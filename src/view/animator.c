@@ -247,6 +247,17 @@ static void say_dropped(view_session *s, int k, int queued, const char *why, con
              why);
 }
 
+/* Frame k failed before it changed anything (lock held): it and the
+ * frames queued after it go, and the animation stays at frame k - 1. */
+static void drop_unrun(view_session *s, int k, const char *why)
+{
+    const int queued = s->frames - k;
+    drop_frames(s, k);
+    say_dropped(s, k, queued, why, "the scene is as after");
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
+}
+
 /* Frame k failed with `failed` after it began to change *ap: it and the
  * frames queued after it are dropped, and the animation is built again
  * at frame k - 1 from the state log taken before frame k (lock held on
@@ -309,26 +320,30 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
     return 0;
 }
 
-/* Frame k has run (lock held): its undo frame on the stack, unless it
- * was one.  0, or -1 when memory ran out (the changes end). */
-static int frame_kept(view_session *s, int k, int undo, jbuf *inv)
+/* Room on the undo stack for one more frame (lock held), taken before a
+ * frame runs so that keeping its inverse cannot fail after it ran.  0,
+ * or -1 when memory ran out. */
+static int reserve_undo(view_session *s)
+{
+    if (s->ninverse < s->cap_inverse)
+        return 0;
+    const int cap = s->cap_inverse ? 2 * s->cap_inverse : 16;
+    jbuf *more = realloc(s->inverse, sizeof *more * (size_t)cap);
+    if (!more)
+        return -1;
+    s->inverse = more;
+    s->cap_inverse = cap;
+    return 0;
+}
+
+/* Frame k has run (lock held): its undo frame on the stack (room for it
+ * was reserved by reserve_undo), unless it was one. */
+static void frame_kept(view_session *s, int k, int undo, jbuf *inv)
 {
     if (undo) {
         jb_free(&s->undo_running);
         s->undo_frame = 0;
     } else {
-        if (s->ninverse == s->cap_inverse) {
-            const int cap = s->cap_inverse ? 2 * s->cap_inverse : 16;
-            jbuf *more = realloc(s->inverse, sizeof *more * (size_t)cap);
-            if (!more) {
-                jb_free(inv);
-                s->anim_state = -1;
-                snprintf(s->anim_failure, sizeof s->anim_failure, "out of memory for undo");
-                return -1;
-            }
-            s->inverse = more;
-            s->cap_inverse = cap;
-        }
         s->inverse[s->ninverse++] = *inv;
     }
     s->anim_failure[0] = '\0'; /* a frame dropped before is no longer the news */
@@ -337,7 +352,6 @@ static int frame_kept(view_session *s, int k, int undo, jbuf *inv)
     s->applied = k;
     s->version++;
     pthread_cond_broadcast(&s->changed);
-    return 0;
 }
 
 /* Run frame k of the session's change file (lock held on entry and on
@@ -348,9 +362,13 @@ static int frame_kept(view_session *s, int k, int undo, jbuf *inv)
 static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim_options *opt,
                      int k)
 {
+    const int undo = s->is_undo[k];
+    if (!undo && reserve_undo(s) != 0) {
+        drop_unrun(s, k, "out of memory for its undo frame");
+        return 0;
+    }
     size_t len;
     char *text = changes_copy(s, &len);
-    const int undo = s->is_undo[k];
     pthread_mutex_unlock(&s->lock);
     rad_changes ch;
     rad_anim_report rep;
@@ -378,17 +396,13 @@ static int run_frame(view_session *s, anim_pub *p, rad_anim **ap, const rad_anim
     pthread_mutex_lock(&s->lock);
     int r = 0;
     if (st == RAD_OK) {
-        r = frame_kept(s, k, undo, &inv);
+        frame_kept(s, k, undo, &inv);
     } else {
         jb_free(&inv);
         if (s->stopping) {
             r = -1;
-        } else if (!ran) { /* nothing changed yet: the frame goes, the animation stays */
-            const int queued = s->frames - k;
-            drop_frames(s, k);
-            say_dropped(s, k, queued, err.message, "the scene is as after");
-            s->version++;
-            pthread_cond_broadcast(&s->changed);
+        } else if (!ran) {
+            drop_unrun(s, k, err.message);
         } else if (log) {
             r = frame_back(s, p, ap, opt, k, log, loglen, &err);
         } else {
