@@ -101,22 +101,6 @@ void rad_anim_free(rad_anim *a)
     free(a);
 }
 
-/* ---- the scene copy and its changes -------------------------------------- */
-
-/* A deep copy of the scene (every surface). */
-static rad_status copy_scene(rad_scene *out, const rad_scene *in, rad_error *err)
-{
-    unsigned char *all = malloc((size_t)in->nobjects + 1);
-    if (!all)
-        return radi_fail(err, RAD_ERR_NOMEM, "out of memory");
-    memset(all, 1, (size_t)in->nobjects + 1);
-    rad_status st = rad_scene_present_copy(in, all, out, err);
-    for (int o = 0; st == RAD_OK && o < in->nobjects; o++)
-        out->objects[o].absent = in->objects[o].absent;
-    free(all);
-    return st;
-}
-
 /* ---- element state ------------------------------------------------------- */
 
 /* presence, rho and E per element from the scene and mesh; flags in
@@ -238,7 +222,7 @@ static rad_status setup(rad_anim **out, const rad_scene *scene, const rad_change
     a->opt = *opt;
     if (a->opt.max_shots <= 0)
         a->opt.max_shots = 1000L * (long)rad_scene_element_count(scene) + 100000L;
-    rad_status st = copy_scene(&a->scene, scene, err);
+    rad_status st = radi_anim_copy_scene(&a->scene, scene, err);
     for (int f = 1; st == RAD_OK && f <= frame; f++)
         rad_changes_apply(&a->scene, changes, f, NULL);
     a->frame = a->converged_frame = frame;
@@ -372,27 +356,6 @@ static rad_status close_log(rad_anim *a, rad_anim_report *rep, rad_error *err)
     return RAD_OK;
 }
 
-/* A frame whose changes make a mesh the scene's checks refuse (a move by
- * 1e300 gives an element area NaN): the error is the change file's, at the
- * frame's last move or rotate (or its first change), the scene's message
- * after it, since the moved surface's line says which one failed. */
-static void blame_changes(const rad_changes *ch, int frame, rad_error *err)
-{
-    int line = 0;
-    for (int k = 0; k < ch->nchanges; k++) {
-        const rad_change *c = &ch->changes[k];
-        if (c->frame != frame)
-            continue;
-        if (!line || c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE)
-            line = c->line;
-    }
-    char was[RAD_ERRMSG_MAX];
-    memcpy(was, err->message, sizeof was);
-    was[sizeof was - 1] = '\0';
-    radi_fail(err, err->status, "%s:%d: frame %d: after its changes, %s", ch->filename, line,
-             frame, was);
-}
-
 /* Does element e emit (any band)? */
 static int emits(const rad_anim *a, int e)
 {
@@ -484,7 +447,7 @@ rad_status rad_anim_next(rad_anim *a, const rad_changes *ch, rad_anim_report *re
     }
     if (st == RAD_OK && (st = rad_mesh_build(&mesh, &a->scene, err)) != RAD_OK)
         if (st != RAD_ERR_NOMEM)
-            blame_changes(ch, next, err);
+            radi_anim_blame_changes(ch, next, err);
     if (st == RAD_OK) { /* 3 */
         if (mesh.nelements != a->n) {
             rad_mesh_free(&mesh);

@@ -2,8 +2,9 @@
  *
  * Copyright (C) 2026 The radiosity authors.  GPLv3+, see COPYING.
  *
- * animate.c owns the state and the frames, animpairs.c the form factors a
- * change alters, animshoot.c the shots.  Arrays of n x RAD_BANDS are
+ * animate.c owns the state and the frames, animframe.c the scene a frame
+ * meshes, animpairs.c the form factors a change alters, animshoot.c the
+ * shots.  Arrays of n x RAD_BANDS are
  * column-major (x[e + b*n]); F is n x n, F[i + j*n] = F_ij.
  */
 #ifndef RAD_ANIMINT_H
@@ -15,7 +16,6 @@
 #include "radiosity/base.h"
 #include "radiosity/scene.h"
 #include "radiosity/mesh.h"
-#include "radiosity/animate.h"
 #include "radiosity/animate.h"
 
 /* The redistribution a change calls for (George et al. 1990, eq. 5): for
@@ -90,6 +90,12 @@ rad_status radi_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const unsigned char *lit, int which, rad_anim_report *rep,
                                  rad_error *err);
 /* The box of object o's surfaces in a->scene. */
+/* A deep copy of the scene, every surface, each object's presence kept
+ * (animframe.c). */
+rad_status radi_anim_copy_scene(rad_scene *out, const rad_scene *in, rad_error *err);
+/* err, the mesh's refusal of frame `frame`, put on the line of ch to
+ * blame: the frame's last move or rotate, else its first change. */
+void radi_anim_blame_changes(const rad_changes *ch, int frame, rad_error *err);
 void radi_anim_object_box(const rad_anim *a, int o, rad_vec3 *lo, rad_vec3 *hi);
 void radi_redist_free(rad_redist *rd);
 /* Index rd's columns (start, recv, amt filled) by receiver, with their

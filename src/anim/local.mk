@@ -3,8 +3,10 @@
 ## Included by Makefile.am; %reldir% is this folder.
 
 src_libradcore_la_SOURCES += \
+	%reldir%/anim.h \
 	%reldir%/animate.c \
 	%reldir%/animerror.c \
+	%reldir%/animframe.c \
 	%reldir%/animimportance.c \
 	%reldir%/animint.h \
 	%reldir%/animlog.c \

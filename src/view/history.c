@@ -12,8 +12,9 @@
  * follows from frame to frame (whether an object is in the scene) is
  * checked as the frames will run; its line numbers are then those of the
  * request's own text.  Each new frame's scene is then meshed as the
- * engine will mesh it (mesh_frames), so that a frame that could not even
- * be meshed is refused with the request rather than failing when it runs.
+ * engine will mesh it (radi_anim_check_frames), so that a frame that
+ * could not even be meshed is refused with the request, in the words the
+ * engine would use, rather than failing when it runs.
  *
  * Undo is a frame of the inverse changes in the reverse order, written
  * from the scene as it is just before the frame runs (inverse_frame):
@@ -32,6 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "anim/anim.h"
 #include "view/viewint.h"
 #include "radiosity/changes.h"
 
@@ -96,60 +98,6 @@ static int count_lines(const char *s, size_t n)
     return k;
 }
 
-/* The line to blame for a frame the mesh refuses: its last move or
- * rotate (as the animation blames it); 0 when it has none, and its
- * geometry is the frame before's. */
-static int frame_blame(const rad_changes *ch, int frame)
-{
-    int line = 0;
-    for (int k = 0; k < ch->nchanges; k++) {
-        const rad_change *c = &ch->changes[k];
-        if (c->frame == frame && (c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE))
-            line = c->line;
-    }
-    return line;
-}
-
-/* The frames after `from` meshed as the animation meshes them: every
- * surface, absent or not, after the frames before.  A move the parser
- * takes can still carry an element out of double's range (by 1e300); the
- * frame would fail, and with it every frame after it, so the request is
- * refused here instead.  Only a frame that moves or turns something is
- * meshed: the others keep the geometry of the frame before.  0, or -1
- * with the reason (its line in the whole text) in msg, or -2 when memory
- * ran out. */
-static int mesh_frames(const rad_scene *scene, const rad_changes *all, int from, char *msg,
-                       size_t cap)
-{
-    rad_scene sc;
-    rad_error err;
-    unsigned char *every = malloc((size_t)scene->nobjects + 1);
-    rad_status st = every ? RAD_OK : RAD_ERR_NOMEM;
-    if (every) {
-        memset(every, 1, (size_t)scene->nobjects + 1);
-        st = rad_scene_present_copy(scene, every, &sc, &err);
-        free(every);
-    }
-    if (st != RAD_OK)
-        return snprintf(msg, cap, "out of memory"), -2;
-    for (int o = 0; o < scene->nobjects; o++) /* as the engine's copy */
-        sc.objects[o].absent = scene->objects[o].absent;
-    for (int f = 1; st == RAD_OK && f <= all->nframes; f++) {
-        rad_changes_apply(&sc, all, f, NULL);
-        const int line = f > from ? frame_blame(all, f) : 0;
-        rad_mesh m;
-        if (line && (st = rad_mesh_build(&m, &sc, &err)) == RAD_OK)
-            rad_mesh_free(&m);
-        else if (line && st != RAD_ERR_NOMEM)
-            snprintf(msg, cap, "%s:%d: frame %d: after its changes, %s", all->filename, line, f,
-                     err.message);
-    }
-    rad_scene_free(&sc);
-    if (st == RAD_ERR_NOMEM)
-        snprintf(msg, cap, "out of memory");
-    return st == RAD_OK ? 0 : st == RAD_ERR_NOMEM ? -2 : -1;
-}
-
 int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
                        const char *req, size_t rlen, int empty_ok, int max_frames, int *frames,
                        char *why, size_t cap)
@@ -168,7 +116,8 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
         text[n++] = '\n';
     rad_changes all, before;
     rad_error err;
-    int ok = rad_changes_parse(&all, scene, text, n, "request", &err) == RAD_OK, mesh = 0;
+    rad_status st = RAD_OK; /* of the frames' meshes */
+    int ok = rad_changes_parse(&all, scene, text, n, "request", &err) == RAD_OK;
     if (!ok)
         shift_line(err.message, "request", count_lines(history, hlen) + (hk ? 1 : 0), why, cap);
     else if (rad_changes_parse(&before, scene, history, hlen, "session", &err) != RAD_OK) {
@@ -178,21 +127,24 @@ int view_history_check(const rad_scene *scene, const char *history, size_t hlen,
     } else {
         *frames = all.nframes - before.nframes;
         const int added = all.nchanges - before.nchanges;
-        char msg[RAD_ERRMSG_MAX + 64];
         if (*frames < 1 || (!empty_ok && added == 0)) {
             snprintf(why, cap, "request: no change (a change file's lines: move, rotate, "
                                "remove, add, material, frame)");
             ok = 0;
         } else if (*frames <= max_frames && /* (more: the caller refuses them) */
-                   (mesh = mesh_frames(scene, &all, before.nframes, msg, sizeof msg)) != 0) {
-            shift_line(msg, "request", count_lines(history, hlen) + (hk ? 1 : 0), why, cap);
+                   (st = radi_anim_check_frames(scene, &all, before.nframes, &err)) != RAD_OK) {
+            if (st == RAD_ERR_NOMEM)
+                snprintf(why, cap, "out of memory");
+            else
+                shift_line(err.message, "request", count_lines(history, hlen) + (hk ? 1 : 0),
+                           why, cap);
             ok = 0;
         }
         rad_changes_free(&before);
         rad_changes_free(&all);
     }
     free(text);
-    return ok ? 0 : mesh == -2 ? -2 : -1;
+    return ok ? 0 : st == RAD_ERR_NOMEM ? -2 : -1;
 }
 
 /* Append text[0..n) to b as the frame after what b holds. */
