@@ -35,29 +35,16 @@ rad_status radi_anim_copy_scene(rad_scene *out, const rad_scene *in, rad_error *
     return st;
 }
 
-/* The line of frame `frame` to blame: its last move or rotate, else its
- * first change; 0 when it has no change.  moves: is there a move or a
- * rotate? */
-static int blame_line(const rad_changes *ch, int frame, int *moves)
-{
-    int line = 0;
-    *moves = 0;
-    for (int k = 0; k < ch->nchanges; k++) {
-        const rad_change *c = &ch->changes[k];
-        if (c->frame != frame)
-            continue;
-        const int move = c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE;
-        if (!line || move)
-            line = c->line;
-        *moves |= move;
-    }
-    return line;
-}
-
+/* (animint.h) */
 void radi_anim_blame_changes(const rad_changes *ch, int frame, rad_error *err)
 {
-    int moves;
-    const int line = blame_line(ch, frame, &moves);
+    int line = 0;
+    for (int k = 0; k < ch->nchanges; k++) {
+        const rad_change *c = &ch->changes[k];
+        if (c->frame == frame &&
+            (!line || c->kind == RAD_CHANGE_MOVE || c->kind == RAD_CHANGE_ROTATE))
+            line = c->line;
+    }
     char was[RAD_ERRMSG_MAX];
     memcpy(was, err->message, sizeof was);
     was[sizeof was - 1] = '\0';
@@ -72,10 +59,13 @@ rad_status radi_anim_check_frames(const rad_scene *scene, const rad_changes *ch,
     rad_status st = radi_anim_copy_scene(&sc, scene, err);
     if (st != RAD_OK)
         return st;
+    int k = 0; /* the changes are by frame (changes.h): one pass finds each frame's */
     for (int f = 1; st == RAD_OK && f <= ch->nframes; f++) {
         rad_changes_apply(&sc, ch, f, NULL);
-        int moves;
-        blame_line(ch, f, &moves);
+        int moves = 0;
+        for (; k < ch->nchanges && ch->changes[k].frame <= f; k++)
+            moves |= ch->changes[k].frame == f && (ch->changes[k].kind == RAD_CHANGE_MOVE ||
+                                                   ch->changes[k].kind == RAD_CHANGE_ROTATE);
         rad_mesh m;
         if (f <= from || !moves)
             continue;

@@ -199,8 +199,8 @@ static void inverse_change(jbuf *b, const rad_scene *scene, const rad_change *c)
 int view_inverse_frame(jbuf *b, const rad_scene *scene, const rad_changes *ch, int frame)
 {
     jb_printf(b, "frame\n");
-    for (int k = ch->nchanges - 1; k >= 0; k--)
-        if (ch->changes[k].frame == frame)
+    for (int k = ch->nchanges - 1; k >= 0 && ch->changes[k].frame >= frame; k--)
+        if (ch->changes[k].frame == frame) /* (the changes are by frame) */
             inverse_change(b, scene, &ch->changes[k]);
     return b->failed ? -1 : 0;
 }

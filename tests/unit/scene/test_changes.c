@@ -134,6 +134,47 @@ static void valid(const rad_scene *s)
     rad_changes_free(&c);
 }
 
+/* rad_changes_apply takes the changes of the frame it is given and no
+ * other, in file order: a frame without changes, frame 0 and a frame past
+ * the last change nothing.  The box's first vertex is (0, 0, 1); every
+ * move is a binary fraction, so each position is exact. */
+static void apply_frames(const rad_scene *s)
+{
+    const char *text = "frame\nmove box 1 0 0\n"
+                       "frame\n"
+                       "frame\nmove box 0 2 0\nmove box 0 0 4\n"
+                       "frame\nremove box\n"
+                       "frame\nadd box\nmove box 0.5 0 0\n"
+                       "frame\n";
+    rad_changes c;
+    rad_scene p;
+    rad_error err;
+    if (rad_changes_parse(&c, s, text, strlen(text), "c.changes", &err) != RAD_OK ||
+        rad_scene_present_copy(s, (const unsigned char *)"\1\1", &p, &err) != RAD_OK) {
+        tap_ok(0, "a change file to apply reads (%s)", err.message);
+        return;
+    }
+    /* where the box's first vertex is, and whether the box is there, after
+     * frames 0 .. 6 (0 and 6: no change) */
+    static const double want[7][4] = {{0, 0, 1, 1}, {1, 0, 1, 1}, {1, 0, 1, 1}, {1, 2, 5, 1},
+                                      {1, 2, 5, 0}, {1.5, 2, 5, 1}, {1.5, 2, 5, 1}};
+    int ok = 1;
+    for (int f = 0; f <= 6; f++) {
+        rad_changes_apply(&p, &c, f, NULL);
+        const rad_vec3 v = p.surfaces[1].verts[0];
+        ok &= v.x == want[f][0] && v.y == want[f][1] && v.z == want[f][2] &&
+              !p.objects[0].absent == (want[f][3] != 0);
+    }
+    tap_ok(ok, "each frame applies its own changes only, empty frames none");
+    unsigned char dirty[2] = {0, 0};
+    rad_changes_apply(&p, &c, 3, dirty);
+    tap_ok(p.surfaces[1].verts[0].y == 4 && p.surfaces[1].verts[0].z == 9 && dirty[0] &&
+               !dirty[1],
+           "a frame applied again moves again, and marks what it moved");
+    rad_scene_free(&p);
+    rad_changes_free(&c);
+}
+
 int main(void)
 {
     rad_scene s;
@@ -144,6 +185,7 @@ int main(void)
         return tap_done();
     objects(&s);
     valid(&s);
+    apply_frames(&s);
     bad(&s, "move box 1 0 0\n", 1, "before the first 'frame'");
     bad(&s, "frame\nmove crate 1 0 0\n", 2, "unknown object 'crate'");
     bad(&s, "frame\nmaterial glass reflect 0.5\n", 2, "unknown material 'glass'");
