@@ -4,9 +4,10 @@
 # accuracy mode: the fill's time, its pairs by route, the candidate
 # blockers a blockable pair, the evaluations of the hidden part a partly
 # hidden pair, the partly hidden
-# pairs' share of the time and the growth of the time with the number of
-# blockers (the slope of log time against log blockers between the two
-# largest sizes).  Prints figures; asserts nothing.
+# pairs' share of the time and the growth of the time, and of the
+# evaluations, with the number of blockers (the slope of log time against
+# log blockers between the two largest sizes).  Prints figures; asserts
+# nothing.
 # Usage: bench/hidden.sh RADIOSITY
 # BENCH_HIDDEN_SQUARES (default "4 6 10"): the N of the N x N squares;
 # BENCH_HIDDEN_TORUS (default "250"): torus triangle counts;
@@ -87,11 +88,18 @@ done
   $1 ~ /^boxsplit-/ { n = substr($1, 10); if (m[n, $3] > 0)
     printf "box as %s separate quads over meshed, %s: %.2f\n", $2, $3, $4 / m[n, $3] }' "$tmp/all"
 # growth: log(t2 / t1) / log(n2 / n1) for each mode between its two
-# largest finished scenes of one kind
+# largest finished scenes of one kind; and the same of the evaluations of
+# the hidden part (partly hidden pairs times evaluations a pair), which
+# do not depend on the machine's load as the time does
 [ -f "$tmp/all" ] && awk -F '\t' '
-  { split($1, k, "-"); key = k[1] " " $3; n[key]++; b[key, n[key]] = $2; s[key, n[key]] = $4 }
+  { split($1, k, "-"); key = k[1] " " $3; n[key]++; b[key, n[key]] = $2; s[key, n[key]] = $4
+    e[key, n[key]] = $8 * $12 }
   END { for (key in n) if (n[key] >= 2) { i = n[key]; j = i - 1
-          if (s[key, j] > 0 && b[key, i] != b[key, j])
-            printf "growth %s: time ~ blockers^%.2f (%s to %s)\n", key,
-              log(s[key, i] / s[key, j]) / log(b[key, i] / b[key, j]), b[key, j], b[key, i] } }' \
+          if (s[key, j] > 0 && b[key, i] != b[key, j]) {
+            printf "growth %s: time ~ blockers^%.2f", key,
+              log(s[key, i] / s[key, j]) / log(b[key, i] / b[key, j])
+            if (e[key, j] > 0 && e[key, i] > 0)
+              printf ", evaluations ~ blockers^%.2f",
+                log(e[key, i] / e[key, j]) / log(b[key, i] / b[key, j])
+            printf " (%s to %s)\n", b[key, j], b[key, i] } } }' \
   "$tmp/all" | sort
