@@ -4,8 +4,8 @@
  *
  * animate.c owns the state and the frames, animframe.c the scene a frame
  * meshes, animpairs.c the form factors a change alters, animshoot.c the
- * shots.  Arrays of n x RAD_BANDS are
- * column-major (x[e + b*n]); F is n x n, F[i + j*n] = F_ij.
+ * shots.  Arrays of n x RAD_BANDS are column-major (x[e + b*n]); F is
+ * n x n, F[i + j*n] = F_ij.
  */
 #ifndef RAD_ANIMINT_H
 #define RAD_ANIMINT_H
@@ -89,13 +89,13 @@ rad_status radi_anim_update_pairs(rad_anim *a, const unsigned char *dirty,
                                  const rad_vec3 *old_hi, const rad_scene *old_scene,
                                  const unsigned char *lit, int which, rad_anim_report *rep,
                                  rad_error *err);
-/* The box of object o's surfaces in a->scene. */
 /* A deep copy of the scene, every surface, each object's presence kept
  * (animframe.c). */
 rad_status radi_anim_copy_scene(rad_scene *out, const rad_scene *in, rad_error *err);
 /* err, the mesh's refusal of frame `frame`, put on the line of ch to
  * blame: the frame's last move or rotate, else its first change. */
 void radi_anim_blame_changes(const rad_changes *ch, int frame, rad_error *err);
+/* The box of object o's surfaces in a->scene. */
 void radi_anim_object_box(const rad_anim *a, int o, rad_vec3 *lo, rad_vec3 *hi);
 void radi_redist_free(rad_redist *rd);
 /* Index rd's columns (start, recv, amt filled) by receiver, with their
