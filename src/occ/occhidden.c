@@ -644,10 +644,9 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     c.snap = sp->snap;
     c.sliver = OCC_SLIVER * poly_area(ct, nt);
     c.outer_area = poly_area(co, no);
-    c.events = o->accuracy == RAD_ACCURACY_CLASSIC ? 0
-               : o->accuracy == RAD_ACCURACY_DEFAULT && kept <= OCC_WEDGE_BLOCKERS
-                   ? OCC_SPLIT_WEDGES
-                   : OCC_SPLIT_ALL;
+    c.events = o->accuracy == RAD_ACCURACY_CLASSIC   ? 0
+               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_SPLIT_WEDGES
+                                                     : OCC_SPLIT_ALL;
     c.pair_wedges = o->accuracy == RAD_ACCURACY_DEFAULT;
     c.order = o->accuracy == RAD_ACCURACY_REFERENCE ? OCC_ORDER_REFERENCE
               : o->accuracy == RAD_ACCURACY_DEFAULT ? OCC_ORDER_DEFAULT
@@ -663,6 +662,12 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     sp->arc_left = 0;
     if (domain_integral(o, sp, &c, co, no, s, rel, budget, res, &met))
         return -1;
+    if (!met && c.events == OCC_SPLIT_WEDGES && kept > OCC_WEDGE_BLOCKERS) {
+        c.events = OCC_SPLIT_ALL; /* the two blockers' planes still where they happen */
+        sp->arc_left = 0;
+        if (try_again(o, sp, &c, co, no, s, rel, before, 1, res, &met))
+            return -1;
+    }
     if (!met && (c.events == OCC_SPLIT_WEDGES || c.pair_wedges)) {
         c.events = OCC_SPLIT_ALL;
         c.pair_wedges = 0;
