@@ -75,7 +75,9 @@ RAD_API void rad_changes_free(rad_changes *changes);
 /* Apply the changes of frame `frame` to `scene` in place, in file order:
  * vertices moved or turned, objects' absent flags set, materials
  * replaced.  dirty (nobjects entries, may be NULL) gets 1 for
- * each object moved, turned, added or removed. */
+ * each object moved, turned, added or removed.  The frame's changes are
+ * found by bisection, so `changes` must be by frame, as the reader makes
+ * it. */
 RAD_API void rad_changes_apply(rad_scene *scene, const rad_changes *changes, int frame,
                                unsigned char *dirty);
 
