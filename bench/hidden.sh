@@ -10,7 +10,8 @@
 # nothing.
 # Usage: bench/hidden.sh RADIOSITY
 # BENCH_HIDDEN_SQUARES (default "4 6 10"): the N of the N x N squares;
-# BENCH_HIDDEN_TORUS (default "250"): torus triangle counts;
+# BENCH_HIDDEN_TORUS (default "60 250"): torus triangle counts asked of
+# scenes.py (60 gives 90), two sizes so that each mode has a growth;
 # BENCH_HIDDEN_SPLIT (default "6"): the closed Cornell box with each quad
 # meshed N x N, and the same as N x N separate quads (as a View3D file
 # lists elements), and the time of the second over the first;
@@ -65,7 +66,7 @@ for n in ${BENCH_HIDDEN_SQUARES-4 6 10}; do
   run "squares-$n" $((n * n)) "$tmp/s.scene"
   view3d "squares-$n" $((n * n)) "$tmp/s.scene"
 done
-for t in ${BENCH_HIDDEN_TORUS-250}; do
+for t in ${BENCH_HIDDEN_TORUS-60 250}; do
   python3 "$here/scenes.py" torus "$t" > "$tmp/t.scene"
   nb=$(grep -c '^polygon' "$tmp/t.scene")
   run "torus-$nb" "$nb" "$tmp/t.scene"
