@@ -3,11 +3,10 @@
 # blockers between a lamp and a floor (bench/scenes.py), one thread, per
 # accuracy mode: the fill's time, its pairs by route, the candidate
 # blockers a blockable pair, the evaluations of the hidden part a partly
-# hidden pair, the partly hidden
-# pairs' share of the time and the growth of the time, and of the
-# evaluations, with the number of blockers (the slope of log time against
-# log blockers between the two largest sizes).  Prints figures; asserts
-# nothing.
+# hidden pair, the partly hidden pairs' share of the time, and the growth
+# of the time and of the evaluations with the number of blockers (the
+# slope of their logs against log blockers between the two largest
+# sizes).  Prints figures; asserts nothing.
 # Usage: bench/hidden.sh RADIOSITY
 # BENCH_HIDDEN_SQUARES (default "4 6 10"): the N of the N x N squares;
 # BENCH_HIDDEN_TORUS (default "60 250"): torus triangle counts asked of

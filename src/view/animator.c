@@ -235,7 +235,8 @@ static void drop_frames(view_session *s, int k)
     s->frames = k - 1;
 }
 
-/* Why frames k and after were dropped, into the state (lock held). */
+/* Why frames k and after were dropped, into the state, published as a
+ * new version (lock held). */
 static void say_dropped(view_session *s, int k, int queued, const char *why, const char *then)
 {
     char more[64] = "";
@@ -245,6 +246,8 @@ static void say_dropped(view_session *s, int k, int queued, const char *why, con
     snprintf(s->anim_failure, sizeof s->anim_failure,
              "frame %d failed and was dropped%s; %s frame %d: %.120s", k, more, then, k - 1,
              why);
+    s->version++;
+    pthread_cond_broadcast(&s->changed);
 }
 
 /* Frame k failed before it changed anything (lock held): it and the
@@ -254,8 +257,6 @@ static void drop_unrun(view_session *s, int k, const char *why)
     const int queued = s->frames - k;
     drop_frames(s, k);
     say_dropped(s, k, queued, why, "the scene is as after");
-    s->version++;
-    pthread_cond_broadcast(&s->changed);
 }
 
 /* Frame k failed with `failed` after it began to change *ap: it and the
@@ -274,8 +275,6 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
     drop_frames(s, k);
     s->anim_state = 0; /* requests wait, as while the animation was built */
     say_dropped(s, k, queued, failed->message, "building the animation again at");
-    s->version++;
-    pthread_cond_broadcast(&s->changed);
     size_t len;
     char *text = changes_copy(s, &len);
     pthread_mutex_unlock(&s->lock);
@@ -315,8 +314,6 @@ static int frame_back(view_session *s, anim_pub *p, rad_anim **ap, const rad_ani
     *ap = b;
     s->anim_state = 1;
     say_dropped(s, k, queued, failed->message, "the scene is as after");
-    s->version++;
-    pthread_cond_broadcast(&s->changed);
     return 0;
 }
 
