@@ -83,7 +83,24 @@
 #define OCC_ORDER_REFERENCE 10
 #define OCC_TAIL_QMAX 0.9 /* a stalled rule's estimate: occhidden.c, slow_tail */
 #define OCC_TOUCH_MAX 8   /* blocker vertices on the outer element kept (touch_points) */
-#define OCC_LEAVES_DEFAULT 1024
+/* Default's cells were 1,024.  That stopped a pair whose domain starts
+ * with thousands of cells (a triangulated model, 13 to 20 blockers) long
+ * before its evaluations did: a split adds three cells for the 52
+ * evaluations of its children's first rules, so 1,024 cells are about
+ * 18,000 evaluations of splitting, where the budget below allows 40,000
+ * and 64 more for each first cell.  On bench/scenes.py torus 250, 34
+ * pairs stopped on cells on their first domain and were done again on
+ * finer ones, 11 stopped so on every domain, and 15 pairs missed the
+ * promise by their own estimates.  With 4,096: 27, none (2 stop on
+ * evaluations) and 6; 5% fewer evaluations in all (33.3 to 31.6
+ * million).  The 36 entries that moved did so within their two
+ * estimates, by up to 1.7e-7 of themselves (two of a pair hidden to
+ * 1e-13 aside, whose estimates exceed their values 40-fold either way).
+ * 16,384 changes nothing more there.  Torus
+ * 60, squares 6, the scenes of data/ and 20 rooms of the geometry fuzzer
+ * (tests/geomfuzz.py, seed 99) never reach 1,024 cells: their tables are
+ * the same bytes. */
+#define OCC_LEAVES_DEFAULT 4096
 #define OCC_LEAVES_REFERENCE 8192
 /* ... and the most evaluations of hidden(x) it may spend on a pair
  * beyond those of the first cells: a
