@@ -91,15 +91,16 @@
  * and 64 more for each first cell.  On bench/scenes.py torus 250, 34
  * pairs stopped on cells on their first domain and were done again on
  * finer ones, 11 stopped so on every domain, and 15 pairs missed the
- * promise by their own estimates.  With 4,096: 27, none (2 stop on
- * evaluations) and 6; 5% fewer evaluations in all (33.3 to 31.6
+ * promise by their own estimates.  With 4,096, 27 stop on their first
+ * domain and 2 on every domain, all of them on evaluations, and 6 pairs
+ * miss the promise, for 5% fewer evaluations in all (33.3 to 31.6
  * million).  The 36 entries that moved did so within their two
- * estimates, by up to 1.7e-7 of themselves (two of a pair hidden to
- * 1e-13 aside, whose estimates exceed their values 40-fold either way).
- * 16,384 changes nothing more there.  Torus
- * 60, squares 6, the scenes of data/ and 20 rooms of the geometry fuzzer
- * (tests/geomfuzz.py, seed 99) never reach 1,024 cells: their tables are
- * the same bytes. */
+ * estimates, by up to 1.7e-7 of themselves, except the two of a pair
+ * visible to 2e-11 of its unoccluded value, whose estimates are 40 to 70
+ * times their values in both runs.  16,384 changes nothing more there.
+ * Torus 60, squares 6, the scenes of data/ and 20 rooms of the geometry
+ * fuzzer (tests/geomfuzz.py, seed 99) never reach 1,024 cells: their
+ * tables are the same bytes. */
 #define OCC_LEAVES_DEFAULT 4096
 #define OCC_LEAVES_REFERENCE 8192
 /* ... and the most evaluations of hidden(x) it may spend on a pair
