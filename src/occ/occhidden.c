@@ -601,26 +601,37 @@ static double narrower_arcs(const rad_occ *o, const occ_space *sp, const orient_
     return fmin(arcs_by_fraction(o, sp, res, s), arcs_by_estimate(o, sp, res, s, rel));
 }
 
+/* try_again on c's domain cut along every event plane (OCC_SPLIT_ALL),
+ * the planes of two blockers' events still only where they happen when
+ * `pair_wedges`, with the whole budget and the lenses of that domain. */
+static int every_plane(const rad_occ *o, occ_space *sp, pair_ctx *c, const rad_vec3 *co, int no,
+                       double s, double rel, double before, int pair_wedges, orient_result *res,
+                       int *met)
+{
+    c->events = OCC_SPLIT_ALL;
+    c->pair_wedges = pair_wedges;
+    sp->arc_left = 0;
+    return try_again(o, sp, c, co, no, s, rel, before, 1, res, met);
+}
+
 /* The integral of the hidden part with element i (outer_i) or j as the
- * outer element.  In default mode a pair with few blockers is first
- * integrated on a domain cut only where each event happens
- * (OCC_SPLIT_WEDGES, occevent.c: a third of the pieces on the Cornell
- * box, each with its own evaluations), on a part of the budget; a
- * pair that misses its target there is done again, with the whole budget,
- * on the domain cut along every event plane (OCC_SPLIT_ALL).  The extra
- * cuts are no events of one blocker, but they refine the domain where
- * kinks may be left inside a piece (the lens between a chord of occeee.c
- * and its arc; events its filter judged not to happen): with more
- * blockers, or where the first try struggled, every plane is cut.
- * Reference mode always cuts every plane: before occeee.c cut the events
- * of three edges, 38 entries of the 6x6 closed Cornell box moved by more
- * than both runs' estimates with the wedges only.  Default mode cuts the
- * planes of two blockers' events only where they happen (c.pair_wedges,
- * occevent.c's BB wedges) on its first try, whatever the number of
- * blockers: those planes are most of a triangulated model's pieces.  A
- * pair that misses its target so is done again with every plane cut.  A
- * pair whose chords of occeee.c left lenses wider than its value needs
- * (narrower_arcs) is done once more with narrower ones. */
+ * outer element.  In default mode a pair is first integrated, on
+ * OCC_WEDGE_BUDGET of the budget, on a domain cut only where each event
+ * happens (OCC_SPLIT_WEDGES, occevent.c: a third of the pieces on the
+ * Cornell box, each with its own evaluations), the planes of two
+ * blockers' events included (c.pair_wedges, occevent.c's BB wedges: most
+ * of a triangulated model's pieces).  A pair that misses its target there
+ * is done again, with the whole budget, on the domain cut along every
+ * event plane (OCC_SPLIT_ALL: every_plane), a pair with more than
+ * OCC_WEDGE_BLOCKERS blockers first with the two blockers' planes still
+ * cut only where their events happen.  The extra cuts are no events of
+ * one blocker, but they refine the domain where kinks may be left inside
+ * a piece (the lens between a chord of occeee.c and its arc; events its
+ * filter judged not to happen).  Reference mode always cuts every plane:
+ * before occeee.c cut the events of three edges, 38 entries of the 6x6
+ * closed Cornell box moved by more than both runs' estimates with the
+ * wedges only.  A pair whose chords of occeee.c left lenses wider than its
+ * value needs (narrower_arcs) is done once more with narrower ones. */
 static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff_poly *pi,
                            const rad_ff_poly *pj, int outer_i, double s, double rel,
                            orient_result *res)
@@ -662,19 +673,14 @@ static int orient_integral(const rad_occ *o, occ_space *sp, int nb, const rad_ff
     sp->arc_left = 0;
     if (domain_integral(o, sp, &c, co, no, s, rel, budget, res, &met))
         return -1;
-    if (!met && c.events == OCC_SPLIT_WEDGES && kept > OCC_WEDGE_BLOCKERS) {
-        c.events = OCC_SPLIT_ALL; /* the two blockers' planes still where they happen */
-        sp->arc_left = 0;
-        if (try_again(o, sp, &c, co, no, s, rel, before, 1, res, &met))
-            return -1;
-    }
-    if (!met && (c.events == OCC_SPLIT_WEDGES || c.pair_wedges)) {
-        c.events = OCC_SPLIT_ALL;
-        c.pair_wedges = 0;
-        sp->arc_left = 0; /* the lenses of the domain kept */
-        if (try_again(o, sp, &c, co, no, s, rel, before, 1, res, &met))
-            return -1;
-    }
+    /* more than OCC_WEDGE_BLOCKERS blockers: every plane, but the two
+     * blockers' still where they happen; then every plane */
+    if (!met && c.events == OCC_SPLIT_WEDGES && kept > OCC_WEDGE_BLOCKERS &&
+        every_plane(o, sp, &c, co, no, s, rel, before, 1, res, &met))
+        return -1;
+    if (!met && (c.events == OCC_SPLIT_WEDGES || c.pair_wedges) &&
+        every_plane(o, sp, &c, co, no, s, rel, before, 0, res, &met))
+        return -1;
     const double arc_tol = narrower_arcs(o, sp, res, s, rel);
     if (sp->arc_left > arc_tol) {
         /* the narrower lenses add pieces, so default mode's budget is
