@@ -294,6 +294,15 @@ static double pair_done(const rad_ff_poly *a, const rad_ff_poly *b, rad_ff_scrat
 
 /* ---- one pair: the methods in order ---------------------------------------- */
 
+/* The layers a pair goes through (ff_pair_once, run_methods, run_bounded)
+ * are inlined where the compiler allows: their calls were 1.8% of the
+ * cube's unobstructed fill. */
+#if defined(__GNUC__)
+#define FF_INLINE static inline __attribute__((always_inline))
+#else
+#define FF_INLINE static inline
+#endif
+
 /* A pair on its way through the methods: the polygons as clipped, what
  * the applicability tests need, and the result so far. */
 typedef struct pair_state {
@@ -427,7 +436,7 @@ static int run_nine_point(pair_state *p)
  * bounds are bounds (the truncation error proved, round-off with a
  * margin), not estimates: accepted within half the promise (1e-9
  * reference, 1e-6 default). */
-static int run_bounded(pair_state *p)
+FF_INLINE int run_bounded(pair_state *p)
 {
     return radi_ff_gauss_tiers(p->a, p->b, p->scale2, box_gap2(p->a, p->b), p->dplane, p->tol,
                               p->bound_rel, &p->s, &p->e)
@@ -730,7 +739,7 @@ static int pair_setup(pair_state *p, const rad_ff_poly *a, const rad_ff_poly *b,
 
 /* The methods in order on a set-up pair: how to store the result
  * (FIN_*), or -1 when memory ran out. */
-static int run_methods(pair_state *p)
+FF_INLINE int run_methods(pair_state *p)
 {
     /* Rows 1 and 2 (one of them applies to the fill's common case,
      * neither polygon clipped) are called directly, then the table from
@@ -774,9 +783,9 @@ static double doubt_of(const rad_ff_poly *a, const rad_ff_poly *b, const rad_ff_
     return run_methods(&q) < 0 ? NAN : 2 * fabs(q.s - s) + q.e;
 }
 
-static double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
-                           const rad_ff_options *opt, double within, rad_ff_scratch *w,
-                           double *contour, double *errest)
+FF_INLINE double ff_pair_once(const rad_ff_poly *a, const rad_ff_poly *b,
+                              const rad_ff_options *opt, double within, rad_ff_scratch *w,
+                              double *contour, double *errest)
 {
     pair_state p;
     *contour = 0;
