@@ -21,6 +21,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "ff/formfactor.h"
 #include "mesh/mesh.h"
@@ -28,6 +29,7 @@
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
 #include "util/util.h"
+#include "util/vecmath.h"
 
 /* Colinear (formfactor.h).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */
@@ -186,27 +188,74 @@ typedef struct fill_tally {
     size_t neg, above, nonzero;
 } fill_tally;
 
+/* One entry into the tally: as fmin and fmax, a NaN is passed over. */
+static inline void tally_one(double f, double *lo, double *hi, size_t *neg, size_t *above,
+                             size_t *nonzero)
+{
+    *neg += f < 0;
+    *above += f > 1;
+    *nonzero += f != 0;
+    *lo = f < *lo ? f : *lo;
+    *hi = f > *hi ? f : *hi;
+}
+
+/* The entries four at a time where vector extensions exist (a quarter of
+ * the instructions: the tally was 2.5% of the cube's unobstructed fill),
+ * each lane as tally_one, the lanes then tallied in order; the rest one
+ * at a time.  Of +0 and -0 either may be kept as an extreme (the sign of
+ * a zero extreme only). */
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+RAD_KERNEL_CLONES
 static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
 {
     double lo = t->lo, hi = t->hi;
-    size_t neg = 0, above = 0, nonzero = 0;
-    for (size_t i = i0; i < i1; i++) {
-        const double f = col[i];
-        neg += f < 0;
-        above += f > 1;
-        nonzero += f != 0;
-        /* as fmin and fmax, a NaN is passed over; of +0 and -0 the first
-         * is kept, where glibc's kept the later (the sign of a zero
-         * extreme only; the form <= costs 5 instructions an entry) */
-        lo = f < lo ? f : lo;
-        hi = f > hi ? f : hi;
+    size_t neg = 0, above = 0, nonzero = 0, i = i0;
+    if (i1 - i0 >= 8) {
+        rad_v4d lo4 = {lo, lo, lo, lo}, hi4 = {hi, hi, hi, hi};
+        rad_v4i neg4 = {0}, above4 = {0}, nz4 = {0};
+        for (; i + 4 <= i1; i += 4) {
+            rad_v4d f;
+            memcpy(&f, col + i, sizeof f);
+            neg4 -= f < 0; /* a comparison is -1 in a lane where it holds */
+            above4 -= f > 1;
+            nz4 -= f != 0;
+            const rad_v4i l = f < lo4, h = f > hi4;
+            lo4 = (rad_v4d)((l & (rad_v4i)f) | (~l & (rad_v4i)lo4));
+            hi4 = (rad_v4d)((h & (rad_v4i)f) | (~h & (rad_v4i)hi4));
+        }
+        for (int k = 0; k < 4; k++) {
+            neg += (size_t)neg4[k];
+            above += (size_t)above4[k];
+            nonzero += (size_t)nz4[k];
+            lo = lo4[k] < lo ? lo4[k] : lo;
+            hi = hi4[k] > hi ? hi4[k] : hi;
+        }
     }
+    for (; i < i1; i++)
+        tally_one(col[i], &lo, &hi, &neg, &above, &nonzero);
     t->lo = lo;
     t->hi = hi;
     t->neg += neg;
     t->above += above;
     t->nonzero += nonzero;
 }
+#pragma GCC diagnostic pop
+#else
+static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
+{
+    double lo = t->lo, hi = t->hi;
+    size_t neg = 0, above = 0, nonzero = 0;
+    for (size_t i = i0; i < i1; i++)
+        tally_one(col[i], &lo, &hi, &neg, &above, &nonzero);
+    t->lo = lo;
+    t->hi = hi;
+    t->neg += neg;
+    t->above += above;
+    t->nonzero += nonzero;
+}
+#endif
 
 /* One pass down F's columns (F is column-major) for the off-diagonal
  * entries' counts and extremes; each row's sum is taken over j in
