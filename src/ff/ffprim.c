@@ -207,11 +207,13 @@ static inline void tally_one(double f, double *lo, double *hi, size_t *neg, size
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 RAD_KERNEL_CLONES
 static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
 {
     double lo = t->lo, hi = t->hi;
     size_t neg = 0, above = 0, nonzero = 0, i = i0;
+#if defined(__GNUC__)
     if (i1 - i0 >= 8) {
         rad_v4d lo4 = {lo, lo, lo, lo}, hi4 = {hi, hi, hi, hi};
         rad_v4i neg4 = {0}, above4 = {0}, nz4 = {0};
@@ -233,6 +235,7 @@ static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
             hi = hi4[k] > hi ? hi4[k] : hi;
         }
     }
+#endif
     for (; i < i1; i++)
         tally_one(col[i], &lo, &hi, &neg, &above, &nonzero);
     t->lo = lo;
@@ -241,20 +244,8 @@ static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
     t->above += above;
     t->nonzero += nonzero;
 }
+#if defined(__GNUC__)
 #pragma GCC diagnostic pop
-#else
-static void tally_run(const double *col, size_t i0, size_t i1, fill_tally *t)
-{
-    double lo = t->lo, hi = t->hi;
-    size_t neg = 0, above = 0, nonzero = 0;
-    for (size_t i = i0; i < i1; i++)
-        tally_one(col[i], &lo, &hi, &neg, &above, &nonzero);
-    t->lo = lo;
-    t->hi = hi;
-    t->neg += neg;
-    t->above += above;
-    t->nonzero += nonzero;
-}
 #endif
 
 /* One pass down F's columns (F is column-major) for the off-diagonal
