@@ -117,7 +117,6 @@
 #include "radiosity/base.h"
 #include "radiosity/formfactor.h"
 #include "util/util.h"
-#include "util/vecmath.h"
 
 #define AREA_ORDER_MAX 10
 

@@ -29,7 +29,6 @@
 #include "radiosity/mesh.h"
 #include "radiosity/formfactor.h"
 #include "util/util.h"
-#include "util/vecmath.h"
 
 /* Colinear (formfactor.h).  The classic rule's Gauss points would hit or
  * nearly hit r = 0 there, so the paper integrates them in closed form. */
