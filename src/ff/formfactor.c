@@ -746,8 +746,8 @@ FF_INLINE int run_methods(pair_state *p)
      * row 3 as the loop would go on: the indirect calls of the first two
      * rows were 1.4% of the unobstructed fill (the cube at 10 x 10). */
     int finish = FIN_CLAMPED, k = 0;
-    if (ap_nine_point(p) || ap_bounded(p)) {
-        const int row = ap_bounded(p); /* ff_methods[row] */
+    const int row = ap_bounded(p); /* ff_methods[row] */
+    if (row || ap_nine_point(p)) {
         finish = ff_methods[row].finish;
         if ((row ? run_bounded(p) : run_nine_point(p)) == FF_DONE)
             return finish;
